@@ -1,0 +1,23 @@
+#pragma once
+// The sub-commands of the cdea program. Each returns the process exit code.
+
+#include <string>
+#include <vector>
+
+namespace cdea
+{
+  /// Exit codes: 0 success, 1 bad input or unwritable output, 2 the run
+  /// stopped before the end of its voltage path (every converged step is in
+  /// the results file).
+  enum ExitCode : int
+  {
+    exit_success      = 0,
+    exit_input_error  = 1,
+    exit_not_complete = 2
+  };
+
+  /// `cdea run FILE.prm`: the FE model along the load stages.
+  int run_fe(const std::string &prm_file);
+
+  std::string usage();
+} // namespace cdea

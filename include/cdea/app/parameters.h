@@ -1,0 +1,136 @@
+#pragma once
+// Run-time parameters, one struct per subsection of the .prm file (as in the
+// deal.II tutorial step-44). Each struct declares its entries, documented where
+// they are declared, and parses them. Parameters::validate() turns them into a
+// Scene and rejects bad input with an InputError that names the parameter.
+
+#include <cdea/scene.h>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace cdea
+{
+  /// Bad user input: the message names the parameter and what is allowed.
+  class InputError : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
+  namespace parameters
+  {
+    struct Geometry
+    {
+      double disk_radius_mm;
+      double frame_radius_mm;
+      double film_thickness_mm;
+      double prestretch;
+      static void declare(dealii::ParameterHandler &prm);
+      void        parse(dealii::ParameterHandler &prm);
+    };
+
+    struct Material
+    {
+      double shear_modulus_kPa;
+      double jlim;
+      double permittivity;
+      static void declare(dealii::ParameterHandler &prm);
+      void        parse(dealii::ParameterHandler &prm);
+    };
+
+    struct Loading
+    {
+      double mass_g;
+      double gravity;
+      static void declare(dealii::ParameterHandler &prm);
+      void        parse(dealii::ParameterHandler &prm);
+    };
+
+    struct Electrodes
+    {
+      std::string ring_edges_text;   ///< "1, 1.7, 3"
+      std::string voltage_path_text; ///< "5, 5; 5, 6.5"
+      static void declare(dealii::ParameterHandler &prm);
+      void        parse(dealii::ParameterHandler &prm);
+    };
+
+    struct Discretization
+    {
+      unsigned int polynomial_degree;
+      unsigned int elements_per_ring;
+      double       grading;
+      unsigned int refinements;
+      unsigned int samples_per_element;
+      static void  declare(dealii::ParameterHandler &prm);
+      void         parse(dealii::ParameterHandler &prm);
+    };
+
+    struct Solver
+    {
+      double       residual_tolerance;
+      double       update_tolerance;
+      unsigned int max_newton_iterations;
+      unsigned int prestretch_steps;
+      double       load_increment;
+      double       voltage_increment_kV;
+      double       min_voltage_increment_kV;
+      unsigned int max_cutbacks;
+      static void  declare(dealii::ParameterHandler &prm);
+      void         parse(dealii::ParameterHandler &prm);
+    };
+
+    struct Wrinkling
+    {
+      double      onset_tolerance_V;
+      static void declare(dealii::ParameterHandler &prm);
+      void        parse(dealii::ParameterHandler &prm);
+    };
+
+    struct Output
+    {
+      std::string directory;
+      std::string base_name;
+      static void declare(dealii::ParameterHandler &prm);
+      void        parse(dealii::ParameterHandler &prm);
+    };
+  } // namespace parameters
+
+  struct Parameters
+  {
+    parameters::Geometry       geometry;
+    parameters::Material       material;
+    parameters::Loading        loading;
+    parameters::Electrodes     electrodes;
+    parameters::Discretization discretization;
+    parameters::Solver         solver;
+    parameters::Wrinkling      wrinkling;
+    parameters::Output         output;
+
+    static void declare(dealii::ParameterHandler &prm);
+    void        parse(dealii::ParameterHandler &prm);
+
+    /// The physical scene in SI units; throws InputError on bad input.
+    Scene scene() const;
+
+    /// Path of the results file, "<Directory>/<Base name>.h5".
+    std::string results_path(const std::string &suffix = "") const;
+  };
+
+  /// Read and validate a .prm file. Throws InputError with a message that
+  /// names the file, the line or the parameter. @p text receives the file's
+  /// parameters as deal.II writes them back (for the results file).
+  Parameters read_parameters(const std::string &filename, std::string *text = nullptr);
+
+  /// A complete, documented parameter file with every default.
+  std::string default_parameter_file();
+
+  /// Parse "1, 1.7, 3" into numbers; @p name is used in error messages.
+  std::vector<double> parse_number_list(const std::string &text, const std::string &name);
+} // namespace cdea

@@ -1,0 +1,76 @@
+#pragma once
+// Axisymmetric nonlinear membrane FE model of the cone actuator.
+//
+// Unknowns r(R) and z(R) on the undeformed radius R in [A, B], an FESystem of
+// two FE_Q of degree p; element boundaries lie on every ring edge and each
+// element carries the voltage of its ring. The total potential
+//
+//   Pi[r, z] = 2 pi H int_A^B W(l1, l2; Phi) R dR  -  F z(A),
+//   l1 = sqrt(r'^2 + z'^2),  l2 = r / R,
+//
+// is stationary at equilibrium; its first and second variations give the
+// residual and the exact tangent (see doc/theory.md). Boundary conditions:
+// r(A) = s A and r(B) = s B with s the current pre-stretch (s = lam_pre after
+// stage 0), z(B) = 0; z(A) is free and carries the dead load.
+//
+// The deal.II machinery stays in the source file (pimpl) so that including
+// this header is cheap.
+
+#include <cdea/scene.h>
+#include <cdea/solver/equilibrium_model.h>
+#include <cdea/solver/newton.h>
+
+#include <memory>
+
+namespace cdea
+{
+  struct FeDiscretization
+  {
+    unsigned int degree              = 3;
+    unsigned int elements_per_ring   = 8;
+    double       grading             = 4.;
+    unsigned int refinements         = 0;
+    unsigned int samples_per_element = 4;
+  };
+
+  class MembraneModel : public EquilibriumModel
+  {
+  public:
+    MembraneModel(const Scene &scene, const FeDiscretization &discretization,
+                  const NewtonSettings &newton);
+    ~MembraneModel() override;
+
+    void                set_reference_state() override;
+    SolveReport         solve(const LoadState &load) override;
+    StepSummary         summary() const override;
+    StepFields          fields() const override;
+    std::vector<double> state() const override;
+    void                set_state(const std::vector<double> &state) override;
+
+    unsigned int n_dofs() const;
+    unsigned int n_elements() const;
+
+    /// Total potential Pi at the current state and load (J).
+    double energy() const;
+
+    /// Residual and tangent at the current state and load, in natural dof
+    /// order with no boundary condition applied (for tests against finite
+    /// differences and automatic differentiation).
+    std::vector<double>              residual_vector() const;
+    std::vector<std::vector<double>> tangent_matrix() const;
+
+    /// Unknown vector of the current state and its replacement (dof order).
+    std::vector<double> solution() const;
+    void                set_solution(const std::vector<double> &x);
+
+    /// Support points (R) and component (0: r, 1: z) of each dof.
+    std::vector<std::pair<double, unsigned int>> dof_support() const;
+
+    /// Index of the dof holding z at the disk edge.
+    unsigned int disk_z_dof() const;
+
+  private:
+    class Impl;
+    std::unique_ptr<Impl> impl;
+  };
+} // namespace cdea

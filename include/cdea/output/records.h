@@ -1,0 +1,46 @@
+#pragma once
+// What a solver (FE or shooting) reports for one converged equilibrium, in SI
+// units. The HDF5 writer converts to the file's units (mm, kPa, kV, MV/m, g).
+
+#include <vector>
+
+namespace cdea
+{
+  enum class Stage : int
+  {
+    prestretch = 0,
+    dead_load  = 1,
+    voltage    = 2
+  };
+
+  /// One row of /summary.
+  struct StepSummary
+  {
+    Stage               stage       = Stage::prestretch;
+    double              load_factor = 0.; ///< stage parameter (voltage path t in stage 2)
+    std::vector<double> voltages;         ///< V, one per ring
+    double              mass          = 0.; ///< kg
+    double              displacement  = 0.; ///< |z(disk) - z(frame)| (m)
+    double              stroke        = 0.; ///< m; NaN before the end of the load stage
+    double              s2_min        = 0.; ///< smallest hoop stress anywhere (Pa)
+    double              s2_min_radius = 0.; ///< reference radius R where s2_min occurs (m)
+    std::vector<double> s2_ring_inner;      ///< hoop stress at each ring's inner edge (Pa)
+    bool                wrinkled          = false;
+    unsigned int        newton_iterations = 0;
+  };
+
+  /// Fields along the meridian, one entry per sample point (SI; theta in rad).
+  struct StepFields
+  {
+    std::vector<double> R, r, z, theta, lambda1, lambda2, s1, s2, E, Phi;
+    std::vector<int>    ring;
+  };
+
+  /// Where the hoop stress first reaches zero.
+  struct OnsetRecord
+  {
+    bool                found = false;
+    std::vector<double> voltages; ///< V, one per ring
+    double              radius = 0.; ///< pre-stretched flat radius lam_pre R (m)
+  };
+} // namespace cdea

@@ -1,0 +1,57 @@
+#pragma once
+// What the load-stepping driver needs from a model of the actuator: reach an
+// equilibrium at a given load from the current state, report it, and save or
+// restore its state. The FE model and the shooting model both implement it, so
+// both follow the same stages and the same onset search.
+
+#include <cdea/output/records.h>
+
+#include <string>
+#include <vector>
+
+namespace cdea
+{
+  /// The load a state is in equilibrium with.
+  struct LoadState
+  {
+    Stage               stage       = Stage::prestretch;
+    double              load_factor = 0.; ///< stage parameter
+    double              stretch     = 1.; ///< current equi-biaxial pre-stretch (stage 0 ramps it)
+    double              force       = 0.; ///< dead load on the disk (N)
+    double              mass        = 0.; ///< kg, F = mass g
+    std::vector<double> voltages;         ///< V, one per ring
+  };
+
+  struct SolveReport
+  {
+    bool         converged  = false;
+    unsigned int iterations = 0;
+    std::string  message; ///< why it failed (empty on success)
+  };
+
+  class EquilibriumModel
+  {
+  public:
+    virtual ~EquilibriumModel() = default;
+
+    /// Put the model in the unstretched, unloaded, flat reference state.
+    virtual void set_reference_state() = 0;
+
+    /// Try to reach equilibrium at @p load starting from the current state.
+    /// On success the equilibrium becomes the current state; on failure the
+    /// current state is left as it was before the call.
+    virtual SolveReport solve(const LoadState &load) = 0;
+
+    /// Everything of the current state that StepSummary holds, except the
+    /// fields the driver owns (stage, load_factor, stroke, wrinkled, newton_iterations).
+    virtual StepSummary summary() const = 0;
+
+    /// Fields along the meridian of the current state.
+    virtual StepFields fields() const = 0;
+
+    /// Opaque copy of the current state (with the load it is in equilibrium
+    /// with), and its restoration; used to go back to a converged step.
+    virtual std::vector<double> state() const                  = 0;
+    virtual void                set_state(const std::vector<double> &state) = 0;
+  };
+} // namespace cdea

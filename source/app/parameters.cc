@@ -1,0 +1,419 @@
+#include <deal.II/base/parameter_handler.h>
+
+#include <cdea/app/parameters.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace cdea
+{
+  using dealii::ParameterHandler;
+  using dealii::Patterns::Anything;
+    using dealii::Patterns::Double;
+  using dealii::Patterns::Integer;
+
+  namespace parameters
+  {
+    void Geometry::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
+      prm.declare_entry("Disk radius (mm)", "14", Double(),
+                        "Radius a of the rigid disk, measured on the pre-stretched flat film.");
+      prm.declare_entry("Frame radius (mm)", "42", Double(),
+                        "Inner radius b of the rigid frame, measured on the pre-stretched flat film.");
+      prm.declare_entry("Film thickness (mm)", "1", Double(),
+                        "Thickness H of the undeformed (unstretched) film.");
+      prm.declare_entry("Prestretch", "2.5", Double(),
+                        "Equi-biaxial pre-stretch lam_pre of the film before the disk is attached.");
+      prm.leave_subsection();
+    }
+
+    void Geometry::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
+      disk_radius_mm    = prm.get_double("Disk radius (mm)");
+      frame_radius_mm   = prm.get_double("Frame radius (mm)");
+      film_thickness_mm = prm.get_double("Film thickness (mm)");
+      prestretch        = prm.get_double("Prestretch");
+      prm.leave_subsection();
+    }
+
+    void Material::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Material");
+      prm.declare_entry("Shear modulus (kPa)", "25.1", Double(),
+                        "Small-strain shear modulus mu of the Gent law.");
+      prm.declare_entry("Jlim", "270", Double(),
+                        "Gent limit: the law stiffens without bound as I1 - 3 approaches Jlim.");
+      prm.declare_entry("Permittivity (F/m)", "3.98e-11", Double(),
+                        "Permittivity eps of the ideal dielectric.");
+      prm.leave_subsection();
+    }
+
+    void Material::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Material");
+      shear_modulus_kPa = prm.get_double("Shear modulus (kPa)");
+      jlim              = prm.get_double("Jlim");
+      permittivity      = prm.get_double("Permittivity (F/m)");
+      prm.leave_subsection();
+    }
+
+    void Loading::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Loading");
+      prm.declare_entry("Mass (g)", "280", Double(),
+                        "Dead weight hanging from the disk; the load F = m g pulls the disk "
+                        "out of the frame plane.");
+      prm.declare_entry("Gravity (m/s^2)", "9.81", Double(), "Gravitational acceleration g.");
+      prm.leave_subsection();
+    }
+
+    void Loading::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Loading");
+      mass_g  = prm.get_double("Mass (g)");
+      gravity = prm.get_double("Gravity (m/s^2)");
+      prm.leave_subsection();
+    }
+
+    void Electrodes::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Electrodes");
+      prm.declare_entry("Ring edges (r/a)", "1, 3", Anything(),
+                        "n+1 increasing edges of n concentric electrode rings, as radii on the "
+                        "pre-stretched flat film over the disk radius: the first is 1 (disk "
+                        "edge), the last b/a (frame).");
+      prm.declare_entry("Voltage path (kV)", "5", Anything(),
+                        "Waypoints separated by ';', each one voltage per ring separated by ','. "
+                        "All rings start at 0 kV and move linearly from one waypoint to the next.");
+      prm.leave_subsection();
+    }
+
+    void Electrodes::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Electrodes");
+      ring_edges_text   = prm.get("Ring edges (r/a)");
+      voltage_path_text = prm.get("Voltage path (kV)");
+      prm.leave_subsection();
+    }
+
+    void Discretization::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Discretization");
+      prm.declare_entry("Polynomial degree", "3", Integer(1, 8),
+                        "Degree p of the FE_Q elements for r(R) and z(R).");
+      prm.declare_entry("Elements per ring", "8", Integer(1, 100000),
+                        "Elements in every electrode ring before global refinement; element "
+                        "boundaries always lie on the ring edges.");
+      prm.declare_entry("Grading", "4", Double(1., 1000.),
+                        "Ratio of the outermost to the innermost element length in each ring: "
+                        "elements are geometrically smaller towards the ring's inner edge, where "
+                        "the meridian stretch varies fastest. 1 is uniform.");
+      prm.declare_entry("Global refinements", "0", Integer(0, 20),
+                        "Times every element is bisected (h-refinement studies).");
+      prm.declare_entry("Samples per element", "4", Integer(1, 1000),
+                        "Equally spaced points per element at which fields are written.");
+      prm.leave_subsection();
+    }
+
+    void Discretization::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Discretization");
+      polynomial_degree   = prm.get_integer("Polynomial degree");
+      elements_per_ring   = prm.get_integer("Elements per ring");
+      grading             = prm.get_double("Grading");
+      refinements         = prm.get_integer("Global refinements");
+      samples_per_element = prm.get_integer("Samples per element");
+      prm.leave_subsection();
+    }
+
+    void Solver::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Solver");
+      prm.declare_entry("Residual tolerance", "1e-10", Double(0.),
+                        "Newton stops when the largest residual entry over the force scale "
+                        "max(F, 2 pi H mu a) is below this ...");
+      prm.declare_entry("Update tolerance", "1e-10", Double(0.),
+                        "... and the largest Newton update over the disk radius a is below this.");
+      prm.declare_entry("Max Newton iterations", "25", Integer(1, 1000),
+                        "Newton iterations before a load step counts as failed and is cut back.");
+      prm.declare_entry("Prestretch steps", "1", Integer(1, 10000),
+                        "Steps from the unstretched film to lam_pre (the state is homogeneous).");
+      prm.declare_entry("Load increment", "0.25", Double(1e-8, 1.),
+                        "Largest increment of the dead load, as a fraction of m g.");
+      prm.declare_entry("Voltage increment (kV)", "0.25", Double(1e-8),
+                        "Largest change of any ring voltage in one step of the voltage path.");
+      prm.declare_entry("Min voltage increment (kV)", "1e-6", Double(0.),
+                        "Cut-backs below this voltage change (or below 1e-8 of the load in "
+                        "the other stages) end the run with an error.");
+      prm.declare_entry("Max cutbacks", "30", Integer(0, 1000),
+                        "Successive halvings of a failed increment before the run gives up.");
+      prm.leave_subsection();
+    }
+
+    void Solver::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Solver");
+      residual_tolerance       = prm.get_double("Residual tolerance");
+      update_tolerance         = prm.get_double("Update tolerance");
+      max_newton_iterations    = prm.get_integer("Max Newton iterations");
+      prestretch_steps         = prm.get_integer("Prestretch steps");
+      load_increment           = prm.get_double("Load increment");
+      voltage_increment_kV     = prm.get_double("Voltage increment (kV)");
+      min_voltage_increment_kV = prm.get_double("Min voltage increment (kV)");
+      max_cutbacks             = prm.get_integer("Max cutbacks");
+      prm.leave_subsection();
+    }
+
+    void Wrinkling::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Wrinkling");
+      prm.declare_entry("Onset tolerance (V)", "1e-3", Double(1e-9),
+                        "The load at which the hoop stress s2 first reaches zero is located "
+                        "by root finding to within this voltage.");
+      prm.leave_subsection();
+    }
+
+    void Wrinkling::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Wrinkling");
+      onset_tolerance_V = prm.get_double("Onset tolerance (V)");
+      prm.leave_subsection();
+    }
+
+    void Output::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      prm.declare_entry("Directory", "results", Anything(),
+                        "Folder of the results file (created if missing), relative to the "
+                        "working directory.");
+      prm.declare_entry("Base name", "default", Anything(),
+                        "The results go to <Directory>/<Base name>.h5.");
+      prm.leave_subsection();
+    }
+
+    void Output::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Output");
+      directory    = prm.get("Directory");
+      base_name    = prm.get("Base name");
+      prm.leave_subsection();
+    }
+  } // namespace parameters
+
+  void Parameters::declare(ParameterHandler &prm)
+  {
+    parameters::Geometry::declare(prm);
+    parameters::Material::declare(prm);
+    parameters::Loading::declare(prm);
+    parameters::Electrodes::declare(prm);
+    parameters::Discretization::declare(prm);
+    parameters::Solver::declare(prm);
+    parameters::Wrinkling::declare(prm);
+    parameters::Output::declare(prm);
+  }
+
+  void Parameters::parse(ParameterHandler &prm)
+  {
+    geometry.parse(prm);
+    material.parse(prm);
+    loading.parse(prm);
+    electrodes.parse(prm);
+    discretization.parse(prm);
+    solver.parse(prm);
+    wrinkling.parse(prm);
+    output.parse(prm);
+  }
+
+  std::vector<double> parse_number_list(const std::string &text, const std::string &name)
+  {
+    std::vector<double> values;
+    std::stringstream   items(text);
+    std::string         item;
+    while (std::getline(items, item, ','))
+      {
+        const auto first = item.find_first_not_of(" \t");
+        const auto last  = item.find_last_not_of(" \t");
+        if (first == std::string::npos)
+          throw InputError(name + ": empty entry in '" + text +
+                           "' (expected numbers separated by ',')");
+        const std::string token = item.substr(first, last - first + 1);
+        std::size_t       used  = 0;
+        double            value = 0.;
+        try
+          {
+            value = std::stod(token, &used);
+          }
+        catch (const std::exception &)
+          {
+            used = 0;
+          }
+        if (used != token.size() || !std::isfinite(value))
+          throw InputError(name + ": '" + token + "' is not a number (in '" + text + "')");
+        values.push_back(value);
+      }
+    if (values.empty())
+      throw InputError(name + ": no value given (expected numbers separated by ',')");
+    return values;
+  }
+
+  namespace
+  {
+    void require_positive(const double value, const std::string &name)
+    {
+      if (!(value > 0.) || !std::isfinite(value))
+        throw InputError(name + " must be positive, got " + std::to_string(value));
+    }
+
+    std::string format(const double x)
+    {
+      std::ostringstream s;
+      s << x;
+      return s.str();
+    }
+  } // namespace
+
+  Scene Parameters::scene() const
+  {
+    require_positive(geometry.disk_radius_mm, "Geometry/Disk radius (mm)");
+    require_positive(geometry.frame_radius_mm, "Geometry/Frame radius (mm)");
+    require_positive(geometry.film_thickness_mm, "Geometry/Film thickness (mm)");
+    if (geometry.frame_radius_mm <= geometry.disk_radius_mm)
+      throw InputError("Geometry/Frame radius (mm) must be larger than Geometry/Disk radius (mm) (" +
+                       format(geometry.disk_radius_mm) + "), got " +
+                       format(geometry.frame_radius_mm));
+    if (!(geometry.prestretch > 1.))
+      throw InputError("Geometry/Prestretch must be larger than 1 (the film has to be taut), got " +
+                       format(geometry.prestretch));
+    require_positive(material.shear_modulus_kPa, "Material/Shear modulus (kPa)");
+    require_positive(material.jlim, "Material/Jlim");
+    require_positive(material.permittivity, "Material/Permittivity (F/m)");
+    if (loading.mass_g < 0.)
+      throw InputError("Loading/Mass (g) must be zero or positive, got " + format(loading.mass_g));
+    require_positive(loading.gravity, "Loading/Gravity (m/s^2)");
+
+    // The equi-biaxial pre-stretch alone must stay inside the Gent limit:
+    // I - 3 = 2 lam^2 + lam^-4 - 3 < Jlim.
+    const double lam = geometry.prestretch;
+    const double I3  = 2. * lam * lam + 1. / (lam * lam * lam * lam) - 3.;
+    if (I3 >= material.jlim)
+      throw InputError("Geometry/Prestretch " + format(lam) +
+                       " already exceeds the Gent limit: I1 - 3 = " + format(I3) +
+                       " must be below Material/Jlim = " + format(material.jlim));
+
+    Scene scene;
+    scene.disk_radius  = geometry.disk_radius_mm * 1e-3;
+    scene.frame_radius = geometry.frame_radius_mm * 1e-3;
+    scene.prestretch   = lam;
+    scene.material     = {material.shear_modulus_kPa * 1e3, material.jlim,
+                          material.permittivity, geometry.film_thickness_mm * 1e-3};
+    scene.mass         = loading.mass_g * 1e-3;
+    scene.gravity      = loading.gravity;
+
+    const std::string edges_name = "Electrodes/Ring edges (r/a)";
+    auto edges = parse_number_list(electrodes.ring_edges_text, edges_name);
+    const double b_over_a = geometry.frame_radius_mm / geometry.disk_radius_mm;
+    if (edges.size() < 2)
+      throw InputError(edges_name + ": needs at least two edges (1 and b/a = " + format(b_over_a) +
+                       "), got '" + electrodes.ring_edges_text + "'");
+    if (std::abs(edges.front() - 1.) > 1e-9)
+      throw InputError(edges_name + ": the first edge must be 1 (the disk edge), got " +
+                       format(edges.front()));
+    if (std::abs(edges.back() - b_over_a) > 1e-6 * b_over_a)
+      throw InputError(edges_name + ": the last edge must be b/a = " + format(b_over_a) +
+                       " (the frame), got " + format(edges.back()));
+    for (std::size_t i = 1; i < edges.size(); ++i)
+      if (!(edges[i] > edges[i - 1]))
+        throw InputError(edges_name + ": edges must increase strictly, but " +
+                         format(edges[i]) + " follows " + format(edges[i - 1]));
+    edges.front()           = 1.;
+    edges.back()            = b_over_a;
+    scene.ring_edges_over_a = edges;
+
+    const std::string path_name = "Electrodes/Voltage path (kV)";
+    std::vector<std::vector<double>> waypoints;
+    std::stringstream                items(electrodes.voltage_path_text);
+    std::string                      item;
+    while (std::getline(items, item, ';'))
+      {
+        auto w = parse_number_list(item, path_name);
+        if (w.size() != scene.n_rings())
+          throw InputError(path_name + ": waypoint '" + item + "' has " +
+                           std::to_string(w.size()) + " voltage(s), but there are " +
+                           std::to_string(scene.n_rings()) +
+                           " ring(s): give one voltage per ring, waypoints separated by ';'");
+        for (double &v : w)
+          {
+            if (v < 0.)
+              throw InputError(path_name + ": voltages must not be negative (the energy "
+                               "depends on Phi^2 only), got " + format(v));
+            v *= 1e3;
+          }
+        waypoints.push_back(w);
+      }
+    if (waypoints.empty())
+      throw InputError(path_name + ": no waypoint given");
+    scene.path = VoltagePath(waypoints);
+
+    if (output.base_name.empty() || output.base_name.find('/') != std::string::npos)
+      throw InputError("Output/Base name must be a non-empty file name without '/', got '" +
+                       output.base_name + "'");
+    if (output.directory.empty())
+      throw InputError("Output/Directory must not be empty (use . for the working directory)");
+    if (solver.min_voltage_increment_kV > solver.voltage_increment_kV)
+      throw InputError("Solver/Min voltage increment (kV) must not exceed Solver/Voltage "
+                       "increment (kV)");
+    return scene;
+  }
+
+  std::string Parameters::results_path(const std::string &suffix) const
+  {
+    return output.directory + "/" + output.base_name + suffix + ".h5";
+  }
+
+  Parameters read_parameters(const std::string &filename, std::string *text)
+  {
+    {
+      std::ifstream probe(filename);
+      if (!probe)
+        throw InputError("cannot read parameter file '" + filename +
+                         "': it does not exist or is not readable");
+    }
+    ParameterHandler prm;
+    Parameters::declare(prm);
+    try
+      {
+        prm.parse_input(filename, "", false, false);
+      }
+    catch (const dealii::ExceptionBase &e)
+      {
+        std::ostringstream message;
+        e.print_info(message);
+        std::string m = message.str();
+        while (!m.empty() && (m.back() == '\n' || m.back() == ' '))
+          m.pop_back();
+        throw InputError("in parameter file '" + filename + "': " + m);
+      }
+    Parameters parameters;
+    parameters.parse(prm);
+    parameters.scene(); // validate now, before anything is written
+    if (text)
+      {
+        std::ostringstream out;
+        prm.print_parameters(out, ParameterHandler::ShortText);
+        *text = out.str();
+      }
+    return parameters;
+  }
+
+  std::string default_parameter_file()
+  {
+    ParameterHandler prm;
+    Parameters::declare(prm);
+    std::ostringstream out;
+    prm.print_parameters(out, ParameterHandler::Text);
+    return out.str();
+  }
+} // namespace cdea

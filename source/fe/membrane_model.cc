@@ -1,0 +1,561 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/tria.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <cdea/fe/membrane_model.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace cdea
+{
+  using namespace dealii;
+  using Cell = DoFHandler<1>::active_cell_iterator;
+
+  namespace
+  {
+    /// Element lengths of one ring: geometric, smallest at the ring's inner
+    /// edge, the last @p grading times the first.
+    std::vector<double> graded_steps(const double length, const unsigned int n,
+                                     const double grading)
+    {
+      std::vector<double> steps(n, length / n);
+      if (n > 1 && grading > 1.)
+        {
+          const double q  = std::pow(grading, 1. / (n - 1));
+          const double h0 = length * (q - 1.) / (std::pow(q, n) - 1.);
+          for (unsigned int k = 0; k < n; ++k)
+            steps[k] = h0 * std::pow(q, k);
+        }
+      return steps;
+    }
+
+    /// Kinematics and stresses at one point of the meridian.
+    struct PointState
+    {
+      double R, r, z, dr, dz, l1, l2;
+      NominalStress s;
+    };
+  } // namespace
+
+  class MembraneModel::Impl : public NonlinearProblem<Vector<double>>
+  {
+  public:
+    Impl(const Scene &scene, const FeDiscretization &disc, const NewtonSettings &newton);
+
+    Scene                          scene;
+    FeDiscretization               disc;
+    NewtonSettings                 newton_settings;
+    Triangulation<1>               triangulation;
+    FESystem<1>                    fe;
+    DoFHandler<1>                  dof_handler;
+    QGauss<1>                      quadrature;
+    AffineConstraints<double>      constraints; ///< homogeneous: Newton updates
+    TrilinosWrappers::SparseMatrix tangent;
+    Vector<double>                 system_rhs;
+    Vector<double>                 solution;
+    FEValues<1>                    fe_values; ///< at the assembly quadrature, reused
+
+    unsigned int r_inner, z_inner, r_outer, z_outer; ///< boundary dofs
+
+    LoadState                   load;
+    std::vector<GentDielectric> laws; ///< one per ring, at the load's voltages
+
+    void set_load(const LoadState &new_load);
+    void apply_boundary_values(Vector<double> &x) const;
+
+    /// Local residual (and tangent if @p cell_matrix) of one element; returns
+    /// the element's share of 2 pi H int W R dR.
+    double assemble_cell(const Cell &cell, FEValues<1> &fe_values, const Vector<double> &x,
+                         FullMatrix<double> *cell_matrix, Vector<double> &cell_rhs) const;
+
+    void residual(const Vector<double> &x, Vector<double> &r) override;
+    void newton_update(const Vector<double> &x, const Vector<double> &r,
+                       Vector<double> &dx) override;
+  };
+
+  MembraneModel::Impl::Impl(const Scene &scene_in, const FeDiscretization &disc_in,
+                            const NewtonSettings &newton)
+    : scene(scene_in)
+    , disc(disc_in)
+    , newton_settings(newton)
+    , fe(FE_Q<1>(disc_in.degree), 2)
+    , dof_handler(triangulation)
+    , quadrature(disc_in.degree + 1)
+    , fe_values(fe, quadrature,
+                update_values | update_gradients | update_quadrature_points | update_JxW_values)
+  {
+    const auto          edges = scene.reference_ring_edges();
+    std::vector<double> steps;
+    for (unsigned int ring = 0; ring < scene.n_rings(); ++ring)
+      {
+        const auto s =
+          graded_steps(edges[ring + 1] - edges[ring], disc.elements_per_ring, disc.grading);
+        steps.insert(steps.end(), s.begin(), s.end());
+      }
+    GridGenerator::subdivided_hyper_rectangle(triangulation, {steps}, Point<1>(edges.front()),
+                                              Point<1>(edges.back()));
+    for (auto &cell : triangulation.active_cell_iterators())
+      cell->set_material_id(scene.ring_of(cell->center()[0]));
+    triangulation.refine_global(disc.refinements);
+
+    dof_handler.distribute_dofs(fe);
+    DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    DoFTools::make_sparsity_pattern(dof_handler, dsp);
+
+    const auto first = dof_handler.begin_active();
+    auto       last  = first;
+    for (auto cell = first; cell != dof_handler.end(); ++cell)
+      last = cell;
+    r_inner = first->vertex_dof_index(0, 0);
+    z_inner = first->vertex_dof_index(0, 1);
+    r_outer = last->vertex_dof_index(1, 0);
+    z_outer = last->vertex_dof_index(1, 1);
+    for (const unsigned int dof : {r_inner, r_outer, z_outer})
+      constraints.add_line(dof);
+    constraints.close();
+    tangent.reinit(dsp);
+
+    solution.reinit(dof_handler.n_dofs());
+    system_rhs.reinit(dof_handler.n_dofs());
+  }
+
+  void MembraneModel::Impl::set_load(const LoadState &new_load)
+  {
+    load = new_load;
+    if (load.voltages.size() != scene.n_rings())
+      load.voltages.assign(scene.n_rings(), 0.);
+    laws.clear();
+    for (const double v : load.voltages)
+      laws.emplace_back(scene.material, v);
+  }
+
+  void MembraneModel::Impl::apply_boundary_values(Vector<double> &x) const
+  {
+    x(r_inner) = load.stretch * scene.inner_reference_radius();
+    x(r_outer) = load.stretch * scene.outer_reference_radius();
+    x(z_outer) = 0.;
+  }
+
+  double MembraneModel::Impl::assemble_cell(const Cell &cell, FEValues<1> &fe_values,
+                                            const Vector<double> &x,
+                                            FullMatrix<double> *cell_matrix,
+                                            Vector<double> &cell_rhs) const
+  {
+    const unsigned int n = fe.n_dofs_per_cell();
+    std::vector<types::global_dof_index> dofs(n);
+    cell->get_dof_indices(dofs);
+    fe_values.reinit(cell);
+    const GentDielectric &law = laws[cell->material_id()];
+    const double           two_pi_H = 2. * M_PI * scene.material.thickness;
+
+    std::vector<double> dl1(n), dl2(n), value(n), grad(n);
+    std::vector<unsigned int> comp(n);
+    for (unsigned int i = 0; i < n; ++i)
+      comp[i] = fe.system_to_component_index(i).first;
+
+    cell_rhs = 0.;
+    if (cell_matrix)
+      *cell_matrix = 0.;
+    double energy = 0.;
+    for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+      {
+        const double R = fe_values.quadrature_point(q)[0];
+        double       r = 0., dr = 0., dz = 0.;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            value[i] = fe_values.shape_value(i, q);
+            grad[i]  = fe_values.shape_grad(i, q)[0];
+            if (comp[i] == 0)
+              {
+                r += x(dofs[i]) * value[i];
+                dr += x(dofs[i]) * grad[i];
+              }
+            else
+              dz += x(dofs[i]) * grad[i];
+          }
+        const double l1 = std::sqrt(dr * dr + dz * dz);
+        const double l2 = r / R;
+        const double w  = two_pi_H * R * fe_values.JxW(q);
+        if (!(l1 > 0.) || !(l2 > 0.) || !(law.gent_margin(l1, l2) > 0.))
+          {
+            // Outside the material's range: a non-finite residual tells the
+            // line search to step back.
+            cell_rhs = std::numeric_limits<double>::quiet_NaN();
+            return std::numeric_limits<double>::quiet_NaN();
+          }
+        energy += w * law.energy(l1, l2);
+        const NominalStress s = law.stress(l1, l2);
+        // First variations: dl1 = (r' dr' + z' dz') / l1, dl2 = dr / R.
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            dl1[i] = (comp[i] == 0 ? dr : dz) * grad[i] / l1;
+            dl2[i] = (comp[i] == 0 ? value[i] / R : 0.);
+            cell_rhs(i) += w * (s.s1 * dl1[i] + s.s2 * dl2[i]);
+          }
+        if (cell_matrix)
+          {
+            const StressTangent t = law.tangent(l1, l2);
+            // Second variation of l1: (dr'Dr' + dz'Dz')/l1 - dl1 Dl1 / l1.
+            for (unsigned int i = 0; i < n; ++i)
+              for (unsigned int j = 0; j < n; ++j)
+                {
+                  const double ddl1 =
+                    ((comp[i] == comp[j]) ? grad[i] * grad[j] : 0.) / l1 - dl1[i] * dl1[j] / l1;
+                  (*cell_matrix)(i, j) +=
+                    w * (t.s11 * dl1[i] * dl1[j] + t.s12 * (dl1[i] * dl2[j] + dl2[i] * dl1[j]) +
+                         t.s22 * dl2[i] * dl2[j] + s.s1 * ddl1);
+                }
+          }
+      }
+    return energy;
+  }
+
+  void MembraneModel::Impl::residual(const Vector<double> &x, Vector<double> &r)
+  {
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    Vector<double>                       cell_rhs(n);
+    std::vector<types::global_dof_index> dofs(n);
+    r = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        assemble_cell(cell, fe_values, x, nullptr, cell_rhs);
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < n; ++i)
+          r(dofs[i]) += cell_rhs(i);
+      }
+    r(z_inner) -= load.force;
+    constraints.set_zero(r);
+  }
+
+  void MembraneModel::Impl::newton_update(const Vector<double> &x, const Vector<double> &,
+                                          Vector<double> &dx)
+  {
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    FullMatrix<double>                   cell_matrix(n, n);
+    Vector<double>                       cell_rhs(n);
+    std::vector<types::global_dof_index> dofs(n);
+    tangent    = 0.;
+    system_rhs = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        assemble_cell(cell, fe_values, x, &cell_matrix, cell_rhs);
+        cell_rhs *= -1.;
+        cell->get_dof_indices(dofs);
+        constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs, tangent, system_rhs);
+      }
+    tangent.compress(VectorOperation::add);
+    system_rhs(z_inner) += load.force;
+
+    SolverControl                  control(1, 0.);
+    TrilinosWrappers::SolverDirect direct(control);
+    dx = 0.;
+    direct.solve(tangent, dx, system_rhs);
+    constraints.distribute(dx);
+  }
+
+  MembraneModel::MembraneModel(const Scene &scene, const FeDiscretization &discretization,
+                               const NewtonSettings &newton)
+    : impl(std::make_unique<Impl>(scene, discretization, newton))
+  {
+    set_reference_state();
+  }
+
+  MembraneModel::~MembraneModel() = default;
+
+  unsigned int MembraneModel::n_dofs() const { return impl->dof_handler.n_dofs(); }
+
+  unsigned int MembraneModel::n_elements() const
+  {
+    return impl->triangulation.n_active_cells();
+  }
+
+  unsigned int MembraneModel::disk_z_dof() const { return impl->z_inner; }
+
+  void MembraneModel::set_reference_state()
+  {
+    LoadState reference;
+    reference.stretch = 1.;
+    impl->set_load(reference);
+    // r = R, z = 0: interpolate the identity on the support points.
+    const auto support = dof_support();
+    for (unsigned int i = 0; i < support.size(); ++i)
+      impl->solution(i) = support[i].second == 0 ? support[i].first : 0.;
+  }
+
+  std::vector<std::pair<double, unsigned int>> MembraneModel::dof_support() const
+  {
+    std::vector<std::pair<double, unsigned int>> support(n_dofs());
+    const auto &unit_points = impl->fe.get_unit_support_points();
+    std::vector<types::global_dof_index> dofs(impl->fe.n_dofs_per_cell());
+    for (const auto &cell : impl->dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        const double x0 = cell->vertex(0)[0];
+        const double h  = cell->vertex(1)[0] - x0;
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          support[dofs[i]] = {x0 + h * unit_points[i][0],
+                              impl->fe.system_to_component_index(i).first};
+      }
+    return support;
+  }
+
+  SolveReport MembraneModel::solve(const LoadState &load)
+  {
+    const LoadState      old_load     = impl->load;
+    const Vector<double> old_solution = impl->solution;
+
+    // Predictor: the homogeneous part of a change of pre-stretch is exact
+    // (r scales with the stretch); otherwise start from the current state.
+    if (load.stretch != old_load.stretch)
+      {
+        const auto support = dof_support();
+        for (unsigned int i = 0; i < support.size(); ++i)
+          if (support[i].second == 0)
+            impl->solution(i) *= load.stretch / old_load.stretch;
+      }
+    impl->set_load(load);
+    impl->apply_boundary_values(impl->solution);
+
+    NewtonSettings settings = impl->newton_settings;
+    settings.residual_scale =
+      std::max(load.force, 2. * M_PI * impl->scene.material.thickness *
+                             impl->scene.material.shear_modulus * impl->scene.disk_radius);
+    settings.update_scale = impl->scene.disk_radius;
+    LineSearchNewton<Vector<double>> newton(settings);
+    SolveReport                      report = newton.solve(*impl, impl->solution);
+    if (!report.converged)
+      {
+        impl->set_load(old_load);
+        impl->solution = old_solution;
+      }
+    return report;
+  }
+
+  double MembraneModel::energy() const
+  {
+    FEValues<1> &fe_values = impl->fe_values;
+    Vector<double> cell_rhs(impl->fe.n_dofs_per_cell());
+    double         pi = 0.;
+    for (const auto &cell : impl->dof_handler.active_cell_iterators())
+      pi += impl->assemble_cell(cell, fe_values, impl->solution, nullptr, cell_rhs);
+    return pi - impl->load.force * impl->solution(impl->z_inner);
+  }
+
+  std::vector<double> MembraneModel::residual_vector() const
+  {
+    FEValues<1> &fe_values = impl->fe_values;
+    const unsigned int                   n = impl->fe.n_dofs_per_cell();
+    Vector<double>                       cell_rhs(n);
+    std::vector<types::global_dof_index> dofs(n);
+    std::vector<double>                  r(n_dofs(), 0.);
+    for (const auto &cell : impl->dof_handler.active_cell_iterators())
+      {
+        impl->assemble_cell(cell, fe_values, impl->solution, nullptr, cell_rhs);
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < n; ++i)
+          r[dofs[i]] += cell_rhs(i);
+      }
+    r[impl->z_inner] -= impl->load.force;
+    return r;
+  }
+
+  std::vector<std::vector<double>> MembraneModel::tangent_matrix() const
+  {
+    FEValues<1> &fe_values = impl->fe_values;
+    const unsigned int                   n = impl->fe.n_dofs_per_cell();
+    FullMatrix<double>                   cell_matrix(n, n);
+    Vector<double>                       cell_rhs(n);
+    std::vector<types::global_dof_index> dofs(n);
+    std::vector<std::vector<double>>     K(n_dofs(), std::vector<double>(n_dofs(), 0.));
+    for (const auto &cell : impl->dof_handler.active_cell_iterators())
+      {
+        impl->assemble_cell(cell, fe_values, impl->solution, &cell_matrix, cell_rhs);
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            K[dofs[i]][dofs[j]] += cell_matrix(i, j);
+      }
+    return K;
+  }
+
+  std::vector<double> MembraneModel::solution() const
+  {
+    return {impl->solution.begin(), impl->solution.end()};
+  }
+
+  void MembraneModel::set_solution(const std::vector<double> &x)
+  {
+    std::copy(x.begin(), x.end(), impl->solution.begin());
+  }
+
+  // The state: stretch, force, mass, one voltage per ring, then the unknowns.
+  std::vector<double> MembraneModel::state() const
+  {
+    const LoadState    &l = impl->load;
+    std::vector<double> s{double(l.stage), l.load_factor, l.stretch, l.force, l.mass};
+    s.insert(s.end(), l.voltages.begin(), l.voltages.end());
+    s.insert(s.end(), impl->solution.begin(), impl->solution.end());
+    return s;
+  }
+
+  void MembraneModel::set_state(const std::vector<double> &s)
+  {
+    const unsigned int n_rings = impl->scene.n_rings();
+    if (s.size() != 5 + n_rings + n_dofs())
+      throw std::invalid_argument("MembraneModel::set_state: state of the wrong size");
+    LoadState l;
+    l.stage       = static_cast<Stage>(static_cast<int>(s[0]));
+    l.load_factor = s[1];
+    l.stretch     = s[2];
+    l.force       = s[3];
+    l.mass        = s[4];
+    l.voltages.assign(s.begin() + 5, s.begin() + 5 + n_rings);
+    impl->set_load(l);
+    std::copy(s.begin() + 5 + n_rings, s.end(), impl->solution.begin());
+  }
+
+  namespace
+  {
+    /// Evaluate the FE solution at the points of @p fe_values (already reinit'ed).
+    PointState evaluate(const FEValues<1> &fe_values, const unsigned int q,
+                        const std::vector<double> &local, const FiniteElement<1> &fe,
+                        const GentDielectric &law)
+    {
+      PointState p{};
+      p.R = fe_values.quadrature_point(q)[0];
+      for (unsigned int i = 0; i < local.size(); ++i)
+        {
+          const double v = fe_values.shape_value(i, q);
+          const double g = fe_values.shape_grad(i, q)[0];
+          if (fe.system_to_component_index(i).first == 0)
+            {
+              p.r += local[i] * v;
+              p.dr += local[i] * g;
+            }
+          else
+            {
+              p.z += local[i] * v;
+              p.dz += local[i] * g;
+            }
+        }
+      p.l1 = std::sqrt(p.dr * p.dr + p.dz * p.dz);
+      p.l2 = p.r / p.R;
+      p.s  = law.stress(p.l1, p.l2);
+      return p;
+    }
+  } // namespace
+
+  StepSummary MembraneModel::summary() const
+  {
+    StepSummary s;
+    s.voltages     = impl->load.voltages;
+    s.mass         = impl->load.mass;
+    s.displacement = std::abs(impl->solution(impl->z_inner) - impl->solution(impl->z_outer));
+    s.s2_ring_inner.assign(impl->scene.n_rings(), std::numeric_limits<double>::quiet_NaN());
+    s.s2_min = std::numeric_limits<double>::infinity();
+
+    // Hoop stress at the quadrature points and at each ring's inner edge,
+    // evaluated on that ring's side (the first element of the ring).
+    const Quadrature<1> edge(Point<1>(0.));
+    FEValues<1>         fe_quad(impl->fe, impl->quadrature,
+                                update_values | update_gradients | update_quadrature_points);
+    FEValues<1>         fe_edge(impl->fe, edge,
+                                update_values | update_gradients | update_quadrature_points);
+    std::vector<double> local(impl->fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> dofs(local.size());
+    int previous_ring = -1;
+    for (const auto &cell : impl->dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          local[i] = impl->solution(dofs[i]);
+        const unsigned int    ring = cell->material_id();
+        const GentDielectric &law  = impl->laws[ring];
+        fe_quad.reinit(cell);
+        for (unsigned int q = 0; q < impl->quadrature.size(); ++q)
+          {
+            const PointState p = evaluate(fe_quad, q, local, impl->fe, law);
+            if (p.s.s2 < s.s2_min)
+              {
+                s.s2_min        = p.s.s2;
+                s.s2_min_radius = p.R;
+              }
+          }
+        if (int(ring) != previous_ring)
+          {
+            fe_edge.reinit(cell);
+            const PointState p    = evaluate(fe_edge, 0, local, impl->fe, law);
+            s.s2_ring_inner[ring] = p.s.s2;
+            if (p.s.s2 < s.s2_min)
+              {
+                s.s2_min        = p.s.s2;
+                s.s2_min_radius = p.R;
+              }
+            previous_ring = ring;
+          }
+      }
+    return s;
+  }
+
+  StepFields MembraneModel::fields() const
+  {
+    StepFields          f;
+    const unsigned int  m = impl->disc.samples_per_element;
+    std::vector<Point<1>> points;
+    for (unsigned int k = 0; k <= m; ++k)
+      points.emplace_back(double(k) / m);
+    const Quadrature<1> samples(points);
+    FEValues<1>         fe_values(impl->fe, samples,
+                                  update_values | update_gradients | update_quadrature_points);
+    std::vector<double> local(impl->fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> dofs(local.size());
+    const double H = impl->scene.material.thickness;
+    int previous_ring = -1;
+    for (const auto &cell : impl->dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          local[i] = impl->solution(dofs[i]);
+        const int             ring = cell->material_id();
+        const GentDielectric &law  = impl->laws[ring];
+        fe_values.reinit(cell);
+        // The left end is written only where a ring starts, so that the jump
+        // of lambda1 at a ring edge shows as two samples at one radius.
+        for (unsigned int k = (ring != previous_ring ? 0 : 1); k <= m; ++k)
+          {
+            const PointState p = evaluate(fe_values, k, local, impl->fe, law);
+            f.R.push_back(p.R);
+            f.r.push_back(p.r);
+            f.z.push_back(p.z);
+            f.theta.push_back(std::atan2(-p.dz, p.dr));
+            f.lambda1.push_back(p.l1);
+            f.lambda2.push_back(p.l2);
+            f.s1.push_back(p.s.s1);
+            f.s2.push_back(p.s.s2);
+            f.Phi.push_back(law.voltage());
+            f.E.push_back(law.voltage() * p.l1 * p.l2 / H);
+            f.ring.push_back(ring);
+          }
+        previous_ring = ring;
+      }
+    return f;
+  }
+} // namespace cdea

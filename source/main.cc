@@ -1,0 +1,45 @@
+// cdea: command-line entry point.
+#include <deal.II/base/mpi.h>
+
+#include <cdea/app/commands.h>
+#include <cdea/app/parameters.h>
+
+#include <iostream>
+#include <string>
+
+int main(int argc, char **argv)
+{
+  // Trilinos needs MPI even in serial runs.
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  try
+    {
+      if (args.empty())
+        {
+          std::cerr << cdea::usage();
+          return cdea::exit_input_error;
+        }
+      const std::string &command = args[0];
+      if (command == "--help" || command == "-h" || command == "help")
+        {
+          std::cout << cdea::usage();
+          return cdea::exit_success;
+        }
+      if (command == "print-parameters" && args.size() == 1)
+        {
+          std::cout << cdea::default_parameter_file();
+          return cdea::exit_success;
+        }
+      if (command == "run" && args.size() == 2)
+        return cdea::run_fe(args[1]);
+      std::cerr << "cdea: unknown command or wrong number of arguments: '" << command
+                << "'\n\n"
+                << cdea::usage();
+      return cdea::exit_input_error;
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "cdea: error: " << e.what() << '\n';
+      return cdea::exit_input_error;
+    }
+}
