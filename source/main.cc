@@ -1,7 +1,6 @@
 // cdea: command-line entry point.
-#include <deal.II/base/mpi.h>
-
 #include <cdea/app/commands.h>
+#include <cdea/app/mpi_session.h>
 #include <cdea/app/parameters.h>
 
 #include <iostream>
@@ -9,8 +8,7 @@
 
 int main(int argc, char **argv)
 {
-  // Trilinos needs MPI even in serial runs.
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const cdea::MpiSession mpi(argc, argv);
   const std::vector<std::string> args(argv + 1, argv + argc);
   try
     {

@@ -3,11 +3,23 @@
 // what was compared and the test exits non-zero at the end.
 
 #include <cmath>
+#include <iomanip>
 #include <iostream>
 #include <string>
 
 namespace cdea_test
 {
+  /// Ten significant digits in every printed comparison.
+  inline std::ostream &out()
+  {
+    static const bool once = [] {
+      std::cout << std::setprecision(10);
+      return true;
+    }();
+    (void)once;
+    return std::cout;
+  }
+
   inline int &failures()
   {
     static int n = 0;
@@ -19,7 +31,7 @@ namespace cdea_test
                           const std::string &what)
   {
     const bool ok = std::abs(a - b) <= tol;
-    std::cout << (ok ? "  ok   " : "  FAIL ") << what << ": " << a << " vs " << b
+    out() << (ok ? "  ok   " : "  FAIL ") << what << ": " << a << " vs " << b
               << " (|diff| " << std::abs(a - b) << ", tol " << tol << ")\n";
     if (!ok)
       ++failures();
@@ -32,7 +44,7 @@ namespace cdea_test
   {
     const double rel = std::abs(a - b) / std::abs(b);
     const bool   ok  = rel <= tol;
-    std::cout << (ok ? "  ok   " : "  FAIL ") << what << ": " << a << " vs " << b
+    out() << (ok ? "  ok   " : "  FAIL ") << what << ": " << a << " vs " << b
               << " (rel " << rel << ", tol " << tol << ")\n";
     if (!ok)
       ++failures();
@@ -41,7 +53,7 @@ namespace cdea_test
 
   inline bool check(const bool condition, const std::string &what)
   {
-    std::cout << (condition ? "  ok   " : "  FAIL ") << what << "\n";
+    out() << (condition ? "  ok   " : "  FAIL ") << what << "\n";
     if (!condition)
       ++failures();
     return condition;

@@ -3,6 +3,7 @@
 #include <cdea/app/parameters.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -261,17 +262,34 @@ namespace cdea
 
   namespace
   {
-    void require_positive(const double value, const std::string &name)
-    {
-      if (!(value > 0.) || !std::isfinite(value))
-        throw InputError(name + " must be positive, got " + std::to_string(value));
-    }
-
     std::string format(const double x)
     {
       std::ostringstream s;
       s << x;
       return s.str();
+    }
+
+    void require_positive(const double value, const std::string &name)
+    {
+      if (!(value > 0.) || !std::isfinite(value))
+        throw InputError(name + " must be positive, got " + format(value));
+    }
+
+    /// deal.II's messages span several indented lines: fold them into one.
+    std::string one_line(const std::string &text)
+    {
+      std::string out;
+      for (const char c : text)
+        if (c == '\n' || c == ' ' || c == '\t')
+          {
+            if (!out.empty() && out.back() != ' ')
+              out += ' ';
+          }
+        else
+          out += c;
+      while (!out.empty() && out.back() == ' ')
+        out.pop_back();
+      return out;
     }
   } // namespace
 
@@ -377,9 +395,9 @@ namespace cdea
   {
     {
       std::ifstream probe(filename);
-      if (!probe)
+      if (!probe || !std::filesystem::is_regular_file(filename))
         throw InputError("cannot read parameter file '" + filename +
-                         "': it does not exist or is not readable");
+                         "': it does not exist, is not a regular file or is not readable");
     }
     ParameterHandler prm;
     Parameters::declare(prm);
@@ -391,10 +409,7 @@ namespace cdea
       {
         std::ostringstream message;
         e.print_info(message);
-        std::string m = message.str();
-        while (!m.empty() && (m.back() == '\n' || m.back() == ' '))
-          m.pop_back();
-        throw InputError("in parameter file '" + filename + "': " + m);
+        throw InputError("in parameter file '" + filename + "': " + one_line(message.str()));
       }
     Parameters parameters;
     parameters.parse(prm);

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Set up cdea on Debian 12: install the Debian packages that are missing,
+# configure (Release) and build into ./build. Safe to run again: it installs
+# nothing that is already there and rebuilds only what changed.
+#
+#   bash scripts/setup.sh            # packages + configure + build
+#
+# Environment: BUILD_DIR (default: build), JOBS (default: number of cores).
+set -euo pipefail
+
+cd "$(dirname "$0")/.."
+build_dir="${BUILD_DIR:-build}"
+jobs="${JOBS:-$(nproc)}"
+
+packages=(cmake g++ make libdeal.ii-dev libeigen3-dev libhdf5-dev hdf5-tools
+          openmpi-bin python3 python3-h5py python3-matplotlib)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing Debian packages: ${missing[*]}"
+  if [ "$(id -u)" -ne 0 ]; then
+    echo "setup: these packages are missing and installing them needs root:" >&2
+    echo "  sudo apt-get install -y ${missing[*]}" >&2
+    exit 1
+  fi
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+log=$(mktemp)
+trap 'rm -f "$log"' EXIT
+cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release > "$log" 2>&1 || {
+  cat "$log" >&2
+  echo "setup: configuring failed (log above)" >&2
+  exit 1
+}
+cmake --build "$build_dir" -j "$jobs"
+echo "setup: built $build_dir/cdea"

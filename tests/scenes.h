@@ -1,0 +1,41 @@
+#pragma once
+// Scenes and run helpers shared by the test programs.
+
+#include <cdea/scene.h>
+#include <cdea/solver/load_stepper.h>
+
+#include <stdexcept>
+#include <vector>
+
+namespace cdea_test
+{
+  /// The paper's actuator with the given ring edges (r/a) and waypoints (kV).
+  inline cdea::Scene paper_scene(const std::vector<double>              &edges,
+                                 const std::vector<std::vector<double>> &waypoints_kV)
+  {
+    cdea::Scene scene;
+    scene.ring_edges_over_a = edges;
+    auto volts              = waypoints_kV;
+    for (auto &w : volts)
+      for (double &v : w)
+        v *= 1e3;
+    scene.path = cdea::VoltagePath(volts);
+    return scene;
+  }
+
+  /// Run all stages; returns the summary of the last converged step.
+  inline cdea::StepSummary run_to_end(cdea::EquilibriumModel &model, const cdea::Scene &scene,
+                                      cdea::RunResult *result = nullptr)
+  {
+    cdea::SteppingSettings settings;
+    cdea::LoadStepper      stepper(scene, model, settings);
+    cdea::StepSummary      last;
+    stepper.on_step = [&](const cdea::StepSummary &s) { last = s; };
+    const cdea::RunResult r = stepper.run();
+    if (result)
+      *result = r;
+    else if (!r.completed)
+      throw std::runtime_error("run did not complete: " + r.message);
+    return last;
+  }
+} // namespace cdea_test
