@@ -30,6 +30,10 @@ int main(int argc, char **argv)
         }
       if (command == "run" && args.size() == 2)
         return cdea::run_fe(args[1]);
+      if (command == "shoot" && args.size() == 2)
+        return cdea::run_shooting(args[1]);
+      if (command == "compare" && args.size() == 2)
+        return cdea::compare(args[1]);
       std::cerr << "cdea: unknown command or wrong number of arguments: '" << command
                 << "'\n\n"
                 << cdea::usage();

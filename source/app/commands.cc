@@ -2,6 +2,7 @@
 #include <cdea/app/parameters.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/output/results_file.h>
+#include <cdea/shooting/shooting_model.h>
 #include <cdea/solver/load_stepper.h>
 
 #include <chrono>
@@ -9,6 +10,7 @@
 #include <cstdio>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace cdea
@@ -21,6 +23,9 @@ namespace cdea
            "Usage:\n"
            "  cdea run FILE.prm          solve the scene of FILE.prm along its load stages\n"
            "                             and write <Directory>/<Base name>.h5\n"
+           "  cdea shoot FILE.prm        the same with the independent shooting solver,\n"
+           "                             written to <Directory>/<Base name>_shooting.h5\n"
+           "  cdea compare FILE.prm      run both solvers and print their differences\n"
            "  cdea print-parameters      print a complete, documented parameter file\n"
            "  cdea --help                this text\n"
            "\n"
@@ -182,24 +187,155 @@ namespace cdea
     }
   } // namespace
 
+  shooting::ShootingOptions shooting_options(const Parameters &p)
+  {
+    shooting::ShootingOptions o;
+    o.tolerance        = p.shooting.tolerance;
+    o.samples_per_ring = p.shooting.samples_per_ring;
+    return o;
+  }
+
+  namespace
+  {
+    struct Input
+    {
+      Parameters  parameters;
+      Scene       scene;
+      std::string text;
+    };
+
+    /// Read and validate; on bad input print the message and return nothing.
+    std::optional<Input> load_input(const std::string &prm_file)
+    {
+      try
+        {
+          Input in;
+          in.parameters = read_parameters(prm_file, &in.text);
+          in.scene      = in.parameters.scene();
+          return in;
+        }
+      catch (const InputError &e)
+        {
+          std::cerr << "cdea: " << e.what() << '\n';
+          return std::nullopt;
+        }
+    }
+
+    /// A run of @p model without output: its last step and result.
+    struct QuietRun
+    {
+      RunResult   result;
+      StepSummary last;
+      double      seconds = 0.;
+    };
+
+    QuietRun quiet_run(EquilibriumModel &model, const Input &in)
+    {
+      QuietRun    run;
+      LoadStepper stepper(in.scene, model, stepping_settings(in.parameters));
+      stepper.on_step  = [&](const StepSummary &s) { run.last = s; };
+      const auto start = std::chrono::steady_clock::now();
+      run.result       = stepper.run();
+      run.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      return run;
+    }
+  } // namespace
+
   int run_fe(const std::string &prm_file)
   {
-    std::string prm_text;
-    Parameters  p;
-    Scene       scene;
-    try
-      {
-        p     = read_parameters(prm_file, &prm_text);
-        scene = p.scene();
-      }
-    catch (const InputError &e)
-      {
-        std::cerr << "cdea: " << e.what() << '\n';
-        return exit_input_error;
-      }
-    MembraneModel model(scene, fe_discretization(p), newton_settings(p));
+    const auto in = load_input(prm_file);
+    if (!in)
+      return exit_input_error;
+    const Parameters &p = in->parameters;
+    MembraneModel     model(in->scene, fe_discretization(p), newton_settings(p));
     std::cout << "FE model: " << model.n_elements() << " elements of degree "
               << p.discretization.polynomial_degree << ", " << model.n_dofs() << " unknowns\n";
-    return record_run(model, p, scene, prm_text, p.results_path(), "finite elements");
+    return record_run(model, p, in->scene, in->text, p.results_path(), "finite elements");
+  }
+
+  int run_shooting(const std::string &prm_file)
+  {
+    const auto in = load_input(prm_file);
+    if (!in)
+      return exit_input_error;
+    const Parameters       &p = in->parameters;
+    shooting::ShootingModel model(in->scene, shooting_options(p));
+    std::cout << "Shooting model: Dormand-Prince 5(4), tolerance " << p.shooting.tolerance
+              << '\n';
+    return record_run(model, p, in->scene, in->text, p.results_path("_shooting"), "shooting");
+  }
+
+  int compare(const std::string &prm_file)
+  {
+    const auto in = load_input(prm_file);
+    if (!in)
+      return exit_input_error;
+    const Parameters       &p     = in->parameters;
+    const Scene            &scene = in->scene;
+    MembraneModel           fe(scene, fe_discretization(p), newton_settings(p));
+    shooting::ShootingModel sh(scene, shooting_options(p));
+    const QuietRun          a = quiet_run(fe, *in);
+    const QuietRun          b = quiet_run(sh, *in);
+
+    const double mu = scene.material.shear_modulus;
+    std::cout << "cdea compare: FE (" << fe.n_elements() << " elements, p = "
+              << p.discretization.polynomial_degree << ", " << fe.n_dofs()
+              << " unknowns) vs shooting (tolerance " << p.shooting.tolerance << ")\n";
+    for (const auto *r : {&a, &b})
+      if (!r->result.completed)
+        std::cout << (r == &a ? "FE" : "shooting") << " run stopped early: "
+                  << r->result.message << '\n';
+    std::cout << "state compared: the last converged step of each run, voltages FE "
+              << kv_list(a.last.voltages) << ", shooting " << kv_list(b.last.voltages) << "\n\n";
+
+    const auto row = [](const std::string &what, const double x, const double y,
+                        const std::string &unit) {
+      std::cout << std::left << std::setw(34) << what << std::right << std::setw(16)
+                << std::setprecision(10) << x << std::setw(16) << y << std::setw(13)
+                << std::setprecision(3) << std::scientific << x - y << std::setw(11)
+                << std::abs(x - y) / std::max(std::abs(y), 1e-300) << std::defaultfloat
+                << "  " << unit << '\n';
+    };
+    std::cout << std::left << std::setw(34) << "quantity" << std::right << std::setw(16)
+              << "FE" << std::setw(16) << "shooting" << std::setw(13) << "FE - sh."
+              << std::setw(11) << "relative" << '\n';
+    row("displacement", a.last.displacement * 1e3, b.last.displacement * 1e3, "mm");
+    row("stroke", a.last.stroke * 1e3, b.last.stroke * 1e3, "mm");
+    for (unsigned int k = 0; k < scene.n_rings(); ++k)
+      row("s2/mu, inner edge of ring " + std::to_string(k + 1), a.last.s2_ring_inner[k] / mu,
+          b.last.s2_ring_inner[k] / mu, "-");
+
+    // Profiles: the FE solution at the shooting solver's sample radii.
+    const StepFields    ref = sh.fields();
+    std::vector<double> r, z;
+    fe.profile_at(ref.R, r, z);
+    double dr = 0., dz = 0.;
+    for (std::size_t i = 0; i < ref.R.size(); ++i)
+      {
+        dr = std::max(dr, std::abs(r[i] - ref.r[i]));
+        dz = std::max(dz, std::abs(z[i] - ref.z[i]));
+      }
+    std::cout << std::left << std::setw(34) << "max |r_FE - r_sh| over the meridian"
+              << std::right << std::setw(16) << std::setprecision(3) << std::scientific
+              << dr * 1e3 << " mm (" << dr / scene.disk_radius << " a)\n"
+              << std::left << std::setw(34) << "max |z_FE - z_sh| over the meridian"
+              << std::right << std::setw(16) << dz * 1e3 << " mm (" << dz / scene.disk_radius
+              << " a)\n"
+              << std::defaultfloat;
+
+    if (a.result.onset.found && b.result.onset.found)
+      {
+        for (unsigned int k = 0; k < scene.n_rings(); ++k)
+          row("onset voltage, ring " + std::to_string(k + 1) + " (kV)",
+              a.result.onset.voltages[k] * 1e-3, b.result.onset.voltages[k] * 1e-3, "kV");
+        row("onset radius r", a.result.onset.radius * 1e3, b.result.onset.radius * 1e3, "mm");
+      }
+    else
+      std::cout << "onset: FE " << (a.result.onset.found ? "found" : "none") << ", shooting "
+                << (b.result.onset.found ? "found" : "none") << '\n';
+    std::cout << "\nwall time: FE " << std::setprecision(3) << a.seconds * 1e3
+              << " ms, shooting " << b.seconds * 1e3 << " ms\n";
+    return a.result.completed && b.result.completed ? exit_success : exit_not_complete;
   }
 } // namespace cdea

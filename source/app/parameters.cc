@@ -184,6 +184,26 @@ namespace cdea
       prm.leave_subsection();
     }
 
+    void Shooting::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Shooting");
+      prm.declare_entry("Tolerance", "1e-10", Double(1e-14, 1e-2),
+                        "Relative (and, in units of the disk radius, absolute) error tolerance "
+                        "of the adaptive Dormand-Prince integrator of `cdea shoot` and "
+                        "`cdea compare`.");
+      prm.declare_entry("Samples per ring", "100", Integer(2, 100000),
+                        "Equally spaced points per ring at which the shooting fields are written.");
+      prm.leave_subsection();
+    }
+
+    void Shooting::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Shooting");
+      tolerance        = prm.get_double("Tolerance");
+      samples_per_ring = prm.get_integer("Samples per ring");
+      prm.leave_subsection();
+    }
+
     void Output::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Output");
@@ -213,6 +233,7 @@ namespace cdea
     parameters::Discretization::declare(prm);
     parameters::Solver::declare(prm);
     parameters::Wrinkling::declare(prm);
+    parameters::Shooting::declare(prm);
     parameters::Output::declare(prm);
   }
 
@@ -225,6 +246,7 @@ namespace cdea
     discretization.parse(prm);
     solver.parse(prm);
     wrinkling.parse(prm);
+    shooting.parse(prm);
     output.parse(prm);
   }
 

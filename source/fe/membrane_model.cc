@@ -20,7 +20,9 @@
 
 #include <cdea/fe/membrane_model.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 
@@ -430,6 +432,41 @@ namespace cdea
     l.voltages.assign(s.begin() + 5, s.begin() + 5 + n_rings);
     impl->set_load(l);
     std::copy(s.begin() + 5 + n_rings, s.end(), impl->solution.begin());
+  }
+
+  void MembraneModel::profile_at(const std::vector<double> &R, std::vector<double> &r,
+                                 std::vector<double> &z) const
+  {
+    r.assign(R.size(), 0.);
+    z.assign(R.size(), 0.);
+    std::vector<types::global_dof_index> dofs(impl->fe.n_dofs_per_cell());
+    // Cells are ordered by radius in 1D: walk them once for sorted input,
+    // restart the walk for a radius behind the current cell.
+    auto cell = impl->dof_handler.begin_active();
+    for (unsigned int k = 0; k < R.size(); ++k)
+      {
+        if (R[k] < cell->vertex(0)[0])
+          cell = impl->dof_handler.begin_active();
+        while (R[k] > cell->vertex(1)[0] && std::next(cell) != impl->dof_handler.end())
+          ++cell;
+        const double x0 = cell->vertex(0)[0];
+        const double xi = std::clamp((R[k] - x0) / (cell->vertex(1)[0] - x0), 0., 1.);
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          {
+            const double v = impl->fe.shape_value(i, Point<1>(xi)) * impl->solution(dofs[i]);
+            (impl->fe.system_to_component_index(i).first == 0 ? r[k] : z[k]) += v;
+          }
+      }
+  }
+
+  void MembraneModel::predict(const std::vector<double> &older, const double factor)
+  {
+    const unsigned int offset = 5 + impl->scene.n_rings();
+    if (older.size() != offset + n_dofs())
+      return;
+    for (unsigned int i = 0; i < n_dofs(); ++i)
+      impl->solution(i) += factor * (impl->solution(i) - older[offset + i]);
   }
 
   namespace

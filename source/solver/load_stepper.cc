@@ -112,13 +112,7 @@ namespace cdea
 
         // Linear predictor from the last two converged states of this stage.
         if (settings.extrapolate && !previous_state.empty() && t > previous_t)
-          {
-            const double        c = (t_next - t) / (t - previous_t);
-            std::vector<double> guess(state0);
-            for (std::size_t i = 0; i < guess.size(); ++i)
-              guess[i] += c * (state0[i] - previous_state[i]);
-            model.set_state(guess);
-          }
+          model.predict(previous_state, (t_next - t) / (t - previous_t));
         const LoadState target = load(stage, t_next);
         SolveReport     solve  = model.solve(target);
         ++result.solves;

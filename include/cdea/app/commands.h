@@ -1,11 +1,21 @@
 #pragma once
 // The sub-commands of the cdea program. Each returns the process exit code.
 
+#include <cdea/fe/membrane_model.h>
+#include <cdea/solver/load_stepper.h>
+
 #include <string>
 #include <vector>
 
 namespace cdea
 {
+  struct Parameters;
+
+  /// Settings of the solver pieces, from the parsed parameters.
+  SteppingSettings stepping_settings(const Parameters &p);
+  FeDiscretization fe_discretization(const Parameters &p);
+  NewtonSettings   newton_settings(const Parameters &p);
+
   /// Exit codes: 0 success, 1 bad input or unwritable output, 2 the run
   /// stopped before the end of its voltage path (every converged step is in
   /// the results file).
@@ -18,6 +28,12 @@ namespace cdea
 
   /// `cdea run FILE.prm`: the FE model along the load stages.
   int run_fe(const std::string &prm_file);
+
+  /// `cdea shoot FILE.prm`: the shooting model along the same load stages.
+  int run_shooting(const std::string &prm_file);
+
+  /// `cdea compare FILE.prm`: both models, and their differences.
+  int compare(const std::string &prm_file);
 
   std::string usage();
 } // namespace cdea

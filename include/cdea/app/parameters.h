@@ -93,6 +93,14 @@ namespace cdea
       void        parse(dealii::ParameterHandler &prm);
     };
 
+    struct Shooting
+    {
+      double       tolerance;
+      unsigned int samples_per_ring;
+      static void  declare(dealii::ParameterHandler &prm);
+      void         parse(dealii::ParameterHandler &prm);
+    };
+
     struct Output
     {
       std::string directory;
@@ -111,6 +119,7 @@ namespace cdea
     parameters::Discretization discretization;
     parameters::Solver         solver;
     parameters::Wrinkling      wrinkling;
+    parameters::Shooting       shooting;
     parameters::Output         output;
 
     static void declare(dealii::ParameterHandler &prm);

@@ -46,6 +46,7 @@ namespace cdea
     StepFields          fields() const override;
     std::vector<double> state() const override;
     void                set_state(const std::vector<double> &state) override;
+    void predict(const std::vector<double> &older_state, double factor) override;
 
     unsigned int n_dofs() const;
     unsigned int n_elements() const;
@@ -62,6 +63,10 @@ namespace cdea
     /// Unknown vector of the current state and its replacement (dof order).
     std::vector<double> solution() const;
     void                set_solution(const std::vector<double> &x);
+
+    /// r and z (m) of the current state at reference radii @p R (m, in [A, B]).
+    void profile_at(const std::vector<double> &R, std::vector<double> &r,
+                    std::vector<double> &z) const;
 
     /// Support points (R) and component (0: r, 1: z) of each dof.
     std::vector<std::pair<double, unsigned int>> dof_support() const;

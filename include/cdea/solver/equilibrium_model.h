@@ -49,6 +49,17 @@ namespace cdea
     /// Fields along the meridian of the current state.
     virtual StepFields fields() const = 0;
 
+    /// Replace the unknowns of the current state by the linear prediction
+    /// x + factor (x - x_older) as the starting guess of the next solve;
+    /// @p older_state is an earlier state() of the same stage. A model without
+    /// a useful predictor leaves its state alone. The summary is not valid
+    /// again until the next successful solve.
+    virtual void predict(const std::vector<double> &older_state, double factor)
+    {
+      (void)older_state;
+      (void)factor;
+    }
+
     /// Opaque copy of the current state (with the load it is in equilibrium
     /// with), and its restoration; used to go back to a converged step.
     virtual std::vector<double> state() const                  = 0;

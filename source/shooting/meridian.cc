@@ -1,0 +1,466 @@
+#include <cdea/shooting/dormand_prince.h>
+#include <cdea/shooting/meridian.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace cdea::shooting
+{
+  namespace
+  {
+    using Integrator = DormandPrince45<4>;
+    using State      = Integrator::State;
+    constexpr double pi = 3.14159265358979323846;
+
+    void set(std::string *why, const std::string &text)
+    {
+      if (why != nullptr)
+        *why = text;
+    }
+
+    /// Append one sample (x = R/A, y in units of A) to @p f.
+    void push_sample(StepFields &f, const GentDielectric &law, const int ring,
+                     const double A, const double x, const State &y)
+    {
+      const double l1 = y[3];
+      const double l2 = y[0] / x;
+      const auto   s  = law.stress(l1, l2);
+      f.R.push_back(x * A);
+      f.r.push_back(y[0] * A);
+      f.z.push_back(y[1] * A);
+      f.theta.push_back(y[2]);
+      f.lambda1.push_back(l1);
+      f.lambda2.push_back(l2);
+      f.s1.push_back(s.s1);
+      f.s2.push_back(s.s2);
+      f.E.push_back(law.electric_field(l1, l2));
+      f.Phi.push_back(law.voltage());
+      f.ring.push_back(ring);
+    }
+  } // namespace
+
+  // At fixed l2, g > 0 means I < 3 + Jlim, i.e. with u = l1^2
+  //   u^2 - p u + 1/l2^2 < 0,  p = 3 + Jlim - l2^2,
+  // so u lies between the roots u- u+ = 1/l2^2, u- + u+ = p.
+  std::pair<double, double> gent_lambda1_range(const double jlim, const double lambda2)
+  {
+    const double q    = 1. / (lambda2 * lambda2);
+    const double p    = 3. + jlim - lambda2 * lambda2;
+    const double disc = p * p - 4. * q;
+    if (!(p > 0.) || !(disc > 0.))
+      return {0., 0.};
+    const double u_plus  = 0.5 * (p + std::sqrt(disc));
+    const double u_minus = q / u_plus;
+    return {std::sqrt(u_minus), std::sqrt(u_plus)};
+  }
+
+  std::optional<double> solve_lambda1(const GentDielectric &law, const double l2,
+                                      const double target, double guess,
+                                      std::string *why)
+  {
+    const auto [l_lo, l_hi] = gent_lambda1_range(law.constants().jlim, l2);
+    if (!(l_lo > 0.) || !(l_hi > l_lo))
+      {
+        set(why, "hoop stretch beyond the Gent limit");
+        return std::nullopt;
+      }
+    if (!std::isfinite(guess) || guess <= l_lo || guess >= l_hi)
+      guess = std::sqrt(l_lo * l_hi);
+    const auto f = [&](const double l1) { return law.stress(l1, l2).s1 - target; };
+
+    // Grow a bracket [lo, hi] with f(lo) <= 0 < f(hi) around the guess; never
+    // step onto the domain ends (f tends to -inf at l_lo and to +inf at l_hi).
+    double       lo = guess, hi = guess;
+    double       flo = f(guess), fhi = flo;
+    double       d   = 0.02 * guess;
+    unsigned int n   = 0;
+    while (flo > 0.)
+      {
+        hi      = lo;
+        fhi     = flo;
+        double c = lo - d;
+        if (c <= l_lo)
+          c = 0.5 * (lo + l_lo);
+        if (c <= l_lo || c >= lo || ++n > 400)
+          {
+            set(why, "no lambda1 below the guess gives the required s1");
+            return std::nullopt;
+          }
+        lo  = c;
+        flo = f(lo);
+        d *= 2.;
+      }
+    while (fhi < 0.)
+      {
+        lo       = hi;
+        flo      = fhi;
+        double c = hi + d;
+        if (c >= l_hi)
+          c = 0.5 * (hi + l_hi);
+        if (c >= l_hi || c <= hi || ++n > 400)
+          {
+            set(why, "no lambda1 above the guess gives the required s1");
+            return std::nullopt;
+          }
+        hi  = c;
+        fhi = f(hi);
+        d *= 2.;
+      }
+    if (flo == 0.)
+      hi = lo;
+
+    // Safeguarded Newton (bisection whenever Newton leaves the bracket).
+    double x = std::abs(flo) < std::abs(fhi) ? lo : hi;
+    for (unsigned int it = 0; it < 200 && hi > lo; ++it)
+      {
+        const double fx = f(x);
+        if (fx == 0.)
+          break;
+        if (fx < 0.)
+          lo = x;
+        else
+          hi = x;
+        const double dfx = law.tangent(x, l2).s11;
+        double       xn  = x - fx / dfx;
+        if (!(dfx > 0.) || !(xn > lo) || !(xn < hi))
+          xn = 0.5 * (lo + hi);
+        const bool done = std::abs(xn - x) <= 4. * std::numeric_limits<double>::epsilon() * x ||
+                          hi - lo <= 4. * std::numeric_limits<double>::epsilon() * x;
+        x = xn;
+        if (done)
+          break;
+      }
+    const double scale = std::abs(target) + law.constants().shear_modulus;
+    if (!(std::abs(f(x)) <= 1e-9 * scale))
+      {
+        set(why, "the s1 equation for lambda1 did not converge");
+        return std::nullopt;
+      }
+    // The root must be reached from the guess along a rising s1: otherwise the
+    // law lost monotonicity (pull-in, loss of ellipticity) and the root lies on
+    // another branch of the law.
+    constexpr unsigned int n_check = 32;
+    for (unsigned int i = 0; i <= n_check; ++i)
+      {
+        const double l1 = guess + (x - guess) * i / n_check;
+        if (!(law.tangent(l1, l2).s11 > 0.))
+          {
+            std::ostringstream o;
+            o << "ds1/dlambda1 <= 0 at lambda1 = " << l1 << " between the start "
+              << guess << " and the solution " << x
+              << " (loss of monotonicity of the law, pull-in)";
+            set(why, o.str());
+            return std::nullopt;
+          }
+      }
+    return x;
+  }
+
+  MeridianIntegrator::MeridianIntegrator(const Scene &scene,
+                                         const ShootingOptions &options)
+    : sc(scene)
+    , opts(options)
+    , A(scene.inner_reference_radius())
+  {
+    for (const double e : scene.reference_ring_edges())
+      edges.push_back(e / A);
+    edges.front() = 1.;
+  }
+
+  std::vector<GentDielectric> MeridianIntegrator::laws(const MeridianLoad &load) const
+  {
+    std::vector<GentDielectric> result;
+    for (unsigned int k = 0; k < sc.n_rings(); ++k)
+      result.emplace_back(sc.material, load.voltages.empty() ? 0. : load.voltages[k]);
+    return result;
+  }
+
+  std::string MeridianIntegrator::check_load(const MeridianLoad &load) const
+  {
+    if (!load.voltages.empty() && load.voltages.size() != sc.n_rings())
+      return "the load has " + std::to_string(load.voltages.size()) +
+             " voltages for " + std::to_string(sc.n_rings()) + " rings";
+    if (!(load.stretch > 0.) || !std::isfinite(load.stretch))
+      return "the pre-stretch must be positive";
+    if (!(load.force >= 0.) || !std::isfinite(load.force))
+      return "the dead load must be finite and >= 0 (the disk is pulled along +F)";
+    return {};
+  }
+
+  double MeridianIntegrator::equibiaxial_stress(const double stretch,
+                                                const double voltage) const
+  {
+    return GentDielectric(sc.material, voltage).stress(stretch, stretch).s1;
+  }
+
+  std::optional<double>
+  MeridianIntegrator::disk_edge_lambda1(const MeridianLoad &load, const double theta0,
+                                        const double guess, std::string *why) const
+  {
+    const std::string bad = check_load(load);
+    if (!bad.empty())
+      {
+        set(why, bad);
+        return std::nullopt;
+      }
+    if (!(theta0 > 0. && theta0 < pi))
+      {
+        set(why, "the shooting angle must lie in (0, pi)");
+        return std::nullopt;
+      }
+    // 2 pi A H s1 sin(theta0) = F.
+    const double target =
+      load.force / (2. * pi * A * sc.material.thickness * std::sin(theta0));
+    const GentDielectric law(sc.material, load.voltages.empty() ? 0. : load.voltages[0]);
+    std::string          reason;
+    const auto l1 = solve_lambda1(law, load.stretch, target,
+                                  guess > 0. ? guess : load.stretch, &reason);
+    if (!l1)
+      set(why, "disk edge: " + reason);
+    return l1;
+  }
+
+  Profile MeridianIntegrator::shoot(const MeridianLoad &load, const double theta0,
+                                    const double lambda1_guess,
+                                    const bool with_samples) const
+  {
+    std::string why;
+    const auto  l1 = disk_edge_lambda1(load, theta0, lambda1_guess, &why);
+    if (!l1)
+      {
+        Profile p;
+        p.theta0  = theta0;
+        p.message = why;
+        return p;
+      }
+    return integrate(load, theta0, *l1, with_samples);
+  }
+
+  Profile MeridianIntegrator::integrate(const MeridianLoad &load, const double theta0,
+                                        const double lambda1_start,
+                                        const bool   with_samples) const
+  {
+    Profile p;
+    p.theta0        = theta0;
+    p.lambda1_start = lambda1_start;
+    p.message       = check_load(load);
+    if (!p.message.empty())
+      return p;
+    const bool cone = load.force > 0.;
+    if (cone && !(theta0 > 0. && theta0 < pi))
+      {
+        p.message = "the shooting angle must lie in (0, pi) under a dead load";
+        return p;
+      }
+    if (!cone && theta0 != 0.)
+      {
+        p.message = "without a dead load the film is flat: theta0 must be 0";
+        return p;
+      }
+
+    const auto         law   = laws(load);
+    const unsigned int n     = sc.n_rings();
+    const unsigned int m     = std::max(2u, opts.samples_per_ring);
+    std::string        fail;   // reason of the last refused state
+    double             fail_x = 0.;
+    unsigned int       ring   = 0;
+
+    // Right-hand side in x = R/A, refusing states outside the model's domain.
+    const auto rhs = [&](const double x, const State &y, State &dy) -> bool {
+      const double th = y[2], l1 = y[3];
+      const double l2 = y[0] / x;
+      fail_x          = x;
+      if (!(l1 > 0.) || !(l2 > 0.))
+        {
+          fail = "a stretch became non-positive";
+          return false;
+        }
+      if (!(law[ring].gent_margin(l1, l2) > 0.))
+        {
+          fail = "the Gent limit was reached (g <= 0)";
+          return false;
+        }
+      if (cone && !(th > 0. && th < pi))
+        {
+          fail = "theta left (0, pi)";
+          return false;
+        }
+      const auto s = law[ring].stress(l1, l2);
+      const auto t = law[ring].tangent(l1, l2);
+      if (!(t.s11 > 0.))
+        {
+          fail = "ds1/dlambda1 <= 0 (loss of monotonicity, pull-in)";
+          return false;
+        }
+      if (cone && !(s.s1 > 0.))
+        {
+          fail = "the meridian stress s1 became non-positive";
+          return false;
+        }
+      const double c = std::cos(th), sn = std::sin(th);
+      const double dl2 = (l1 * c - l2) / x;
+      dy[0]            = l1 * c;
+      dy[1]            = -l1 * sn;
+      dy[2]            = cone ? -s.s2 * sn / (s.s1 * x) : 0.;
+      dy[3]            = (s.s2 * c - s.s1 - x * t.s12 * dl2) / (x * t.s11);
+      return std::isfinite(dy[2]) && std::isfinite(dy[3]);
+    };
+
+    Integrator::Control control;
+    control.rtol      = opts.tolerance;
+    control.atol      = opts.effective_absolute_tolerance();
+    control.max_steps = opts.max_steps_per_ring;
+    const Integrator rk(control);
+
+    State y(load.stretch, 0., theta0, lambda1_start);
+    p.s2_min   = std::numeric_limits<double>::infinity();
+    // Keep the smallest hoop stress and where it occurs (x = R/A).
+    const auto note_s2 = [&](const double s2, const double x) {
+      if (s2 < p.s2_min)
+        {
+          p.s2_min        = s2;
+          p.s2_min_radius = x * A;
+        }
+    };
+    double h   = 0.;
+    const auto failed = [&](const std::string &what, const State *at = nullptr) {
+      std::ostringstream o;
+      o << what << " in ring " << ring + 1 << " at R/A = " << fail_x;
+      if (at != nullptr)
+        {
+          const double l1 = (*at)[3], l2 = (*at)[0] / fail_x;
+          o << " (l1 = " << l1 << ", l2 = " << l2 << ", theta = " << (*at)[2]
+            << ", g = " << law[ring].gent_margin(l1, l2) << ", ds1/dl1 / mu = "
+            << law[ring].tangent(l1, l2).s11 / sc.material.shear_modulus << ")";
+        }
+      p.message = o.str();
+      return p;
+    };
+
+    for (ring = 0; ring < n; ++ring)
+      {
+        const double x0 = edges[ring], x1 = edges[ring + 1];
+        if (ring > 0)
+          {
+            // s1 continuity (eq. 14): l1 jumps to the next ring's law.
+            const double l2     = y[0] / x0;
+            const double s1_old = law[ring - 1].stress(y[3], l2).s1;
+            std::string  why;
+            const auto   l1 = solve_lambda1(law[ring], l2, s1_old, y[3], &why);
+            fail_x          = x0;
+            if (!l1)
+              return failed("ring edge: " + why);
+            y[3] = *l1;
+          }
+        if (!(law[ring].gent_margin(y[3], y[0] / x0) > 0.))
+          {
+            fail_x = x0;
+            return failed("the Gent limit was reached (g <= 0)");
+          }
+        const double s2_in = law[ring].stress(y[3], y[0] / x0).s2;
+        p.s2_ring_inner.push_back(s2_in);
+        note_s2(s2_in, x0);
+
+        // Uniform samples x0 + j (x1 - x0)/(m - 1), j = 0 .. m-1.
+        unsigned int next   = 0;
+        const auto   sample = [&](const unsigned int j) {
+          return j == m - 1 ? x1 : x0 + j * (x1 - x0) / (m - 1);
+        };
+        if (with_samples)
+          push_sample(p.samples, law[ring], ring, A, x0, y);
+        ++next;
+
+        const auto observe = [&](const Integrator::DenseStep &step, const double x,
+                                 const State &ye) {
+          note_s2(law[ring].stress(ye[3], ye[0] / x).s2, x);
+          if (!with_samples)
+            return;
+          while (next < m - 1 && sample(next) <= x)
+            {
+              const double xs = sample(next);
+              const State  ys = step(xs);
+              push_sample(p.samples, law[ring], ring, A, xs, ys);
+              note_s2(p.samples.s2.back(), xs);
+              ++next;
+            }
+        };
+        const auto res = rk.integrate(rhs, x0, x1, y, h, observe);
+        p.rhs_evaluations += res.rhs_evaluations;
+        p.accepted_steps += res.accepted_steps;
+        p.rejected_steps += res.rejected_steps;
+        if (!res.ok)
+          {
+            if (res.domain_failure)
+              return failed(fail);
+            fail_x = res.x;
+            return failed(res.accepted_steps + res.rejected_steps >= control.max_steps ?
+                            "too many Runge-Kutta steps" :
+                            "the Runge-Kutta step size underflowed (the solution "
+                            "turns singular)",
+                          &res.y);
+          }
+        y = res.y;
+        h = res.h_next;
+        if (with_samples)
+          push_sample(p.samples, law[ring], ring, A, x1, y);
+      }
+
+    // Shift z so that z(B) = 0; the disk then sits at z(A) = -z_end.
+    const double z_end = y[1] * A;
+    for (double &z : p.samples.z)
+      z -= z_end;
+    p.r_end        = y[0] * A;
+    p.z_disk       = -z_end;
+    p.displacement = std::abs(z_end);
+    p.ok           = true;
+    return p;
+  }
+
+  Profile MeridianIntegrator::homogeneous(const MeridianLoad &load,
+                                          const bool         with_samples) const
+  {
+    Profile p;
+    p.message = check_load(load);
+    if (!p.message.empty())
+      return p;
+    if (load.force != 0.)
+      {
+        p.message = "the homogeneous flat state needs F = 0";
+        return p;
+      }
+    const auto law = laws(load);
+    for (const auto &l : law)
+      if (l.voltage() != law.front().voltage())
+        {
+          p.message = "the homogeneous flat state needs equal ring voltages";
+          return p;
+        }
+    const double lam = load.stretch;
+    if (!(law.front().gent_margin(lam, lam) > 0.))
+      {
+        p.message = "the pre-stretch is beyond the Gent limit";
+        return p;
+      }
+    const double s = law.front().stress(lam, lam).s1;
+    p.lambda1_start = lam;
+    p.s2_ring_inner.assign(sc.n_rings(), s);
+    p.s2_min        = s;
+    p.s2_min_radius = A;
+    p.r_end         = lam * edges.back() * A;
+    p.ok     = true;
+    if (with_samples)
+      {
+        const unsigned int m = std::max(2u, opts.samples_per_ring);
+        for (unsigned int k = 0; k < sc.n_rings(); ++k)
+          for (unsigned int j = 0; j < m; ++j)
+            {
+              const double x = j == m - 1 ? edges[k + 1] :
+                                            edges[k] + j * (edges[k + 1] - edges[k]) / (m - 1);
+              push_sample(p.samples, law[k], k, A, x, State(lam * x, 0., 0., lam));
+            }
+      }
+    return p;
+  }
+} // namespace cdea::shooting

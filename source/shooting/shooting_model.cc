@@ -1,0 +1,187 @@
+#include <cdea/shooting/shooting_model.h>
+#include <cdea/shooting/shooting_solver.h>
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace cdea::shooting
+{
+  namespace
+  {
+    constexpr double pi = 3.14159265358979323846;
+
+    MeridianLoad meridian_load(const LoadState &load)
+    {
+      return {load.stretch, load.force, load.voltages};
+    }
+
+    bool uniform(const std::vector<double> &v)
+    {
+      for (const double x : v)
+        if (x != v.front())
+          return false;
+      return true;
+    }
+  } // namespace
+
+  ShootingModel::ShootingModel(const Scene &scene, const ShootingOptions &options)
+    : sc(scene)
+    , integrator(scene, options)
+  {
+    set_reference_state();
+  }
+
+  void ShootingModel::set_options(const ShootingOptions &options)
+  {
+    integrator = MeridianIntegrator(sc, options);
+  }
+
+  void ShootingModel::set_reference_state()
+  {
+    LoadState load;
+    load.stage    = Stage::prestretch;
+    load.stretch  = 1.;
+    load.voltages.assign(sc.n_rings(), 0.);
+    current = {Kind::homogeneous, load, 0, rebuild(Kind::homogeneous, load, 0., 1.)};
+    stats   = {};
+  }
+
+  Profile ShootingModel::rebuild(const Kind kind, const LoadState &load,
+                                 const double theta0, const double lambda1_start) const
+  {
+    if (kind == Kind::homogeneous)
+      return integrator.homogeneous(meridian_load(load), true);
+    return integrator.integrate(meridian_load(load), theta0, lambda1_start, true);
+  }
+
+  SolveReport ShootingModel::solve(const LoadState &load_in)
+  {
+    const auto  t_start = std::chrono::steady_clock::now();
+    SolveReport report;
+    LoadState   load = load_in;
+    if (load.voltages.empty())
+      load.voltages.assign(sc.n_rings(), 0.);
+    stats = {};
+
+    ShootingSolution sol;
+    Kind             kind = Kind::homogeneous;
+    if (load.voltages.size() != sc.n_rings())
+      sol.message = "the load has " + std::to_string(load.voltages.size()) +
+                    " voltages for " + std::to_string(sc.n_rings()) + " rings";
+    else if (!(load.force >= 0.) || !std::isfinite(load.force))
+      sol.message = "the dead load must be finite and >= 0";
+    else if (load.force == 0. && uniform(load.voltages))
+      {
+        sol.profile   = integrator.homogeneous(meridian_load(load), true);
+        sol.converged = sol.profile.ok;
+        sol.message   = sol.profile.message;
+      }
+    else if (load.force == 0.)
+      {
+        kind = Kind::flat;
+        const double guess = current.kind == Kind::cone ? load.stretch :
+                                                          current.profile.lambda1_start;
+        sol = solve_flat(integrator, meridian_load(load), guess, true);
+      }
+    else
+      {
+        kind = Kind::cone;
+        double theta0 = current.profile.theta0;
+        double l1     = current.profile.lambda1_start;
+        if (current.kind != Kind::cone)
+          {
+            // Linearised tensioned membrane: R s0 theta = F / (2 pi H).
+            const double c  = load.force / (2. * pi * sc.material.thickness *
+                                           sc.inner_reference_radius());
+            const double s0 = integrator.equibiaxial_stress(load.stretch, load.voltages[0]);
+            theta0          = s0 > 0. ? std::atan(c / s0) : 0.25 * pi;
+            l1              = load.stretch;
+          }
+        sol = solve_cone(integrator, meridian_load(load), theta0, l1, true);
+      }
+
+    stats.root_iterations = sol.integrations;
+    stats.rhs_evaluations = sol.rhs_evaluations;
+    if (sol.converged)
+      {
+        stats.rhs_evaluations_per_integration = sol.profile.rhs_evaluations;
+        stats.accepted_steps                  = sol.profile.accepted_steps;
+        current = {kind, load, sol.integrations, std::move(sol.profile)};
+      }
+    report.converged  = sol.converged;
+    report.iterations = sol.integrations;
+    report.message    = sol.converged ? std::string() : "shooting: " + sol.message;
+    stats.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+    return report;
+  }
+
+  StepSummary ShootingModel::summary() const
+  {
+    StepSummary s;
+    s.stage             = current.load.stage;
+    s.load_factor       = current.load.load_factor;
+    s.voltages          = current.load.voltages;
+    s.mass              = current.load.mass;
+    s.displacement      = current.profile.displacement;
+    s.s2_min            = current.profile.s2_min;
+    s.s2_min_radius     = current.profile.s2_min_radius;
+    s.s2_ring_inner     = current.profile.s2_ring_inner;
+    s.newton_iterations = current.iterations;
+    return s;
+  }
+
+  StepFields ShootingModel::fields() const
+  {
+    return current.profile.samples;
+  }
+
+  // State layout (see state()): [1] kind, [7] theta0, [8] lambda1 at the disk edge.
+  void ShootingModel::predict(const std::vector<double> &older, const double factor)
+  {
+    if (older.size() != 11 + sc.n_rings() || current.kind != Kind::cone ||
+        static_cast<Kind>(static_cast<int>(older[1])) != Kind::cone)
+      return;
+    current.profile.theta0 += factor * (current.profile.theta0 - older[7]);
+    current.profile.lambda1_start += factor * (current.profile.lambda1_start - older[8]);
+  }
+
+  std::vector<double> ShootingModel::state() const
+  {
+    const LoadState    &l = current.load;
+    std::vector<double> s{1.,
+                          static_cast<double>(current.kind),
+                          static_cast<double>(l.stage),
+                          l.load_factor,
+                          l.stretch,
+                          l.force,
+                          l.mass,
+                          current.profile.theta0,
+                          current.profile.lambda1_start,
+                          static_cast<double>(current.iterations),
+                          static_cast<double>(l.voltages.size())};
+    s.insert(s.end(), l.voltages.begin(), l.voltages.end());
+    return s;
+  }
+
+  void ShootingModel::set_state(const std::vector<double> &s)
+  {
+    if (s.size() < 11 || s[0] != 1. || s[10] != sc.n_rings() ||
+        s.size() != 11 + sc.n_rings())
+      throw std::invalid_argument("ShootingModel::set_state: not a state of this model");
+    Current c;
+    c.kind             = static_cast<Kind>(static_cast<int>(s[1]));
+    c.load.stage       = static_cast<Stage>(static_cast<int>(s[2]));
+    c.load.load_factor = s[3];
+    c.load.stretch     = s[4];
+    c.load.force       = s[5];
+    c.load.mass        = s[6];
+    c.iterations       = static_cast<unsigned int>(s[9]);
+    c.load.voltages.assign(s.begin() + 11, s.end());
+    c.profile = rebuild(c.kind, c.load, s[7], s[8]);
+    if (!c.profile.ok)
+      throw std::runtime_error("ShootingModel::set_state: " + c.profile.message);
+    current = std::move(c);
+  }
+} // namespace cdea::shooting
