@@ -1,6 +1,7 @@
 // cdea: command-line entry point.
 #include <cdea/app/commands.h>
 #include <cdea/app/mpi_session.h>
+#include <cdea/app/sweep.h>
 #include <cdea/app/parameters.h>
 
 #include <iostream>
@@ -34,6 +35,8 @@ int main(int argc, char **argv)
         return cdea::run_shooting(args[1]);
       if (command == "compare" && args.size() == 2)
         return cdea::compare(args[1]);
+      if (command == "sweep" && args.size() == 2)
+        return cdea::run_sweep(args[1]);
       std::cerr << "cdea: unknown command or wrong number of arguments: '" << command
                 << "'\n\n"
                 << cdea::usage();

@@ -204,6 +204,61 @@ namespace cdea
       prm.leave_subsection();
     }
 
+    void Sweep::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Sweep");
+      prm.declare_entry("Ring edge values (r/a)", "1.2, 1.25, 1.3, ..., 2.6", Anything(),
+                        "Inner-ring outer edges r_v/a of the two-ring layouts 1, r_v/a, b/a "
+                        "swept by `cdea sweep`, separated by ','. '...' continues the "
+                        "arithmetic sequence of the two values before it up to the value after "
+                        "it. Every value must lie strictly between 1 and b/a.");
+      prm.declare_entry("Inner voltage (kV)", "5", Anything(),
+                        "Voltage of the inner ring; both rings are first raised to it together.");
+      prm.declare_entry("Outer voltage range (kV)", "5, 8, 0.05", Anything(),
+                        "from, to, step of the outer ring's voltage in the map.");
+      prm.leave_subsection();
+    }
+
+    void Sweep::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Sweep");
+      ring_edge_values_text    = prm.get("Ring edge values (r/a)");
+      const std::string inner  = prm.get("Inner voltage (kV)");
+      outer_voltage_range_text = prm.get("Outer voltage range (kV)");
+      prm.leave_subsection();
+      const auto v = parse_number_list(inner, "Sweep/Inner voltage (kV)");
+      if (v.size() != 1 || v[0] < 0.)
+        throw InputError("Sweep/Inner voltage (kV) must be one voltage >= 0, got '" + inner + "'");
+      inner_voltage_kV = v[0];
+    }
+
+    void Reservoir::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Reservoir");
+      prm.declare_entry("Width (mm)", "20", Double(),
+                        "Inner width of the pump's level tube (rectangular cross-section).");
+      prm.declare_entry("Depth (mm)", "20", Double(),
+                        "Inner depth of the level tube; level drop = volume change / (width depth).");
+      prm.declare_entry("Water volume (ml)", "150", Double(),
+                        "Water in the pump module (for the hydrostatic load).");
+      prm.declare_entry("Water density (kg/m^3)", "1000", Double(), "Density of the water.");
+      prm.declare_entry("Water load", "false", dealii::Patterns::Bool(),
+                        "Apply the water's hydrostatic pressure to the membrane and the disk "
+                        "(a follower load). Off: the water only measures the volume change.");
+      prm.leave_subsection();
+    }
+
+    void Reservoir::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Reservoir");
+      width_mm        = prm.get_double("Width (mm)");
+      depth_mm        = prm.get_double("Depth (mm)");
+      water_volume_ml = prm.get_double("Water volume (ml)");
+      water_density   = prm.get_double("Water density (kg/m^3)");
+      water_load      = prm.get_bool("Water load");
+      prm.leave_subsection();
+    }
+
     void Output::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Output");
@@ -234,6 +289,8 @@ namespace cdea
     parameters::Solver::declare(prm);
     parameters::Wrinkling::declare(prm);
     parameters::Shooting::declare(prm);
+    parameters::Sweep::declare(prm);
+    parameters::Reservoir::declare(prm);
     parameters::Output::declare(prm);
   }
 
@@ -247,6 +304,8 @@ namespace cdea
     solver.parse(prm);
     wrinkling.parse(prm);
     shooting.parse(prm);
+    sweep.parse(prm);
+    reservoir.parse(prm);
     output.parse(prm);
   }
 

@@ -101,6 +101,28 @@ namespace cdea
       void         parse(dealii::ParameterHandler &prm);
     };
 
+    /// `cdea sweep`: two-ring layouts 1, r_v/a, b/a; validated by the sweep.
+    struct Sweep
+    {
+      std::string ring_edge_values_text;    ///< "1.2, 1.25, 1.3, ..., 2.6"
+      double      inner_voltage_kV;
+      std::string outer_voltage_range_text; ///< "from, to, step"
+      static void declare(dealii::ParameterHandler &prm);
+      void        parse(dealii::ParameterHandler &prm);
+    };
+
+    /// The pump module's water reservoir above the actuator.
+    struct Reservoir
+    {
+      double      width_mm;
+      double      depth_mm;
+      double      water_volume_ml;
+      double      water_density;
+      bool        water_load;
+      static void declare(dealii::ParameterHandler &prm);
+      void        parse(dealii::ParameterHandler &prm);
+    };
+
     struct Output
     {
       std::string directory;
@@ -120,6 +142,8 @@ namespace cdea
     parameters::Solver         solver;
     parameters::Wrinkling      wrinkling;
     parameters::Shooting       shooting;
+    parameters::Sweep          sweep;
+    parameters::Reservoir      reservoir;
     parameters::Output         output;
 
     static void declare(dealii::ParameterHandler &prm);
