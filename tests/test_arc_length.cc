@@ -55,7 +55,9 @@ namespace
     {
       return a.dot(b);
     }
-    double residual_scale() const override { return 1.; }
+    double          residual_scale() const override { return 1.; }
+    Eigen::VectorXd current() const override { return Eigen::VectorXd::Zero(n); }
+    void            set_current(const Eigen::VectorXd &, double) override {}
     double update_scale() const override { return 1.; }
 
   private:

@@ -11,6 +11,7 @@ namespace cdea
 {
   using dealii::ParameterHandler;
   using dealii::Patterns::Anything;
+  using dealii::Patterns::Bool;
     using dealii::Patterns::Double;
   using dealii::Patterns::Integer;
 
@@ -134,10 +135,11 @@ namespace cdea
     {
       prm.enter_subsection("Solver");
       prm.declare_entry("Residual tolerance", "1e-10", Double(0.),
-                        "Newton stops when the largest residual entry over the force scale "
-                        "max(F, 2 pi H mu a) is below this ...");
+                        "Newton has converged when the largest residual entry over the force "
+                        "scale max(F, 2 pi H mu a) is below this and the update criterion holds.");
       prm.declare_entry("Update tolerance", "1e-10", Double(0.),
-                        "... and the largest Newton update over the disk radius a is below this.");
+                        "Newton has converged when the largest update over the disk radius a "
+                        "is below this and the residual criterion holds.");
       prm.declare_entry("Max Newton iterations", "25", Integer(1, 1000),
                         "Newton iterations before a load step counts as failed and is cut back.");
       prm.declare_entry("Prestretch steps", "1", Integer(1, 10000),
@@ -151,6 +153,23 @@ namespace cdea
                         "the other stages) end the run with an error.");
       prm.declare_entry("Max cutbacks", "30", Integer(0, 1000),
                         "Successive halvings of a failed increment before the run gives up.");
+      prm.declare_entry("Continuation", "load stepping",
+                        dealii::Patterns::Selection("load stepping|arc length"),
+                        "How the voltage path is followed. 'load stepping' prescribes the path "
+                        "parameter and stops at a fold; 'arc length' (pseudo-arclength with a "
+                        "bordered Newton corrector) follows the curve through folds and locates "
+                        "every limit point.");
+      prm.declare_entry("Max arc-length steps", "400", Integer(1, 1000000),
+                        "Arc-length continuation ends after this many steps ...");
+      prm.declare_entry("Max displacement (mm)", "60", Double(0.),
+                        "... or when the displacement exceeds this (0: no limit), or when the "
+                        "path parameter leaves [0, end of path].");
+      prm.declare_entry("Stability check", "true", Bool(),
+                        "Compute the smallest eigenvalue of the tangent (dead load and voltages "
+                        "held) at every converged state: negative means unstable.");
+      prm.declare_entry("Breakdown field (MV/m)", "0", Double(0.),
+                        "Electrical breakdown check: report where and when the true field E "
+                        "first exceeds this value (0: off).");
       prm.leave_subsection();
     }
 
@@ -165,6 +184,11 @@ namespace cdea
       voltage_increment_kV     = prm.get_double("Voltage increment (kV)");
       min_voltage_increment_kV = prm.get_double("Min voltage increment (kV)");
       max_cutbacks             = prm.get_integer("Max cutbacks");
+      continuation             = prm.get("Continuation");
+      max_arc_length_steps     = prm.get_integer("Max arc-length steps");
+      max_displacement_mm      = prm.get_double("Max displacement (mm)");
+      stability_check          = prm.get_bool("Stability check");
+      breakdown_field_MV_per_m = prm.get_double("Breakdown field (MV/m)");
       prm.leave_subsection();
     }
 
@@ -174,6 +198,12 @@ namespace cdea
       prm.declare_entry("Onset tolerance (V)", "1e-3", Double(1e-9),
                         "The load at which the hoop stress s2 first reaches zero is located "
                         "by root finding to within this voltage.");
+      prm.declare_entry("Model", "check", dealii::Patterns::Selection("check|relaxed"),
+                        "'check': the plain membrane law everywhere; s2 < 0 is only detected "
+                        "and flagged. 'relaxed': tension-field theory where s2 would be "
+                        "negative (the energy minimised over hoop stretches above the "
+                        "kinematic one); the run stops where the relaxed law loses "
+                        "ellipticity (pull-in) or has no natural width below the Gent limit.");
       prm.leave_subsection();
     }
 
@@ -181,6 +211,7 @@ namespace cdea
     {
       prm.enter_subsection("Wrinkling");
       onset_tolerance_V = prm.get_double("Onset tolerance (V)");
+      model             = prm.get("Model");
       prm.leave_subsection();
     }
 
@@ -242,7 +273,7 @@ namespace cdea
       prm.declare_entry("Water volume (ml)", "150", Double(),
                         "Water in the pump module (for the hydrostatic load).");
       prm.declare_entry("Water density (kg/m^3)", "1000", Double(), "Density of the water.");
-      prm.declare_entry("Water load", "false", dealii::Patterns::Bool(),
+      prm.declare_entry("Water load", "false", Bool(),
                         "Apply the water's hydrostatic pressure to the membrane and the disk "
                         "(a follower load). Off: the water only measures the volume change.");
       prm.leave_subsection();

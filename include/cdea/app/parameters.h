@@ -82,6 +82,11 @@ namespace cdea
       double       voltage_increment_kV;
       double       min_voltage_increment_kV;
       unsigned int max_cutbacks;
+      std::string  continuation; ///< "load stepping" or "arc length"
+      unsigned int max_arc_length_steps;
+      double       max_displacement_mm;
+      bool         stability_check;
+      double       breakdown_field_MV_per_m;
       static void  declare(dealii::ParameterHandler &prm);
       void         parse(dealii::ParameterHandler &prm);
     };
@@ -89,6 +94,7 @@ namespace cdea
     struct Wrinkling
     {
       double      onset_tolerance_V;
+      std::string model; ///< "check" or "relaxed"
       static void declare(dealii::ParameterHandler &prm);
       void        parse(dealii::ParameterHandler &prm);
     };

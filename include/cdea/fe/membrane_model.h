@@ -5,7 +5,7 @@
 // two FE_Q of degree p; element boundaries lie on every ring edge and each
 // element carries the voltage of its ring. The total potential
 //
-//   Pi[r, z] = 2 pi H int_A^B W(l1, l2; Phi) R dR  -  F z(A),
+//   Pi[r, z] = 2 pi H int_A^B W(l1, l2; Phi) R dR  -  F z(A)  [+ E_w, see WaterLoad],
 //   l1 = sqrt(r'^2 + z'^2),  l2 = r / R,
 //
 // is stationary at equilibrium; its first and second variations give the
@@ -33,6 +33,25 @@ namespace cdea
     unsigned int samples_per_element = 4;
   };
 
+  /// Hydrostatic load of the pump module's water (doc/pump.md). The water
+  /// fills the cone above the membrane and the disk (z > 0 is down) and rises
+  /// in a level tube of cross-section tube_area above the frame plane, to the
+  /// free-surface height h = (water_volume - V) / tube_area with V the
+  /// enclosed volume. The pressure rho g (h + z) acts normal to the deformed
+  /// membrane and on the disk. It is conservative, with the potential
+  ///   E_w = rho g [(water_volume - V)^2 / (2 tube_area) - pi int r^2 z (-z') dR],
+  /// added to Pi (residual and exact tangent; the tangent has a dense rank-one
+  /// part from h(V), solved by Sherman-Morrison). Gravity ramps with the load
+  /// stage: off in stage 0, times the load factor in stage 1, full in stage 2.
+  struct WaterLoad
+  {
+    bool   enabled      = false;
+    double density      = 1000.;  ///< kg/m^3
+    double gravity      = 9.81;   ///< m/s^2
+    double water_volume = 150e-6; ///< m^3, in the cone and the tube together
+    double tube_area    = 400e-6; ///< m^2, cross-section of the level tube
+  };
+
   class MembraneModel : public EquilibriumModel
   {
   public:
@@ -47,6 +66,15 @@ namespace cdea
     std::vector<double> state() const override;
     void                set_state(const std::vector<double> &state) override;
     void predict(const std::vector<double> &older_state, double factor) override;
+
+    /// pi int_A^B r^2 (-z') dR by Gauss quadrature exact for the FE solution.
+    double enclosed_volume() const override;
+
+    /// Switch the water load on or off (off by default); it applies from the next solve.
+    void             set_water_load(const WaterLoad &water);
+    const WaterLoad &water_load() const;
+    /// Free-surface height h above the frame plane at the current state (m).
+    double free_surface_height() const;
 
     unsigned int n_dofs() const;
     unsigned int n_elements() const;

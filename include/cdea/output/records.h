@@ -2,6 +2,7 @@
 // What a solver (FE or shooting) reports for one converged equilibrium, in SI
 // units. The HDF5 writer converts to the file's units (mm, kPa, kV, MV/m, g).
 
+#include <limits>
 #include <vector>
 
 namespace cdea
@@ -26,6 +27,10 @@ namespace cdea
     double              s2_min_radius = 0.; ///< reference radius R where s2_min occurs (m)
     std::vector<double> s2_ring_inner;      ///< hoop stress at each ring's inner edge (Pa)
     bool                wrinkled          = false;
+    /// Reference radii R (m) bounding the quadrature points the relaxed law
+    /// treats as wrinkled; NaN when there are none (or in check mode).
+    double wrinkled_zone_inner = std::numeric_limits<double>::quiet_NaN();
+    double wrinkled_zone_outer = std::numeric_limits<double>::quiet_NaN();
     unsigned int        newton_iterations = 0;
   };
 

@@ -40,6 +40,10 @@ namespace cdea
     /// largest update entry / update_scale.
     virtual double residual_scale() const = 0;
     virtual double update_scale() const   = 0;
+    /// The unknowns of the model's current state, and making (x, t) the
+    /// model's current state (an equilibrium found by the continuation).
+    virtual Eigen::VectorXd current() const                              = 0;
+    virtual void            set_current(const Eigen::VectorXd &x, double t) = 0;
   };
 
   struct ArcLengthSettings

@@ -6,11 +6,15 @@
 
 #include <cdea/output/records.h>
 
+#include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
 namespace cdea
 {
+  class ContinuationProblem;
+
   /// The load a state is in equilibrium with.
   struct LoadState
   {
@@ -27,6 +31,10 @@ namespace cdea
     bool         converged  = false;
     unsigned int iterations = 0;
     std::string  message; ///< why it failed (empty on success)
+    /// The equilibrium was found but lies outside the model's validity (the
+    /// relaxed law lost ellipticity, say): not a reason to cut the step, a
+    /// limit of the model to be located and reported.
+    bool outside_model = false;
   };
 
   class EquilibriumModel
@@ -49,6 +57,14 @@ namespace cdea
     /// Fields along the meridian of the current state.
     virtual StepFields fields() const = 0;
 
+    /// Volume (m^3) enclosed between the frame plane and the deformed membrane
+    /// with the disk at the current state: pi int r^2 dz along the meridian,
+    /// pi int_A^B r^2 (-z') dR (zero for a flat film). NaN if the model cannot tell.
+    virtual double enclosed_volume() const
+    {
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+
     /// Replace the unknowns of the current state by the linear prediction
     /// x + factor (x - x_older) as the starting guess of the next solve;
     /// @p older_state is an earlier state() of the same stage. A model without
@@ -58,6 +74,24 @@ namespace cdea
     {
       (void)older_state;
       (void)factor;
+    }
+
+    /// The equilibrium problem along a load path t -> LoadState as a
+    /// ContinuationProblem over this model's unknowns, for arc-length
+    /// continuation; nullptr if the model does not offer one. The model owns it;
+    /// it stays valid until the next call.
+    virtual ContinuationProblem *continuation(const std::function<LoadState(double)> &path)
+    {
+      (void)path;
+      return nullptr;
+    }
+
+    /// Smallest eigenvalue of the tangent of the current state with dead load
+    /// and voltages held fixed (N/m): negative means unstable. NaN if the
+    /// model cannot tell.
+    virtual double min_tangent_eigenvalue() const
+    {
+      return std::numeric_limits<double>::quiet_NaN();
     }
 
     /// Opaque copy of the current state (with the load it is in equilibrium
