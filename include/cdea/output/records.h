@@ -3,6 +3,7 @@
 // units. The HDF5 writer converts to the file's units (mm, kPa, kV, MV/m, g).
 
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace cdea
@@ -31,6 +32,16 @@ namespace cdea
     /// treats as wrinkled; NaN when there are none (or in check mode).
     double wrinkled_zone_inner = std::numeric_limits<double>::quiet_NaN();
     double wrinkled_zone_outer = std::numeric_limits<double>::quiet_NaN();
+    /// Smallest eigenvalue of the tangent with loads held (N/m); NaN if not
+    /// computed. Negative: the state is unstable.
+    double min_eigenvalue = std::numeric_limits<double>::quiet_NaN();
+    /// Largest true electric field (V/m) and its reference radius R (m);
+    /// filled by the driver when the breakdown check is on.
+    double max_field        = std::numeric_limits<double>::quiet_NaN();
+    double max_field_radius = std::numeric_limits<double>::quiet_NaN();
+    /// Empty while the state is inside the model's validity; otherwise why
+    /// not (e.g. the relaxed law loses ellipticity at some radius).
+    std::string validity_limit;
     unsigned int        newton_iterations = 0;
   };
 
@@ -41,11 +52,21 @@ namespace cdea
     std::vector<int>    ring;
   };
 
-  /// Where the hoop stress first reaches zero.
+  /// Where the hoop stress first reaches zero (also used for the first
+  /// exceedance of the breakdown field).
   struct OnsetRecord
   {
     bool                found = false;
     std::vector<double> voltages; ///< V, one per ring
     double              radius = 0.; ///< pre-stretched flat radius lam_pre R (m)
+    double              load_factor = 0.; ///< path parameter t where it happens
+  };
+
+  /// A limit point (fold) of the load path: the path parameter is extremal.
+  struct LimitPoint
+  {
+    double              load_factor = 0.; ///< path parameter t
+    std::vector<double> voltages;         ///< V
+    double              displacement = 0.; ///< m
   };
 } // namespace cdea

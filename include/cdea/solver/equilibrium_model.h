@@ -31,10 +31,6 @@ namespace cdea
     bool         converged  = false;
     unsigned int iterations = 0;
     std::string  message; ///< why it failed (empty on success)
-    /// The equilibrium was found but lies outside the model's validity (the
-    /// relaxed law lost ellipticity, say): not a reason to cut the step, a
-    /// limit of the model to be located and reported.
-    bool outside_model = false;
   };
 
   class EquilibriumModel
