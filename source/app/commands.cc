@@ -1,5 +1,6 @@
 #include <cdea/app/commands.h>
 #include <cdea/app/parameters.h>
+#include <cdea/app/pump.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/output/results_file.h>
 #include <cdea/shooting/shooting_model.h>
@@ -10,6 +11,7 @@
 #include <cstdio>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <sstream>
 
@@ -71,28 +73,49 @@ namespace cdea
 
   namespace
   {
-    /// Prints one table row per converged step and writes it to the file.
+    /// Prints one table row per converged step and writes it to the file,
+    /// with the enclosed volume, its change from the end of the load stage
+    /// (like the stroke) and the pump's level drop in a tube of @p tube_area.
     class StepRecorder
     {
     public:
-      StepRecorder(ResultsFile &file, const EquilibriumModel &model, const Scene &scene)
+      StepRecorder(ResultsFile &file, const EquilibriumModel &model, const Scene &scene,
+                   const double tube_area)
         : file(file)
         , model(model)
         , scene(scene)
-      {}
+        , tube_area(tube_area)
+      {
+        file.describe_column("volume_mm3", "mm^3",
+                             "volume enclosed between the frame plane and the deformed "
+                             "membrane with the disk, pi int r^2 dz");
+        file.describe_column("volume_change_mm3", "mm^3",
+                             "enclosed volume minus its value at the end of the load stage "
+                             "(NaN before)");
+        file.describe_column("level_drop_mm", "mm",
+                             "volume change / cross-section of the Reservoir level tube");
+      }
 
       void header() const
       {
         std::cout << std::setw(5) << "step" << std::setw(13) << "stage" << std::setw(10)
                   << "t" << "  " << std::setw(7 * scene.n_rings()) << "V (kV)"
                   << std::setw(12) << "disp (mm)" << std::setw(12) << "stroke (mm)"
-                  << std::setw(12) << "min s2/mu" << std::setw(6) << "wrk" << std::setw(6)
-                  << "its" << '\n';
+                  << std::setw(12) << "dV (mm3)" << std::setw(12) << "min s2/mu" << std::setw(6)
+                  << "wrk" << std::setw(6) << "its" << '\n';
       }
 
       void step(const StepSummary &s)
       {
-        file.append(s, model.fields());
+        volume = model.enclosed_volume();
+        if (s.stage == Stage::dead_load && s.load_factor == 1.)
+          reference_volume = volume;
+        volume_change = volume - reference_volume; // NaN before the reference
+        level_drop    = volume_change / tube_area;
+        file.append(s, model.fields(),
+                    {{"volume_mm3", volume * 1e9},
+                     {"volume_change_mm3", volume_change * 1e9},
+                     {"level_drop_mm", level_drop * 1e3}});
         last = s;
         std::ostringstream v;
         for (const double x : s.voltages)
@@ -106,6 +129,12 @@ namespace cdea
                        o << std::fixed << std::setprecision(6) << s.stroke * 1e3;
                        return o.str();
                      }())
+                  << std::setw(12)
+                  << (std::isnan(volume_change) ? std::string("-") : [&] {
+                       std::ostringstream o;
+                       o << std::fixed << std::setprecision(3) << volume_change * 1e9;
+                       return o.str();
+                     }())
                   << std::setw(12) << std::setprecision(6)
                   << s.s2_min / scene.material.shear_modulus << std::setw(6)
                   << (s.wrinkled ? "yes" : "no") << std::setw(6) << s.newton_iterations
@@ -113,11 +142,16 @@ namespace cdea
       }
 
       StepSummary last;
+      double      volume        = 0.; ///< m^3, of the last step
+      double      volume_change = std::numeric_limits<double>::quiet_NaN();
+      double      level_drop    = std::numeric_limits<double>::quiet_NaN(); ///< m
 
     private:
       ResultsFile            &file;
       const EquilibriumModel &model;
       const Scene            &scene;
+      const double            tube_area;
+      double                  reference_volume = std::numeric_limits<double>::quiet_NaN();
     };
 
     std::string kv_list(const std::vector<double> &volts)
@@ -147,7 +181,7 @@ namespace cdea
         }
       file->write_onset(OnsetRecord());
 
-      StepRecorder recorder(*file, model, scene);
+      StepRecorder recorder(*file, model, scene, tube_area(p));
       LoadStepper  stepper(scene, model, stepping_settings(p));
       stepper.on_step  = [&](const StepSummary &s) { recorder.step(s); };
       stepper.on_onset = [&](const OnsetRecord &onset) {
@@ -168,7 +202,20 @@ namespace cdea
       const StepSummary &s = recorder.last;
       std::cout << "\nFinal state: voltages " << kv_list(s.voltages) << ", displacement "
                 << std::setprecision(7) << s.displacement * 1e3 << " mm, stroke "
-                << s.stroke * 1e3 << " mm\n  s2/mu at the inner edge of each ring:";
+                << s.stroke * 1e3 << " mm\n";
+      {
+        std::ostringstream o;
+        o << std::setprecision(7) << "  enclosed volume " << recorder.volume * 1e9
+          << " mm^3, change " << recorder.volume_change * 1e9 << " mm^3, level drop "
+          << recorder.level_drop * 1e3 << " mm (tube " << p.reservoir.width_mm << " mm x "
+          << p.reservoir.depth_mm << " mm)\n";
+        if (p.reservoir.water_load)
+          o << "  water: free surface "
+            << (p.reservoir.water_volume_ml * 1e-6 - recorder.volume) / tube_area(p) * 1e3
+            << " mm above the frame plane\n";
+        std::cout << o.str();
+      }
+      std::cout << "  s2/mu at the inner edge of each ring:";
       for (const double x : s.s2_ring_inner)
         std::cout << ' ' << std::setprecision(6) << x / scene.material.shear_modulus;
       std::cout << '\n';
@@ -215,6 +262,7 @@ namespace cdea
           Input in;
           in.parameters = read_parameters(prm_file, &in.text);
           in.scene      = in.parameters.scene();
+          validate_reservoir(in.parameters);
           return in;
         }
       catch (const InputError &e)
@@ -222,6 +270,17 @@ namespace cdea
           std::cerr << "cdea: " << e.what() << '\n';
           return std::nullopt;
         }
+    }
+
+    /// The water load exists in the FE model only: refuse it elsewhere.
+    bool fe_only_check(const Parameters &p, const std::string &command)
+    {
+      if (!p.reservoir.water_load)
+        return true;
+      std::cerr << "cdea: Reservoir/Water load = true is implemented in the FE model only: "
+                   "use 'cdea run', or set it to false for 'cdea "
+                << command << "'\n";
+      return false;
     }
 
     /// A run of @p model without output: its last step and result.
@@ -252,8 +311,13 @@ namespace cdea
       return exit_input_error;
     const Parameters &p = in->parameters;
     MembraneModel     model(in->scene, fe_discretization(p), newton_settings(p));
+    model.set_water_load(water_load(p));
     std::cout << "FE model: " << model.n_elements() << " elements of degree "
               << p.discretization.polynomial_degree << ", " << model.n_dofs() << " unknowns\n";
+    if (p.reservoir.water_load)
+      std::cout << "Water load: " << p.reservoir.water_volume_ml << " ml of density "
+                << p.reservoir.water_density << " kg/m^3 above the membrane, level tube "
+                << p.reservoir.width_mm << " x " << p.reservoir.depth_mm << " mm\n";
     return record_run(model, p, in->scene, in->text, p.results_path(), "finite elements");
   }
 
@@ -263,6 +327,8 @@ namespace cdea
     if (!in)
       return exit_input_error;
     const Parameters       &p = in->parameters;
+    if (!fe_only_check(p, "shoot"))
+      return exit_input_error;
     shooting::ShootingModel model(in->scene, shooting_options(p));
     std::cout << "Shooting model: Dormand-Prince 5(4), tolerance " << p.shooting.tolerance
               << '\n';
@@ -276,6 +342,8 @@ namespace cdea
       return exit_input_error;
     const Parameters       &p     = in->parameters;
     const Scene            &scene = in->scene;
+    if (!fe_only_check(p, "compare"))
+      return exit_input_error;
     MembraneModel           fe(scene, fe_discretization(p), newton_settings(p));
     shooting::ShootingModel sh(scene, shooting_options(p));
     const QuietRun          a = quiet_run(fe, *in);
@@ -305,6 +373,7 @@ namespace cdea
               << std::setw(11) << "relative" << '\n';
     row("displacement", a.last.displacement * 1e3, b.last.displacement * 1e3, "mm");
     row("stroke", a.last.stroke * 1e3, b.last.stroke * 1e3, "mm");
+    row("enclosed volume", fe.enclosed_volume() * 1e9, sh.enclosed_volume() * 1e9, "mm^3");
     for (unsigned int k = 0; k < scene.n_rings(); ++k)
       row("s2/mu, inner edge of ring " + std::to_string(k + 1), a.last.s2_ring_inner[k] / mu,
           b.last.s2_ring_inner[k] / mu, "-");

@@ -80,6 +80,22 @@ namespace cdea
     LoadState                   load;
     std::vector<GentDielectric> laws; ///< one per ring, at the load's voltages
 
+    WaterLoad   water;
+    QGauss<1>   volume_quadrature; ///< 2p points: exact for the volume integrands
+    FEValues<1> fe_volume;         ///< at the volume quadrature, reused
+
+    /// rho g of the water times the stage's share of gravity (0 if off).
+    double water_weight() const;
+    /// Enclosed volume of @p x and, if @p gradient, its gradient (dof order).
+    double volume(const Vector<double> &x, Vector<double> *gradient);
+    /// Adds the water load of one element at free-surface height @p head (held
+    /// fixed) to the local residual and, if @p cell_matrix, to the tangent;
+    /// returns the element's share of pi int r^2 z (-z') dR.
+    double add_water_cell(const Cell &cell, const Vector<double> &x, double head,
+                          FullMatrix<double> *cell_matrix, Vector<double> &cell_rhs);
+    /// E_w of @p x (J).
+    double water_energy(const Vector<double> &x);
+
     void set_load(const LoadState &new_load);
     void apply_boundary_values(Vector<double> &x) const;
 
@@ -102,6 +118,9 @@ namespace cdea
     , dof_handler(triangulation)
     , quadrature(disc_in.degree + 1)
     , fe_values(fe, quadrature,
+                update_values | update_gradients | update_quadrature_points | update_JxW_values)
+    , volume_quadrature(2 * disc_in.degree)
+    , fe_volume(fe, volume_quadrature,
                 update_values | update_gradients | update_quadrature_points | update_JxW_values)
   {
     const auto          edges = scene.reference_ring_edges();
@@ -236,9 +255,13 @@ namespace cdea
     Vector<double>                       cell_rhs(n);
     std::vector<types::global_dof_index> dofs(n);
     r = 0.;
+    const double c    = water_weight();
+    const double head = c > 0. ? (water.water_volume - volume(x, nullptr)) / water.tube_area : 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         assemble_cell(cell, fe_values, x, nullptr, cell_rhs);
+        if (c > 0.)
+          add_water_cell(cell, x, head, nullptr, cell_rhs);
         cell->get_dof_indices(dofs);
         for (unsigned int i = 0; i < n; ++i)
           r(dofs[i]) += cell_rhs(i);
@@ -256,9 +279,15 @@ namespace cdea
     std::vector<types::global_dof_index> dofs(n);
     tangent    = 0.;
     system_rhs = 0.;
+    const double   c = water_weight();
+    Vector<double> volume_gradient;
+    const double   head =
+      c > 0. ? (water.water_volume - volume(x, &volume_gradient)) / water.tube_area : 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         assemble_cell(cell, fe_values, x, &cell_matrix, cell_rhs);
+        if (c > 0.)
+          add_water_cell(cell, x, head, &cell_matrix, cell_rhs);
         cell_rhs *= -1.;
         cell->get_dof_indices(dofs);
         constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs, tangent, system_rhs);
@@ -270,7 +299,137 @@ namespace cdea
     TrilinosWrappers::SolverDirect direct(control);
     dx = 0.;
     direct.solve(tangent, dx, system_rhs);
+    if (c > 0.)
+      {
+        // The free surface couples every dof: the tangent is K + k g g^T with
+        // g the volume gradient and k = rho g / tube area (Sherman-Morrison).
+        constraints.set_zero(volume_gradient);
+        Vector<double> u(dx.size());
+        direct.solve(tangent, u, volume_gradient);
+        const double k = c / water.tube_area;
+        dx.add(-k * (volume_gradient * dx) / (1. + k * (volume_gradient * u)), u);
+      }
     constraints.distribute(dx);
+  }
+
+  double MembraneModel::Impl::water_weight() const
+  {
+    if (!water.enabled)
+      return 0.;
+    const double share = load.stage == Stage::prestretch ? 0. :
+                         load.stage == Stage::dead_load  ? load.load_factor :
+                                                           1.;
+    return share * water.density * water.gravity;
+  }
+
+  double MembraneModel::Impl::volume(const Vector<double> &x, Vector<double> *gradient)
+  {
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    std::vector<types::global_dof_index> dofs(n);
+    if (gradient)
+      gradient->reinit(dof_handler.n_dofs());
+    double v = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        fe_volume.reinit(cell);
+        for (unsigned int q = 0; q < fe_volume.n_quadrature_points; ++q)
+          {
+            double r = 0., dz = 0.;
+            for (unsigned int i = 0; i < n; ++i)
+              if (fe.system_to_component_index(i).first == 0)
+                r += x(dofs[i]) * fe_volume.shape_value(i, q);
+              else
+                dz += x(dofs[i]) * fe_volume.shape_grad(i, q)[0];
+            const double w = M_PI * fe_volume.JxW(q);
+            v -= w * r * r * dz;
+            if (gradient)
+              for (unsigned int i = 0; i < n; ++i)
+                (*gradient)(dofs[i]) -=
+                  w * (fe.system_to_component_index(i).first == 0 ?
+                         2. * r * dz * fe_volume.shape_value(i, q) :
+                         r * r * fe_volume.shape_grad(i, q)[0]);
+          }
+      }
+    return v;
+  }
+
+  // With the head h held fixed, the water's potential is locally
+  // e = rho g pi int phi dR, phi = (h + z) r^2 z', whose gradient is the
+  // pressure load -rho g (h grad V + grad Q); the variation of h with V
+  // adds the rank-one part of the tangent (newton_update, tangent_matrix).
+  double MembraneModel::Impl::add_water_cell(const Cell &cell, const Vector<double> &x,
+                                             const double head,
+                                             FullMatrix<double> *cell_matrix,
+                                             Vector<double>     &cell_rhs)
+  {
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    std::vector<types::global_dof_index> dofs(n);
+    cell->get_dof_indices(dofs);
+    fe_volume.reinit(cell);
+    const double              c = water_weight();
+    std::vector<double>       value(n), grad(n);
+    std::vector<unsigned int> comp(n);
+    for (unsigned int i = 0; i < n; ++i)
+      comp[i] = fe.system_to_component_index(i).first;
+    double moment = 0.;
+    for (unsigned int q = 0; q < fe_volume.n_quadrature_points; ++q)
+      {
+        double r = 0., z = 0., dz = 0.;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            value[i] = fe_volume.shape_value(i, q);
+            grad[i]  = fe_volume.shape_grad(i, q)[0];
+            if (comp[i] == 0)
+              r += x(dofs[i]) * value[i];
+            else
+              {
+                z += x(dofs[i]) * value[i];
+                dz += x(dofs[i]) * grad[i];
+              }
+          }
+        const double w = M_PI * fe_volume.JxW(q);
+        const double d = head + z; // depth below the free surface
+        moment -= w * r * r * z * dz;
+        // phi_r = 2 d r z', phi_z = r^2 z', phi_z' = d r^2.
+        for (unsigned int i = 0; i < n; ++i)
+          cell_rhs(i) += c * w *
+                         (comp[i] == 0 ? 2. * d * r * dz * value[i] :
+                                         r * r * dz * value[i] + d * r * r * grad[i]);
+        if (cell_matrix)
+          // phi_rr = 2 d z', phi_rz = 2 r z', phi_rz' = 2 d r, phi_zz' = r^2.
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < n; ++j)
+              {
+                double h = 0.;
+                if (comp[i] == 0 && comp[j] == 0)
+                  h = 2. * d * dz * value[i] * value[j];
+                else if (comp[i] == 1 && comp[j] == 1)
+                  h = r * r * (value[i] * grad[j] + grad[i] * value[j]);
+                else
+                  {
+                    const unsigned int a = comp[i] == 0 ? i : j; // the r dof
+                    const unsigned int b = comp[i] == 0 ? j : i; // the z dof
+                    h = 2. * r * dz * value[a] * value[b] + 2. * d * r * value[a] * grad[b];
+                  }
+                (*cell_matrix)(i, j) += c * w * h;
+              }
+      }
+    return moment;
+  }
+
+  double MembraneModel::Impl::water_energy(const Vector<double> &x)
+  {
+    const double c = water_weight();
+    if (!(c > 0.))
+      return 0.;
+    const double   v = volume(x, nullptr);
+    Vector<double> scratch(fe.n_dofs_per_cell());
+    double         moment = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      moment += add_water_cell(cell, x, 0., nullptr, scratch);
+    const double dv = water.water_volume - v;
+    return c * (dv * dv / (2. * water.tube_area) - moment);
   }
 
   MembraneModel::MembraneModel(const Scene &scene, const FeDiscretization &discretization,
@@ -343,6 +502,13 @@ namespace cdea
     settings.update_scale = impl->scene.disk_radius;
     LineSearchNewton<Vector<double>> newton(settings);
     SolveReport                      report = newton.solve(*impl, impl->solution);
+    if (report.converged && impl->water_weight() > 0. && free_surface_height() < 0.)
+      {
+        // The water model assumes a full cone under a free surface in the tube.
+        report.converged = false;
+        report.message   = "the water (WaterLoad) no longer fills the cone: its free surface "
+                           "would lie below the frame plane";
+      }
     if (!report.converged)
       {
         impl->set_load(old_load);
@@ -358,7 +524,8 @@ namespace cdea
     double         pi = 0.;
     for (const auto &cell : impl->dof_handler.active_cell_iterators())
       pi += impl->assemble_cell(cell, fe_values, impl->solution, nullptr, cell_rhs);
-    return pi - impl->load.force * impl->solution(impl->z_inner);
+    return pi - impl->load.force * impl->solution(impl->z_inner) +
+           impl->water_energy(impl->solution);
   }
 
   std::vector<double> MembraneModel::residual_vector() const
@@ -368,9 +535,13 @@ namespace cdea
     Vector<double>                       cell_rhs(n);
     std::vector<types::global_dof_index> dofs(n);
     std::vector<double>                  r(n_dofs(), 0.);
+    const bool                           water = impl->water_weight() > 0.;
+    const double                         head  = free_surface_height();
     for (const auto &cell : impl->dof_handler.active_cell_iterators())
       {
         impl->assemble_cell(cell, fe_values, impl->solution, nullptr, cell_rhs);
+        if (water)
+          impl->add_water_cell(cell, impl->solution, head, nullptr, cell_rhs);
         cell->get_dof_indices(dofs);
         for (unsigned int i = 0; i < n; ++i)
           r[dofs[i]] += cell_rhs(i);
@@ -387,15 +558,40 @@ namespace cdea
     Vector<double>                       cell_rhs(n);
     std::vector<types::global_dof_index> dofs(n);
     std::vector<std::vector<double>>     K(n_dofs(), std::vector<double>(n_dofs(), 0.));
+    const double                         c = impl->water_weight();
+    Vector<double>                       g; // volume gradient
+    if (c > 0.)
+      impl->volume(impl->solution, &g);
+    const double head = free_surface_height();
     for (const auto &cell : impl->dof_handler.active_cell_iterators())
       {
         impl->assemble_cell(cell, fe_values, impl->solution, &cell_matrix, cell_rhs);
+        if (c > 0.)
+          impl->add_water_cell(cell, impl->solution, head, &cell_matrix, cell_rhs);
         cell->get_dof_indices(dofs);
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j < n; ++j)
             K[dofs[i]][dofs[j]] += cell_matrix(i, j);
       }
+    if (c > 0.) // the free surface: rank one, couples every dof
+      for (unsigned int i = 0; i < n_dofs(); ++i)
+        for (unsigned int j = 0; j < n_dofs(); ++j)
+          K[i][j] += c / impl->water.tube_area * g(i) * g(j);
     return K;
+  }
+
+  double MembraneModel::enclosed_volume() const
+  {
+    return impl->volume(impl->solution, nullptr);
+  }
+
+  void MembraneModel::set_water_load(const WaterLoad &water) { impl->water = water; }
+
+  const WaterLoad &MembraneModel::water_load() const { return impl->water; }
+
+  double MembraneModel::free_surface_height() const
+  {
+    return (impl->water.water_volume - enclosed_volume()) / impl->water.tube_area;
   }
 
   std::vector<double> MembraneModel::solution() const

@@ -137,6 +137,40 @@ namespace cdea::shooting
     return current.profile.samples;
   }
 
+  double ShootingModel::enclosed_volume() const
+  {
+    // 5-point Gauss-Legendre on [0, 1]: exact for r^2 z' with cubic r and z.
+    static const double xg[5] = {0.04691007703066800, 0.23076534494715845, 0.5,
+                                 0.76923465505284155, 0.95308992296933200};
+    static const double wg[5] = {0.11846344252809454, 0.23931433524968324,
+                                 0.28444444444444444, 0.23931433524968324,
+                                 0.11846344252809454};
+    const StepFields &f = current.profile.samples;
+    double            v = 0.;
+    for (std::size_t i = 0; i + 1 < f.R.size(); ++i)
+      {
+        const double h = f.R[i + 1] - f.R[i];
+        if (!(h > 0.)) // the two sides of a ring edge
+          continue;
+        const double r0 = f.r[i], r1 = f.r[i + 1], z0 = f.z[i], z1 = f.z[i + 1];
+        const double dr0 = h * f.lambda1[i] * std::cos(f.theta[i]);
+        const double dr1 = h * f.lambda1[i + 1] * std::cos(f.theta[i + 1]);
+        const double dz0 = -h * f.lambda1[i] * std::sin(f.theta[i]);
+        const double dz1 = -h * f.lambda1[i + 1] * std::sin(f.theta[i + 1]);
+        for (unsigned int q = 0; q < 5; ++q)
+          {
+            const double t = xg[q], s = 1. - t;
+            // Cubic Hermite basis on [0, 1] and its derivative.
+            const double r = r0 * s * s * (1. + 2. * t) + r1 * t * t * (3. - 2. * t) +
+                             dr0 * t * s * s - dr1 * t * t * s;
+            const double dz = 6. * t * s * (z1 - z0) + dz0 * s * (1. - 3. * t) +
+                              dz1 * t * (3. * t - 2.);
+            v -= wg[q] * pi * r * r * dz; // dz is dz/dt = h z'
+          }
+      }
+    return v;
+  }
+
   // State layout (see state()): [1] kind, [7] theta0, [8] lambda1 at the disk edge.
   void ShootingModel::predict(const std::vector<double> &older, const double factor)
   {

@@ -42,6 +42,10 @@ namespace cdea::shooting
     SolveReport solve(const LoadState &load) override;
     StepSummary summary() const override;
     StepFields  fields() const override;
+    /// pi int r^2 (-z') dR over the profile's samples: cubic Hermite
+    /// interpolation of r and z (slopes l1 cos(theta), -l1 sin(theta)) between
+    /// neighbouring samples, integrated exactly; error O(h^4) in the sample spacing.
+    double      enclosed_volume() const override;
 
     /// Layout: {1 (format), kind, stage, load_factor, stretch, force, mass,
     /// theta0, l1(A), root iterations, n_rings, voltages...}.

@@ -1,0 +1,47 @@
+#include <cdea/app/parameters.h>
+#include <cdea/app/pump.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+namespace cdea
+{
+  namespace
+  {
+    void require_positive(const double value, const std::string &name)
+    {
+      if (!(value > 0.) || !std::isfinite(value))
+        {
+          std::ostringstream m;
+          m << "Reservoir/" << name << " must be positive, got " << value;
+          throw InputError(m.str());
+        }
+    }
+  } // namespace
+
+  void validate_reservoir(const Parameters &p)
+  {
+    const auto &r = p.reservoir;
+    require_positive(r.width_mm, "Width (mm)");
+    require_positive(r.depth_mm, "Depth (mm)");
+    require_positive(r.water_volume_ml, "Water volume (ml)");
+    require_positive(r.water_density, "Water density (kg/m^3)");
+  }
+
+  double tube_area(const Parameters &p)
+  {
+    return p.reservoir.width_mm * 1e-3 * p.reservoir.depth_mm * 1e-3;
+  }
+
+  WaterLoad water_load(const Parameters &p)
+  {
+    WaterLoad w;
+    w.enabled      = p.reservoir.water_load;
+    w.density      = p.reservoir.water_density;
+    w.gravity      = p.loading.gravity;
+    w.water_volume = p.reservoir.water_volume_ml * 1e-6;
+    w.tube_area    = tube_area(p);
+    return w;
+  }
+} // namespace cdea
