@@ -48,6 +48,13 @@ namespace cdea
     s.min_voltage_increment = p.solver.min_voltage_increment_kV * 1e3;
     s.max_cutbacks          = p.solver.max_cutbacks;
     s.onset_tolerance       = p.wrinkling.onset_tolerance_V;
+    s.arc_length            = p.solver.continuation == "arc length";
+    s.max_arc_length_steps  = p.solver.max_arc_length_steps;
+    s.max_displacement      = p.solver.max_displacement_mm * 1e-3;
+    s.stability_check       = p.solver.stability_check;
+    s.breakdown_field       = p.solver.breakdown_field_MV_per_m * 1e6;
+    s.residual_tolerance    = p.solver.residual_tolerance;
+    s.update_tolerance      = p.solver.update_tolerance;
     return s;
   }
 
@@ -94,6 +101,17 @@ namespace cdea
                              "(NaN before)");
         file.describe_column("level_drop_mm", "mm",
                              "volume change / cross-section of the Reservoir level tube");
+        file.describe_column("min_eigenvalue", "N/m",
+                             "smallest eigenvalue of the tangent with dead load and voltages "
+                             "held (NaN: Solver/Stability check off)");
+        file.describe_column("stable", "0/1", "min_eigenvalue > 0");
+        file.describe_column("wrinkled_zone_inner_mm", "mm",
+                             "pre-stretched flat radius lam_pre R where the relaxed law's "
+                             "wrinkled zone starts (NaN: none, or Wrinkling/Model = check)");
+        file.describe_column("wrinkled_zone_outer_mm", "mm",
+                             "pre-stretched flat radius where the wrinkled zone ends");
+        file.describe_column("max_field_MV_per_m", "MV/m",
+                             "largest true electric field (NaN: breakdown check off)");
       }
 
       void header() const
@@ -102,7 +120,7 @@ namespace cdea
                   << "t" << "  " << std::setw(7 * scene.n_rings()) << "V (kV)"
                   << std::setw(12) << "disp (mm)" << std::setw(12) << "stroke (mm)"
                   << std::setw(12) << "dV (mm3)" << std::setw(12) << "min s2/mu" << std::setw(6)
-                  << "wrk" << std::setw(6) << "its" << '\n';
+                  << "wrk" << std::setw(7) << "stable" << std::setw(6) << "its" << '\n';
       }
 
       void step(const StepSummary &s)
@@ -112,10 +130,17 @@ namespace cdea
           reference_volume = volume;
         volume_change = volume - reference_volume; // NaN before the reference
         level_drop    = volume_change / tube_area;
+        const double lam = scene.prestretch;
         file.append(s, model.fields(),
                     {{"volume_mm3", volume * 1e9},
                      {"volume_change_mm3", volume_change * 1e9},
-                     {"level_drop_mm", level_drop * 1e3}});
+                     {"level_drop_mm", level_drop * 1e3},
+                     {"min_eigenvalue", s.min_eigenvalue},
+                     {"stable", std::isnan(s.min_eigenvalue) ? s.min_eigenvalue :
+                                                               double(s.min_eigenvalue > 0.)},
+                     {"wrinkled_zone_inner_mm", lam * s.wrinkled_zone_inner * 1e3},
+                     {"wrinkled_zone_outer_mm", lam * s.wrinkled_zone_outer * 1e3},
+                     {"max_field_MV_per_m", s.max_field * 1e-6}});
         last = s;
         std::ostringstream v;
         for (const double x : s.voltages)
@@ -137,8 +162,9 @@ namespace cdea
                      }())
                   << std::setw(12) << std::setprecision(6)
                   << s.s2_min / scene.material.shear_modulus << std::setw(6)
-                  << (s.wrinkled ? "yes" : "no") << std::setw(6) << s.newton_iterations
-                  << std::endl;
+                  << (s.wrinkled ? "yes" : "no") << std::setw(7)
+                  << (std::isnan(s.min_eigenvalue) ? "-" : s.min_eigenvalue > 0. ? "yes" : "NO")
+                  << std::setw(6) << s.newton_iterations << std::endl;
       }
 
       StepSummary last;
@@ -190,6 +216,36 @@ namespace cdea
                   << ", radius r = " << std::setprecision(6) << onset.radius * 1e3
                   << " mm (r/a = " << onset.radius / scene.disk_radius << ")" << std::endl;
       };
+      // Limit points: /summary attributes limit_point_voltage_kV (k x rings)
+      // and limit_point_displacement_mm (k), rewritten as each is found.
+      std::vector<double> limit_kV, limit_mm;
+      const auto          write_limit_points = [&]() {
+        file->set_summary_attribute("limit_point_voltage_kV", limit_kV, limit_mm.size(),
+                                    scene.n_rings());
+        file->set_summary_attribute("limit_point_displacement_mm", limit_mm);
+      };
+      write_limit_points();
+      stepper.on_limit_point = [&](const LimitPoint &limit) {
+        for (const double v : limit.voltages)
+          limit_kV.push_back(v * 1e-3);
+        limit_mm.push_back(limit.displacement * 1e3);
+        write_limit_points();
+        std::cout << "      limit point (fold) at " << kv_list(limit.voltages)
+                  << ", displacement " << std::setprecision(7) << limit.displacement * 1e3
+                  << " mm" << std::endl;
+      };
+      stepper.on_breakdown = [&](const OnsetRecord &breakdown) {
+        file->set_summary_attribute("breakdown_voltage_kV", [&] {
+          std::vector<double> v;
+          for (const double x : breakdown.voltages)
+            v.push_back(x * 1e-3);
+          return v;
+        }());
+        file->set_summary_attribute("breakdown_radius_mm", {breakdown.radius * 1e3});
+        std::cout << "      breakdown field " << p.solver.breakdown_field_MV_per_m
+                  << " MV/m reached at " << kv_list(breakdown.voltages) << ", r = "
+                  << std::setprecision(6) << breakdown.radius * 1e3 << " mm" << std::endl;
+      };
 
       std::cout << "cdea " << CDEA_VERSION << " (" << method << "): " << scene.n_rings()
                 << " ring(s), writing " << path << '\n';
@@ -224,6 +280,17 @@ namespace cdea
                   << " at r = " << result.onset.radius * 1e3 << " mm\n";
       else
         std::cout << "Wrinkling onset: none along the path (s2 > 0 everywhere)\n";
+      for (const LimitPoint &limit : result.limit_points)
+        std::cout << "Limit point (fold): " << kv_list(limit.voltages) << ", displacement "
+                  << std::setprecision(7) << limit.displacement * 1e3 << " mm\n";
+      if (p.solver.breakdown_field_MV_per_m > 0.)
+        std::cout << "Breakdown field " << p.solver.breakdown_field_MV_per_m << " MV/m: "
+                  << (result.breakdown.found ?
+                        "first reached at " + kv_list(result.breakdown.voltages) :
+                        std::string("not reached"))
+                  << '\n';
+      if (!result.end.empty())
+        std::cout << "Arc-length continuation ended: " << result.end << '\n';
       std::cout << result.steps << " steps, " << result.newton_iterations
                 << " Newton iterations, " << std::setprecision(3) << seconds << " s\n";
       if (!result.completed)
@@ -275,12 +342,35 @@ namespace cdea
     /// The water load exists in the FE model only: refuse it elsewhere.
     bool fe_only_check(const Parameters &p, const std::string &command)
     {
-      if (!p.reservoir.water_load)
-        return true;
-      std::cerr << "cdea: Reservoir/Water load = true is implemented in the FE model only: "
-                   "use 'cdea run', or set it to false for 'cdea "
-                << command << "'\n";
-      return false;
+      if (p.reservoir.water_load)
+        {
+          std::cerr << "cdea: Reservoir/Water load = true is implemented in the FE model only: "
+                       "use 'cdea run', or set it to false for 'cdea "
+                    << command << "'\n";
+          return false;
+        }
+      if (p.wrinkling.model == "relaxed")
+        {
+          std::cerr << "cdea: Wrinkling/Model = relaxed is implemented in the FE model only: "
+                       "use 'cdea run', or set it to check for 'cdea "
+                    << command << "'\n";
+          return false;
+        }
+      return true;
+    }
+
+    /// The shooting model follows the voltage path by load stepping only.
+    Parameters with_load_stepping(const Parameters &p, const std::string &command)
+    {
+      Parameters q = p;
+      if (q.solver.continuation != "load stepping")
+        {
+          std::cout << "cdea " << command << ": Solver/Continuation = " << q.solver.continuation
+                    << " applies to the FE model of 'cdea run'; both solvers follow the path "
+                       "by load stepping here\n";
+          q.solver.continuation = "load stepping";
+        }
+      return q;
     }
 
     /// A run of @p model without output: its last step and result.
@@ -312,6 +402,7 @@ namespace cdea
     const Parameters &p = in->parameters;
     MembraneModel     model(in->scene, fe_discretization(p), newton_settings(p));
     model.set_water_load(water_load(p));
+    model.set_relaxed(p.wrinkling.model == "relaxed");
     std::cout << "FE model: " << model.n_elements() << " elements of degree "
               << p.discretization.polynomial_degree << ", " << model.n_dofs() << " unknowns\n";
     if (p.reservoir.water_load)
@@ -326,9 +417,9 @@ namespace cdea
     const auto in = load_input(prm_file);
     if (!in)
       return exit_input_error;
-    const Parameters       &p = in->parameters;
-    if (!fe_only_check(p, "shoot"))
+    if (!fe_only_check(in->parameters, "shoot"))
       return exit_input_error;
+    const Parameters        p = with_load_stepping(in->parameters, "shoot");
     shooting::ShootingModel model(in->scene, shooting_options(p));
     std::cout << "Shooting model: Dormand-Prince 5(4), tolerance " << p.shooting.tolerance
               << '\n';
@@ -340,14 +431,16 @@ namespace cdea
     const auto in = load_input(prm_file);
     if (!in)
       return exit_input_error;
-    const Parameters       &p     = in->parameters;
-    const Scene            &scene = in->scene;
-    if (!fe_only_check(p, "compare"))
+    if (!fe_only_check(in->parameters, "compare"))
       return exit_input_error;
+    Input                   input = *in;
+    input.parameters              = with_load_stepping(in->parameters, "compare");
+    const Parameters       &p     = input.parameters;
+    const Scene            &scene = input.scene;
     MembraneModel           fe(scene, fe_discretization(p), newton_settings(p));
     shooting::ShootingModel sh(scene, shooting_options(p));
-    const QuietRun          a = quiet_run(fe, *in);
-    const QuietRun          b = quiet_run(sh, *in);
+    const QuietRun          a = quiet_run(fe, input);
+    const QuietRun          b = quiet_run(sh, input);
 
     const double mu = scene.material.shear_modulus;
     std::cout << "cdea compare: FE (" << fe.n_elements() << " elements, p = "

@@ -19,11 +19,16 @@
 #include <deal.II/lac/vector.h>
 
 #include <cdea/fe/membrane_model.h>
+#include <cdea/material/tension_field.h>
+#include <cdea/solver/arc_length.h>
+
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 
 namespace cdea
@@ -79,6 +84,22 @@ namespace cdea
 
     LoadState                   load;
     std::vector<GentDielectric> laws; ///< one per ring, at the load's voltages
+    /// Tension-field relaxation of each ring's law (Wrinkling/Model = relaxed).
+    bool                                                relaxed = false;
+    std::vector<TensionFieldRelaxation<GentDielectric>> relaxed_laws;
+
+    /// Energy, stresses and (if @p with_tangent) second derivatives of the
+    /// ring's law at (l1, l2), relaxed or plain; false outside the law's range.
+    bool respond(unsigned int ring, double l1, double l2, double &energy, NominalStress &s,
+                 StressTangent *t) const;
+
+    /// Assemble the tangent at @p x (and, if @p rhs, minus the residual);
+    /// remembers what solve_tangent needs for the water's free surface.
+    void assemble_tangent(const Vector<double> &x, Vector<double> *rhs);
+    /// Solve (assembled tangent) u = rhs, homogeneous constraints.
+    void solve_tangent(const Vector<double> &rhs, Vector<double> &u);
+    Vector<double> volume_gradient; ///< of the last assembly, water load on
+    double         free_surface_coupling = 0.; ///< rho g / tube area of the last assembly
 
     WaterLoad   water;
     QGauss<1>   volume_quadrature; ///< 2p points: exact for the volume integrands
@@ -164,8 +185,35 @@ namespace cdea
     if (load.voltages.size() != scene.n_rings())
       load.voltages.assign(scene.n_rings(), 0.);
     laws.clear();
+    relaxed_laws.clear();
     for (const double v : load.voltages)
-      laws.emplace_back(scene.material, v);
+      {
+        laws.emplace_back(scene.material, v);
+        relaxed_laws.emplace_back(laws.back());
+      }
+  }
+
+  bool MembraneModel::Impl::respond(const unsigned int ring, const double l1, const double l2,
+                                    double &energy, NominalStress &s, StressTangent *t) const
+  {
+    if (!(l1 > 0.) || !(l2 > 0.) || !(laws[ring].gent_margin(l1, l2) > 0.))
+      return false;
+    if (relaxed)
+      {
+        const RelaxedEvaluation e = relaxed_laws[ring].evaluate(l1, l2);
+        if (e.state == TensionState::failed)
+          return false;
+        energy = e.energy;
+        s      = e.stress;
+        if (t)
+          *t = e.tangent;
+        return true;
+      }
+    energy = laws[ring].energy(l1, l2);
+    s      = laws[ring].stress(l1, l2);
+    if (t)
+      *t = laws[ring].tangent(l1, l2);
+    return true;
   }
 
   void MembraneModel::Impl::apply_boundary_values(Vector<double> &x) const
@@ -184,8 +232,8 @@ namespace cdea
     std::vector<types::global_dof_index> dofs(n);
     cell->get_dof_indices(dofs);
     fe_values.reinit(cell);
-    const GentDielectric &law = laws[cell->material_id()];
-    const double           two_pi_H = 2. * M_PI * scene.material.thickness;
+    const unsigned int ring     = cell->material_id();
+    const double       two_pi_H = 2. * M_PI * scene.material.thickness;
 
     std::vector<double> dl1(n), dl2(n), value(n), grad(n);
     std::vector<unsigned int> comp(n);
@@ -215,15 +263,17 @@ namespace cdea
         const double l1 = std::sqrt(dr * dr + dz * dz);
         const double l2 = r / R;
         const double w  = two_pi_H * R * fe_values.JxW(q);
-        if (!(l1 > 0.) || !(l2 > 0.) || !(law.gent_margin(l1, l2) > 0.))
+        double        W = 0.;
+        NominalStress s{0., 0.};
+        StressTangent t{0., 0., 0.};
+        if (!respond(ring, l1, l2, W, s, cell_matrix ? &t : nullptr))
           {
             // Outside the material's range: a non-finite residual tells the
             // line search to step back.
             cell_rhs = std::numeric_limits<double>::quiet_NaN();
             return std::numeric_limits<double>::quiet_NaN();
           }
-        energy += w * law.energy(l1, l2);
-        const NominalStress s = law.stress(l1, l2);
+        energy += w * W;
         // First variations: dl1 = (r' dr' + z' dz') / l1, dl2 = dr / R.
         for (unsigned int i = 0; i < n; ++i)
           {
@@ -233,7 +283,6 @@ namespace cdea
           }
         if (cell_matrix)
           {
-            const StressTangent t = law.tangent(l1, l2);
             // Second variation of l1: (dr'Dr' + dz'Dz')/l1 - dl1 Dl1 / l1.
             for (unsigned int i = 0; i < n; ++i)
               for (unsigned int j = 0; j < n; ++j)
@@ -270,8 +319,7 @@ namespace cdea
     constraints.set_zero(r);
   }
 
-  void MembraneModel::Impl::newton_update(const Vector<double> &x, const Vector<double> &,
-                                          Vector<double> &dx)
+  void MembraneModel::Impl::assemble_tangent(const Vector<double> &x, Vector<double> *rhs)
   {
     const unsigned int                   n = fe.n_dofs_per_cell();
     FullMatrix<double>                   cell_matrix(n, n);
@@ -279,9 +327,9 @@ namespace cdea
     std::vector<types::global_dof_index> dofs(n);
     tangent    = 0.;
     system_rhs = 0.;
-    const double   c = water_weight();
-    Vector<double> volume_gradient;
-    const double   head =
+    const double c        = water_weight();
+    free_surface_coupling = c > 0. ? c / water.tube_area : 0.;
+    const double head =
       c > 0. ? (water.water_volume - volume(x, &volume_gradient)) / water.tube_area : 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
@@ -294,22 +342,35 @@ namespace cdea
       }
     tangent.compress(VectorOperation::add);
     system_rhs(z_inner) += load.force;
+    if (rhs)
+      *rhs = system_rhs;
+    if (c > 0.)
+      constraints.set_zero(volume_gradient);
+  }
 
+  void MembraneModel::Impl::solve_tangent(const Vector<double> &rhs, Vector<double> &u)
+  {
     SolverControl                  control(1, 0.);
     TrilinosWrappers::SolverDirect direct(control);
-    dx = 0.;
-    direct.solve(tangent, dx, system_rhs);
-    if (c > 0.)
+    u.reinit(rhs.size());
+    direct.solve(tangent, u, rhs);
+    if (free_surface_coupling > 0.)
       {
         // The free surface couples every dof: the tangent is K + k g g^T with
         // g the volume gradient and k = rho g / tube area (Sherman-Morrison).
-        constraints.set_zero(volume_gradient);
-        Vector<double> u(dx.size());
-        direct.solve(tangent, u, volume_gradient);
-        const double k = c / water.tube_area;
-        dx.add(-k * (volume_gradient * dx) / (1. + k * (volume_gradient * u)), u);
+        Vector<double> v(u.size());
+        direct.solve(tangent, v, volume_gradient);
+        const double k = free_surface_coupling;
+        u.add(-k * (volume_gradient * u) / (1. + k * (volume_gradient * v)), v);
       }
-    constraints.distribute(dx);
+    constraints.distribute(u);
+  }
+
+  void MembraneModel::Impl::newton_update(const Vector<double> &x, const Vector<double> &,
+                                          Vector<double> &dx)
+  {
+    assemble_tangent(x, nullptr);
+    solve_tangent(system_rhs, dx);
   }
 
   double MembraneModel::Impl::water_weight() const
@@ -439,7 +500,6 @@ namespace cdea
     set_reference_state();
   }
 
-  MembraneModel::~MembraneModel() = default;
 
   unsigned int MembraneModel::n_dofs() const { return impl->dof_handler.n_dofs(); }
 
@@ -656,6 +716,112 @@ namespace cdea
       }
   }
 
+  // The voltage stage as r(x, t) = 0 over the model's unknowns, for
+  // arc-length continuation. Boundary values stay fixed in that stage, so the
+  // unknown vector is the whole dof vector with zero updates where constrained.
+  class MembraneModel::Continuation : public ContinuationProblem
+  {
+  public:
+    Continuation(Impl &impl, std::function<LoadState(double)> path)
+      : impl(impl)
+      , path(std::move(path))
+    {}
+
+    void residual(const Eigen::VectorXd &x, const double t, Eigen::VectorXd &r) override
+    {
+      impl.set_load(path(t));
+      Vector<double> xv(x.data(), x.data() + x.size()), rv(x.size());
+      impl.residual(xv, rv);
+      r = Eigen::Map<const Eigen::VectorXd>(rv.begin(), rv.size());
+    }
+
+    // The residual depends on t through the ring voltages squared, and they
+    // are linear in t on a segment of the path: a central difference is exact
+    // there (up to round-off).
+    void residual_t(const Eigen::VectorXd &x, const double t, Eigen::VectorXd &r_t) override
+    {
+      const double    h = 1e-4;
+      Eigen::VectorXd plus, minus;
+      residual(x, t + h, plus);
+      residual(x, t - h, minus);
+      r_t = (plus - minus) / (2. * h);
+      impl.set_load(path(t));
+    }
+
+    void factorize(const Eigen::VectorXd &x, const double t) override
+    {
+      impl.set_load(path(t));
+      const Vector<double> xv(x.data(), x.data() + x.size());
+      impl.assemble_tangent(xv, nullptr);
+    }
+
+    void solve(const Eigen::VectorXd &rhs, Eigen::VectorXd &solution) override
+    {
+      Vector<double> b(rhs.data(), rhs.data() + rhs.size()), u;
+      impl.constraints.set_zero(b);
+      impl.solve_tangent(b, u);
+      solution = Eigen::Map<const Eigen::VectorXd>(u.begin(), u.size());
+    }
+
+    // Unknowns measured in units of the disk radius, averaged over the dofs.
+    double dot(const Eigen::VectorXd &a, const Eigen::VectorXd &b) const override
+    {
+      const double a0 = impl.scene.disk_radius;
+      return a.dot(b) / (a0 * a0 * a.size());
+    }
+
+    double residual_scale() const override
+    {
+      return std::max(impl.load.force, 2. * M_PI * impl.scene.material.thickness *
+                                         impl.scene.material.shear_modulus *
+                                         impl.scene.disk_radius);
+    }
+
+    double update_scale() const override { return impl.scene.disk_radius; }
+
+    Eigen::VectorXd current() const override
+    {
+      return Eigen::Map<const Eigen::VectorXd>(impl.solution.begin(), impl.solution.size());
+    }
+
+    void set_current(const Eigen::VectorXd &x, const double t) override
+    {
+      std::copy(x.data(), x.data() + x.size(), impl.solution.begin());
+      impl.set_load(path(t));
+    }
+
+  private:
+    Impl                            &impl;
+    std::function<LoadState(double)> path;
+  };
+
+  ContinuationProblem *MembraneModel::continuation(const std::function<LoadState(double)> &path)
+  {
+    continuation_problem = std::make_unique<Continuation>(*impl, path);
+    return continuation_problem.get();
+  }
+
+  // The tangent with loads held (water coupling included), restricted to the
+  // free dofs; dense, which is cheap for the 1D meshes this code uses.
+  double MembraneModel::min_tangent_eigenvalue() const
+  {
+    const auto                 K = tangent_matrix();
+    std::vector<unsigned int>  free;
+    for (unsigned int i = 0; i < n_dofs(); ++i)
+      if (!impl->constraints.is_constrained(i))
+        free.push_back(i);
+    Eigen::MatrixXd Kf(free.size(), free.size());
+    for (unsigned int i = 0; i < free.size(); ++i)
+      for (unsigned int j = 0; j < free.size(); ++j)
+        Kf(i, j) = 0.5 * (K[free[i]][free[j]] + K[free[j]][free[i]]);
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(Kf, Eigen::EigenvaluesOnly);
+    return eigen.eigenvalues()(0);
+  }
+
+  void MembraneModel::set_relaxed(const bool relaxed) { impl->relaxed = relaxed; }
+
+  bool MembraneModel::relaxed() const { return impl->relaxed; }
+
   void MembraneModel::predict(const std::vector<double> &older, const double factor)
   {
     const unsigned int offset = 5 + impl->scene.n_rings();
@@ -714,6 +880,30 @@ namespace cdea
                                 update_values | update_gradients | update_quadrature_points);
     std::vector<double> local(impl->fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> dofs(local.size());
+    // Where the plain hoop stress is negative the relaxed law is wrinkled:
+    // record the zone, and whether the relaxed law is still admissible there
+    // (elliptic, natural width found).
+    const auto note_wrinkled = [&](const PointState &p, const unsigned int ring) {
+      if (!impl->relaxed || !(p.s.s2 < 0.))
+        return;
+      const RelaxedEvaluation e = impl->relaxed_laws[ring].evaluate(p.l1, p.l2);
+      s.wrinkled_zone_inner =
+        std::isnan(s.wrinkled_zone_inner) ? p.R : std::min(s.wrinkled_zone_inner, p.R);
+      s.wrinkled_zone_outer =
+        std::isnan(s.wrinkled_zone_outer) ? p.R : std::max(s.wrinkled_zone_outer, p.R);
+      if (s.validity_limit.empty() && (e.state == TensionState::failed || e.loses_ellipticity))
+        {
+          std::ostringstream m;
+          m << "the relaxed (tension-field) law "
+            << (e.state == TensionState::failed ?
+                  "has no natural width below the Gent limit" :
+                  "loses ellipticity, ds1/dlambda1 <= 0 (pull-in)")
+            << " at r = " << impl->scene.prestretch * p.R * 1e3 << " mm (r/a = "
+            << impl->scene.prestretch * p.R / impl->scene.disk_radius << ", lambda1 = " << p.l1
+            << ", lambda2 = " << p.l2 << ", natural width " << e.natural_width << ")";
+          s.validity_limit = m.str();
+        }
+    };
     int previous_ring = -1;
     for (const auto &cell : impl->dof_handler.active_cell_iterators())
       {
@@ -731,12 +921,14 @@ namespace cdea
                 s.s2_min        = p.s.s2;
                 s.s2_min_radius = p.R;
               }
+            note_wrinkled(p, ring);
           }
         if (int(ring) != previous_ring)
           {
             fe_edge.reinit(cell);
             const PointState p    = evaluate(fe_edge, 0, local, impl->fe, law);
             s.s2_ring_inner[ring] = p.s.s2;
+            note_wrinkled(p, ring);
             if (p.s.s2 < s.s2_min)
               {
                 s.s2_min        = p.s.s2;
@@ -774,7 +966,13 @@ namespace cdea
         // of lambda1 at a ring edge shows as two samples at one radius.
         for (unsigned int k = (ring != previous_ring ? 0 : 1); k <= m; ++k)
           {
-            const PointState p = evaluate(fe_values, k, local, impl->fe, law);
+            PointState p = evaluate(fe_values, k, local, impl->fe, law);
+            if (impl->relaxed && p.s.s2 < 0.)
+              {
+                const RelaxedEvaluation e = impl->relaxed_laws[ring].evaluate(p.l1, p.l2);
+                if (e.state == TensionState::wrinkled)
+                  p.s = e.stress;
+              }
             f.R.push_back(p.R);
             f.r.push_back(p.r);
             f.z.push_back(p.z);
@@ -791,4 +989,6 @@ namespace cdea
       }
     return f;
   }
+  // Defined here, where Continuation is a complete type.
+  MembraneModel::~MembraneModel() = default;
 } // namespace cdea

@@ -237,7 +237,10 @@ namespace cdea
           const hsize_t dims[1] = {values.size()};
           space = Handle(check(H5Screate_simple(1, dims, nullptr), "H5Screate_simple"), H5Sclose);
         }
-      write_attribute(object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, space, values.data());
+      // HDF5 wants a buffer even for an empty (null) dataspace.
+      static const double nothing = 0.;
+      write_attribute(object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, space,
+                      values.empty() ? &nothing : values.data());
     }
 
     void describe(const hid_t object, const std::string &unit, const std::string &description) const
@@ -649,6 +652,30 @@ namespace cdea
                                   "': empty summary attribute name");
     ErrorPrintingOff quiet;
     impl->write_double_array_attribute(impl->summary, name, values);
+    impl->flush();
+  }
+
+  void ResultsFile::set_summary_attribute(const std::string         &name,
+                                          const std::vector<double> &values,
+                                          const unsigned int         rows,
+                                          const unsigned int         columns)
+  {
+    if (!impl)
+      throw std::logic_error("ResultsFile: set_summary_attribute() on a moved-from object");
+    if (name.empty() || std::size_t(rows) * columns != values.size())
+      throw std::invalid_argument("ResultsFile '" + impl->file_path + "': summary attribute '" +
+                                  name + "' needs rows x columns values");
+    ErrorPrintingOff quiet;
+    if (rows == 0)
+      impl->write_double_array_attribute(impl->summary, name, values);
+    else
+      {
+        const hsize_t dims[2] = {rows, columns};
+        Handle        space(impl->check(H5Screate_simple(2, dims, nullptr), "H5Screate_simple"),
+                            H5Sclose);
+        impl->write_attribute(impl->summary, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, space,
+                              values.data());
+      }
     impl->flush();
   }
 

@@ -27,6 +27,7 @@ namespace cdea
     std::string kv(const std::vector<double> &volts)
     {
       std::ostringstream o;
+      o.precision(8);
       for (std::size_t i = 0; i < volts.size(); ++i)
         o << (i ? ", " : "") << volts[i] * 1e-3;
       return o.str() + " kV";
@@ -199,7 +200,39 @@ namespace cdea
   {
     const std::vector<double> state1 = model.state();
 
-    // A state outside the model's validity: bisect for the boundary, report
+    if (stage != Stage::prestretch && !result.onset.found && summary0.s2_min >= 0. &&
+        summary1.s2_min < 0.)
+      {
+        StepSummary  at_root;
+        unsigned int iterations = 0;
+        const double t =
+          locate_root(stage, t0, state0, summary0.s2_min, t1, summary1.s2_min,
+                      [](const StepSummary &s) { return s.s2_min; }, at_root, iterations);
+        result.onset = {true, load(stage, t).voltages, scene.prestretch * at_root.s2_min_radius,
+                        t};
+        if (on_onset)
+          on_onset(result.onset);
+        report(at_root, stage, t, iterations);
+        model.set_state(state1);
+      }
+
+    const double E_b = settings.breakdown_field;
+    if (E_b > 0. && !result.breakdown.found && summary0.max_field < E_b &&
+        summary1.max_field >= E_b)
+      {
+        StepSummary  at_root;
+        unsigned int iterations = 0;
+        const auto   margin     = [E_b](const StepSummary &s) { return E_b - s.max_field; };
+        const double t = locate_root(stage, t0, state0, margin(summary0), t1, margin(summary1),
+                                     margin, at_root, iterations);
+        result.breakdown = {true, load(stage, t).voltages,
+                            scene.prestretch * at_root.max_field_radius, t};
+        if (on_breakdown)
+          on_breakdown(result.breakdown);
+        report(at_root, stage, t, iterations);
+        model.set_state(state1);
+      }
+    // Then a state outside the model's validity: bisect for the boundary, report
     // it and end the run there.
     if (!summary1.validity_limit.empty())
       {
@@ -239,38 +272,6 @@ namespace cdea
         return false;
       }
 
-    if (stage != Stage::prestretch && !result.onset.found && summary0.s2_min >= 0. &&
-        summary1.s2_min < 0.)
-      {
-        StepSummary  at_root;
-        unsigned int iterations = 0;
-        const double t =
-          locate_root(stage, t0, state0, summary0.s2_min, t1, summary1.s2_min,
-                      [](const StepSummary &s) { return s.s2_min; }, at_root, iterations);
-        result.onset = {true, load(stage, t).voltages, scene.prestretch * at_root.s2_min_radius,
-                        t};
-        if (on_onset)
-          on_onset(result.onset);
-        report(at_root, stage, t, iterations);
-        model.set_state(state1);
-      }
-
-    const double E_b = settings.breakdown_field;
-    if (E_b > 0. && !result.breakdown.found && summary0.max_field < E_b &&
-        summary1.max_field >= E_b)
-      {
-        StepSummary  at_root;
-        unsigned int iterations = 0;
-        const auto   margin     = [E_b](const StepSummary &s) { return E_b - s.max_field; };
-        const double t = locate_root(stage, t0, state0, margin(summary0), t1, margin(summary1),
-                                     margin, at_root, iterations);
-        result.breakdown = {true, load(stage, t).voltages,
-                            scene.prestretch * at_root.max_field_radius, t};
-        if (on_breakdown)
-          on_breakdown(result.breakdown);
-        report(at_root, stage, t, iterations);
-        model.set_state(state1);
-      }
     return true;
   }
 

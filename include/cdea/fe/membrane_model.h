@@ -66,6 +66,13 @@ namespace cdea
     std::vector<double> state() const override;
     void                set_state(const std::vector<double> &state) override;
     void predict(const std::vector<double> &older_state, double factor) override;
+    ContinuationProblem *continuation(const std::function<LoadState(double)> &path) override;
+    double               min_tangent_eigenvalue() const override;
+
+    /// Tension-field relaxation where the hoop stress would be negative
+    /// (Wrinkling/Model = relaxed); off: the plain law everywhere.
+    void set_relaxed(bool relaxed);
+    bool relaxed() const;
 
     /// pi int_A^B r^2 (-z') dR by Gauss quadrature exact for the FE solution.
     double enclosed_volume() const override;
@@ -104,6 +111,8 @@ namespace cdea
 
   private:
     class Impl;
-    std::unique_ptr<Impl> impl;
+    class Continuation;
+    std::unique_ptr<Impl>         impl;
+    std::unique_ptr<Continuation> continuation_problem;
   };
 } // namespace cdea

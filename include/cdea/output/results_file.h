@@ -89,6 +89,13 @@ namespace cdea
     void set_summary_attribute(const std::string         &name,
                                const std::vector<double> &values);
 
+    /// The same as a rows x columns attribute (@p values row by row; with
+    /// rows == 0, an empty attribute).
+    void set_summary_attribute(const std::string         &name,
+                               const std::vector<double> &values,
+                               unsigned int               rows,
+                               unsigned int               columns);
+
     /// Number of steps appended so far (= rows of /summary).
     unsigned int n_steps() const;
     unsigned int n_rings() const;
