@@ -13,6 +13,8 @@
 #include "check.h"
 #include "scenes.h"
 
+#include <Eigen/Eigenvalues>
+
 #include <cmath>
 #include <iostream>
 
@@ -54,6 +56,7 @@ int main(int argc, char **argv)
   SteppingSettings arc;
   arc.arc_length       = true;
   arc.max_displacement = 0.040; // stop on the unstable branch, past the fold
+  arc.stability_check  = true;
   MembraneModel fe(scene, discretization(4, 16), NewtonSettings());
   const Trace   t = run(fe, scene, arc);
   check(t.result.completed && t.result.end.find("displacement") != std::string::npos,
@@ -109,6 +112,30 @@ int main(int argc, char **argv)
     }
   check(all_stable_before && last_before > 0., "every state before the fold is stable");
   check(first_after < 0., "the state after the fold is unstable (min eigenvalue < 0)");
+
+  // The banded LAPACK eigenvalue against a dense solve of the same tangent.
+  {
+    const auto                K = fe.tangent_matrix();
+    std::vector<unsigned int> free;
+    const auto                support = fe.dof_support();
+    const double              A = scene.inner_reference_radius(), B = scene.outer_reference_radius();
+    for (unsigned int i = 0; i < K.size(); ++i)
+      {
+        const bool at_A = std::abs(support[i].first - A) < 1e-12 * B;
+        const bool at_B = std::abs(support[i].first - B) < 1e-12 * B;
+        // Constrained: r at both ends, z at the frame.
+        if (!((at_A && support[i].second == 0) || at_B))
+          free.push_back(i);
+      }
+    Eigen::MatrixXd Kf(free.size(), free.size());
+    for (unsigned int i = 0; i < free.size(); ++i)
+      for (unsigned int j = 0; j < free.size(); ++j)
+        Kf(i, j) = 0.5 * (K[free[i]][free[j]] + K[free[j]][free[i]]);
+    const double dense =
+      Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Kf, Eigen::EigenvaluesOnly).eigenvalues()(0);
+    check_rel(fe.min_tangent_eigenvalue(), dense, 1e-9,
+              "smallest eigenvalue: banded LAPACK vs dense Eigen");
+  }
 
   std::cout << "Load stepping stops at the fold, arc length goes on\n";
   {

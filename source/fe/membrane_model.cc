@@ -31,6 +31,13 @@
 #include <sstream>
 #include <stdexcept>
 
+// LAPACK: selected eigenvalues of a symmetric band matrix.
+extern "C" void dsbevx_(const char *jobz, const char *range, const char *uplo, const int *n,
+                        const int *kd, double *ab, const int *ldab, double *q, const int *ldq,
+                        const double *vl, const double *vu, const int *il, const int *iu,
+                        const double *abstol, int *m, double *w, double *z, const int *ldz,
+                        double *work, int *iwork, int *ifail, int *info);
+
 namespace cdea
 {
   using namespace dealii;
@@ -802,20 +809,52 @@ namespace cdea
   }
 
   // The tangent with loads held (water coupling included), restricted to the
-  // free dofs; dense, which is cheap for the 1D meshes this code uses.
+  // free dofs. Without water the matrix is banded (1D mesh, cell-wise dof
+  // numbering) and LAPACK's dsbevx gives just the smallest eigenvalue in
+  // O(n kd^2); the water's free surface couples every dof, and then the dense
+  // symmetric solver is used.
   double MembraneModel::min_tangent_eigenvalue() const
   {
-    const auto                 K = tangent_matrix();
-    std::vector<unsigned int>  free;
+    const auto                K = tangent_matrix();
+    std::vector<unsigned int> free;
     for (unsigned int i = 0; i < n_dofs(); ++i)
       if (!impl->constraints.is_constrained(i))
         free.push_back(i);
-    Eigen::MatrixXd Kf(free.size(), free.size());
-    for (unsigned int i = 0; i < free.size(); ++i)
-      for (unsigned int j = 0; j < free.size(); ++j)
-        Kf(i, j) = 0.5 * (K[free[i]][free[j]] + K[free[j]][free[i]]);
-    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(Kf, Eigen::EigenvaluesOnly);
-    return eigen.eigenvalues()(0);
+    const int n = free.size();
+    const auto entry = [&](const int i, const int j) {
+      return 0.5 * (K[free[i]][free[j]] + K[free[j]][free[i]]);
+    };
+    if (impl->water_weight() > 0.)
+      {
+        Eigen::MatrixXd Kf(n, n);
+        for (int i = 0; i < n; ++i)
+          for (int j = 0; j < n; ++j)
+            Kf(i, j) = entry(i, j);
+        return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Kf, Eigen::EigenvaluesOnly)
+          .eigenvalues()(0);
+      }
+    int kd = 0;
+    for (int i = 0; i < n; ++i)
+      for (int j = i + 1; j < n; ++j)
+        if (entry(i, j) != 0.)
+          kd = std::max(kd, j - i);
+    // Upper band storage: ab(kd + i - j, j) = K(i, j), column-major, ldab = kd + 1.
+    const int           ldab = kd + 1;
+    std::vector<double> ab(ldab * n, 0.);
+    for (int j = 0; j < n; ++j)
+      for (int i = std::max(0, j - kd); i <= j; ++i)
+        ab[(kd + i - j) + j * ldab] = entry(i, j);
+    const char          jobz = 'N', range = 'I', uplo = 'U';
+    const int           il = 1, iu = 1, ldq = 1, ldz = 1;
+    const double        vl = 0., vu = 0., abstol = 0.;
+    int                 found = 0, info = 0;
+    double              q = 0., z = 0., w_min = 0.;
+    std::vector<double> w(n), work(7 * n);
+    std::vector<int>    iwork(5 * n), ifail(n);
+    dsbevx_(&jobz, &range, &uplo, &n, &kd, ab.data(), &ldab, &q, &ldq, &vl, &vu, &il, &iu,
+            &abstol, &found, w.data(), &z, &ldz, work.data(), iwork.data(), ifail.data(), &info);
+    w_min = w[0];
+    return info == 0 && found == 1 ? w_min : std::numeric_limits<double>::quiet_NaN();
   }
 
   void MembraneModel::set_relaxed(const bool relaxed) { impl->relaxed = relaxed; }

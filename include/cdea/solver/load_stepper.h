@@ -34,7 +34,7 @@ namespace cdea
     bool         arc_length            = false;  ///< voltage stage by arc-length continuation
     unsigned int max_arc_length_steps  = 400;
     double       max_displacement      = 0.;     ///< m; arc length stops beyond it (0: none)
-    bool         stability_check       = true;   ///< min_eigenvalue at every step
+    bool         stability_check       = false;  ///< min_eigenvalue at every step (cdea run: on)
     double       breakdown_field       = 0.;     ///< V/m (0: off)
     double       residual_tolerance    = 1e-10;  ///< of the arc-length corrector
     double       update_tolerance      = 1e-10;
