@@ -11,6 +11,7 @@
 #include <cdea/shooting/shooting_model.h>
 
 #include "check.h"
+#include "fe_checks.h"
 #include "scenes.h"
 
 #include <Eigen/Eigenvalues>
@@ -23,14 +24,6 @@ using namespace cdea_test;
 
 namespace
 {
-  FeDiscretization discretization(unsigned int degree, unsigned int elements)
-  {
-    FeDiscretization d;
-    d.degree            = degree;
-    d.elements_per_ring = elements;
-    return d;
-  }
-
   struct Trace
   {
     RunResult                result;
@@ -172,28 +165,7 @@ int main(int argc, char **argv)
     const StepSummary s = model.summary();
     check(s.wrinkled_zone_inner > 0. && s.wrinkled_zone_outer > s.wrinkled_zone_inner,
           "a wrinkled zone of finite width next to the disk");
-    const auto   x0 = model.solution();
-    const auto   K  = model.tangent_matrix();
-    const auto   r0 = model.residual_vector();
-    double       worst = 0., scale = 0.;
-    for (const auto &row : K)
-      for (const double k : row)
-        scale = std::max(scale, std::abs(k));
-    for (unsigned int j = 0; j < x0.size(); ++j)
-      {
-        const double h  = 1e-8 * (1e-3 + std::abs(x0[j]));
-        auto         xp = x0, xm = x0;
-        xp[j] += h;
-        xm[j] -= h;
-        model.set_solution(xp);
-        const auto rp = model.residual_vector();
-        model.set_solution(xm);
-        const auto rm = model.residual_vector();
-        for (unsigned int i = 0; i < x0.size(); ++i)
-          worst = std::max(worst, std::abs((rp[i] - rm[i]) / (2 * h) - K[i][j]));
-      }
-    model.set_solution(x0);
-    check_close(worst / scale, 0., 1e-5, "relaxed FE tangent vs differences of the residual");
+    check_derivatives(model, "relaxed FE, wrinkled state", true, 1e-8, 1e-5);
     check(!s.validity_limit.empty() &&
             s.validity_limit.find("ellipticity") != std::string::npos,
           "the wrinkled state is flagged: relaxed law not elliptic there");

@@ -10,6 +10,7 @@
 #include <cdea/fe/membrane_model.h>
 
 #include "check.h"
+#include "fe_checks.h"
 #include "scenes.h"
 
 #include <algorithm>
@@ -21,56 +22,11 @@ using namespace cdea_test;
 
 namespace
 {
-  FeDiscretization discretization(const unsigned int degree, const unsigned int elements,
-                                  const unsigned int refinements = 0,
-                                  const unsigned int samples     = 4)
-  {
-    FeDiscretization d;
-    d.degree              = degree;
-    d.elements_per_ring   = elements;
-    d.refinements         = refinements;
-    d.samples_per_element = samples;
-    return d;
-  }
-
   WaterLoad paper_water()
   {
     WaterLoad w;
     w.enabled = true; // 150 ml, 1000 kg/m^3, 9.81 m/s^2, 20 mm x 20 mm tube
     return w;
-  }
-
-  /// As in test_fe_model: tangent vs differences of the residual, residual vs
-  /// differences of the energy, at the model's current state and load.
-  void check_derivatives(MembraneModel &model, const std::string &where)
-  {
-    const std::vector<double> x0 = model.solution();
-    const auto                K  = model.tangent_matrix();
-    const auto                r0 = model.residual_vector();
-    double worst_K = 0., worst_r = 0., K_scale = 0., r_scale = 0.;
-    for (const auto &row : K)
-      for (const double k : row)
-        K_scale = std::max(K_scale, std::abs(k));
-    for (unsigned int j = 0; j < x0.size(); ++j)
-      {
-        const double h  = 1e-7 * (1e-3 + std::abs(x0[j]));
-        auto         xp = x0, xm = x0;
-        xp[j] += h;
-        xm[j] -= h;
-        model.set_solution(xp);
-        const auto   rp = model.residual_vector();
-        const double ep = model.energy();
-        model.set_solution(xm);
-        const auto   rm = model.residual_vector();
-        const double em = model.energy();
-        for (unsigned int i = 0; i < x0.size(); ++i)
-          worst_K = std::max(worst_K, std::abs((rp[i] - rm[i]) / (2 * h) - K[i][j]));
-        worst_r = std::max(worst_r, std::abs((ep - em) / (2 * h) - r0[j]));
-        r_scale = std::max(r_scale, std::abs(r0[j]) + K_scale * 1e-3);
-      }
-    model.set_solution(x0);
-    check_close(worst_K / K_scale, 0., 1e-6, where + ": tangent vs differences of the residual");
-    check_close(worst_r / r_scale, 0., 1e-6, where + ": residual vs differences of the energy");
   }
 
   /// Largest entry of the water's share of the tangent at the current state
