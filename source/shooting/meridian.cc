@@ -21,7 +21,7 @@ namespace cdea::shooting
     }
 
     /// Append one sample (x = R/A, y in units of A) to @p f.
-    void push_sample(StepFields &f, const GentDielectric &law, const int ring,
+    void push_sample(StepFields &f, const ShootingLaw &law, const int ring,
                      const double A, const double x, const State &y)
     {
       const double l1 = y[3];
@@ -57,8 +57,14 @@ namespace cdea::shooting
   }
 
   std::optional<double> solve_lambda1(const GentDielectric &law, const double l2,
-                                      const double target, double guess,
+                                      const double target, const double guess,
                                       std::string *why)
+  {
+    return solve_lambda1(ShootingLaw(law, false), l2, target, guess, why);
+  }
+
+  std::optional<double> solve_lambda1(const ShootingLaw &law, const double l2,
+                                      const double target, double guess, std::string *why)
   {
     const auto [l_lo, l_hi] = gent_lambda1_range(law.constants().jlim, l2);
     if (!(l_lo > 0.) || !(l_hi > l_lo))
@@ -169,11 +175,12 @@ namespace cdea::shooting
     edges.front() = 1.;
   }
 
-  std::vector<GentDielectric> MeridianIntegrator::laws(const MeridianLoad &load) const
+  std::vector<ShootingLaw> MeridianIntegrator::laws(const MeridianLoad &load) const
   {
-    std::vector<GentDielectric> result;
+    std::vector<ShootingLaw> result;
     for (unsigned int k = 0; k < sc.n_rings(); ++k)
-      result.emplace_back(sc.material, load.voltages.empty() ? 0. : load.voltages[k]);
+      result.emplace_back(
+        GentDielectric(sc.material, load.voltages.empty() ? 0. : load.voltages[k]), opts.relaxed);
     return result;
   }
 
@@ -213,8 +220,10 @@ namespace cdea::shooting
     // 2 pi A H s1 sin(theta0) = F.
     const double target =
       load.force / (2. * pi * A * sc.material.thickness * std::sin(theta0));
-    const GentDielectric law(sc.material, load.voltages.empty() ? 0. : load.voltages[0]);
-    std::string          reason;
+    const ShootingLaw law(GentDielectric(sc.material,
+                                         load.voltages.empty() ? 0. : load.voltages[0]),
+                          opts.relaxed);
+    std::string       reason;
     const auto l1 = solve_lambda1(law, load.stretch, target,
                                   guess > 0. ? guess : load.stretch, &reason);
     if (!l1)
@@ -359,7 +368,7 @@ namespace cdea::shooting
             fail_x = x0;
             return failed("the Gent limit was reached (g <= 0)");
           }
-        const double s2_in = law[ring].stress(y[3], y[0] / x0).s2;
+        const double s2_in = law[ring].plain_stress(y[3], y[0] / x0).s2;
         p.s2_ring_inner.push_back(s2_in);
         note_s2(s2_in, x0);
 
@@ -374,7 +383,7 @@ namespace cdea::shooting
 
         const auto observe = [&](const Integrator::DenseStep &step, const double x,
                                  const State &ye) {
-          note_s2(law[ring].stress(ye[3], ye[0] / x).s2, x);
+          note_s2(law[ring].plain_stress(ye[3], ye[0] / x).s2, x);
           if (!with_samples)
             return;
           while (next < m - 1 && sample(next) <= x)
@@ -382,7 +391,7 @@ namespace cdea::shooting
               const double xs = sample(next);
               const State  ys = step(xs);
               push_sample(p.samples, law[ring], ring, A, xs, ys);
-              note_s2(p.samples.s2.back(), xs);
+              note_s2(law[ring].plain_stress(ys[3], ys[0] / xs).s2, xs);
               ++next;
             }
         };

@@ -20,6 +20,7 @@
 // scaled by A, so the error control sees numbers of order one.
 
 #include <cdea/material/gent_dielectric.h>
+#include <cdea/material/tension_field.h>
 #include <cdea/output/records.h>
 #include <cdea/scene.h>
 #include <cdea/shooting/options.h>
@@ -66,6 +67,49 @@ namespace cdea::shooting
   /// a bracket is grown around the guess inside the Gent domain (where s1 runs
   /// from -inf to +inf), then safeguarded Newton. The root must have
   /// ds1/dl1 > 0; otherwise, or without a bracket, nullopt and @p why is set.
+  /// The law the integrator uses at a point: the plain Gent dielectric, or its
+  /// tension-field relaxation. The plain hoop stress stays available: it
+  /// defines the loss of tension in both cases.
+  class ShootingLaw
+  {
+  public:
+    ShootingLaw(const GentDielectric &law, const bool relaxed)
+      : plain(law)
+      , relaxation(law)
+      , relaxed(relaxed)
+    {}
+    NominalStress stress(const double l1, const double l2) const
+    {
+      return relaxed ? relaxation.evaluate(l1, l2).stress : plain.stress(l1, l2);
+    }
+    StressTangent tangent(const double l1, const double l2) const
+    {
+      return relaxed ? relaxation.evaluate(l1, l2).tangent : plain.tangent(l1, l2);
+    }
+    NominalStress plain_stress(const double l1, const double l2) const
+    {
+      return plain.stress(l1, l2);
+    }
+    double gent_margin(const double l1, const double l2) const
+    {
+      return plain.gent_margin(l1, l2);
+    }
+    double electric_field(const double l1, const double l2) const
+    {
+      return plain.electric_field(l1, l2);
+    }
+    double                   voltage() const { return plain.voltage(); }
+    const MaterialConstants &constants() const { return plain.constants(); }
+
+  private:
+    GentDielectric                         plain;
+    TensionFieldRelaxation<GentDielectric> relaxation;
+    bool                                   relaxed;
+  };
+
+  std::optional<double> solve_lambda1(const ShootingLaw &law, double lambda2, double target,
+                                      double guess, std::string *why = nullptr);
+
   std::optional<double> solve_lambda1(const GentDielectric &law, double lambda2,
                                       double target, double guess,
                                       std::string *why = nullptr);
@@ -109,7 +153,7 @@ namespace cdea::shooting
     double              A;     ///< inner reference radius (m): the length unit
     std::vector<double> edges; ///< ring edges R_v / A, n+1 values from 1 to B/A
 
-    std::vector<GentDielectric> laws(const MeridianLoad &load) const;
+    std::vector<ShootingLaw> laws(const MeridianLoad &load) const;
     std::string check_load(const MeridianLoad &load) const;
   };
 } // namespace cdea::shooting

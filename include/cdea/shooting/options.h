@@ -19,6 +19,9 @@ namespace cdea::shooting
     unsigned int samples_per_ring = 100;
     /// Largest number of accepted + rejected Runge-Kutta steps per ring.
     unsigned int max_steps_per_ring = 100000;
+    /// Tension-field (relaxed) membrane law where the hoop stress would be
+    /// negative, as Wrinkling/Model = relaxed in the FE model.
+    bool relaxed = false;
 
     double effective_absolute_tolerance() const
     {
