@@ -73,7 +73,8 @@ int main(int argc, char **argv)
   for (int k = 0; k < runs; ++k)
     {
       const auto    start = std::chrono::steady_clock::now();
-      MembraneModel model(scene, fe_discretization(p), newton_settings(p));
+      const auto    model_ptr = make_fe_model(p, scene);
+      MembraneModel &model    = *model_ptr;
       LoadStepper   stepper(scene, model, stepping_settings(p));
       // Collect what a run reports (summary and fields), without file output.
       std::size_t samples = 0;

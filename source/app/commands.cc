@@ -78,6 +78,17 @@ namespace cdea
     return n;
   }
 
+  std::unique_ptr<MembraneModel> make_fe_model(const Parameters &p, const Scene &scene)
+  {
+    auto model = std::make_unique<MembraneModel>(scene, fe_discretization(p), newton_settings(p));
+    model->set_linear_solver(p.solver.linear_solver == "Trilinos KLU" ?
+                               LinearSolver::trilinos_klu :
+                               LinearSolver::banded_lu);
+    model->set_relaxed(p.wrinkling.model == "relaxed");
+    model->set_water_load(water_load(p));
+    return model;
+  }
+
   namespace
   {
     /// Prints one table row per converged step and writes it to the file,
@@ -400,9 +411,8 @@ namespace cdea
     if (!in)
       return exit_input_error;
     const Parameters &p = in->parameters;
-    MembraneModel     model(in->scene, fe_discretization(p), newton_settings(p));
-    model.set_water_load(water_load(p));
-    model.set_relaxed(p.wrinkling.model == "relaxed");
+    const auto        model_ptr = make_fe_model(p, in->scene);
+    MembraneModel    &model     = *model_ptr;
     std::cout << "FE model: " << model.n_elements() << " elements of degree "
               << p.discretization.polynomial_degree << ", " << model.n_dofs() << " unknowns\n";
     if (p.reservoir.water_load)
@@ -437,7 +447,8 @@ namespace cdea
     input.parameters              = with_load_stepping(in->parameters, "compare");
     const Parameters       &p     = input.parameters;
     const Scene            &scene = input.scene;
-    MembraneModel           fe(scene, fe_discretization(p), newton_settings(p));
+    const auto              fe_ptr = make_fe_model(p, scene);
+    MembraneModel          &fe     = *fe_ptr;
     shooting::ShootingModel sh(scene, shooting_options(p));
     const QuietRun          a = quiet_run(fe, input);
     const QuietRun          b = quiet_run(sh, input);

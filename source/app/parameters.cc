@@ -104,9 +104,9 @@ namespace cdea
     void Discretization::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Discretization");
-      prm.declare_entry("Polynomial degree", "3", Integer(1, 8),
+      prm.declare_entry("Polynomial degree", "4", Integer(1, 8),
                         "Degree p of the FE_Q elements for r(R) and z(R).");
-      prm.declare_entry("Elements per ring", "8", Integer(1, 100000),
+      prm.declare_entry("Elements per ring", "4", Integer(1, 100000),
                         "Elements in every electrode ring before global refinement; element "
                         "boundaries always lie on the ring edges.");
       prm.declare_entry("Grading", "4", Double(1., 1000.),
@@ -159,6 +159,11 @@ namespace cdea
                         "parameter and stops at a fold; 'arc length' (pseudo-arclength with a "
                         "bordered Newton corrector) follows the curve through folds and locates "
                         "every limit point.");
+      prm.declare_entry("Linear solver", "banded LU",
+                        dealii::Patterns::Selection("banded LU|Trilinos KLU"),
+                        "Direct solver of the tangent systems: LAPACK's banded LU, factored "
+                        "once per assembly (fast for these 1D meshes), or Trilinos' sparse "
+                        "KLU through deal.II.");
       prm.declare_entry("Max arc-length steps", "400", Integer(1, 1000000),
                         "Arc-length continuation ends after this many steps ...");
       prm.declare_entry("Max displacement (mm)", "60", Double(0.),
@@ -185,6 +190,7 @@ namespace cdea
       min_voltage_increment_kV = prm.get_double("Min voltage increment (kV)");
       max_cutbacks             = prm.get_integer("Max cutbacks");
       continuation             = prm.get("Continuation");
+      linear_solver            = prm.get("Linear solver");
       max_arc_length_steps     = prm.get_integer("Max arc-length steps");
       max_displacement_mm      = prm.get_double("Max displacement (mm)");
       stability_check          = prm.get_bool("Stability check");

@@ -13,6 +13,8 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -31,6 +33,12 @@
 #include <sstream>
 #include <stdexcept>
 
+// LAPACK: LU factorization of a general band matrix and solves with it.
+extern "C" void dgbtrf_(const int *m, const int *n, const int *kl, const int *ku, double *ab,
+                        const int *ldab, int *ipiv, int *info);
+extern "C" void dgbtrs_(const char *trans, const int *n, const int *kl, const int *ku,
+                        const int *nrhs, const double *ab, const int *ldab, const int *ipiv,
+                        double *b, const int *ldb, int *info);
 // LAPACK: selected eigenvalues of a symmetric band matrix.
 extern "C" void dsbevx_(const char *jobz, const char *range, const char *uplo, const int *n,
                         const int *kd, double *ab, const int *ldab, double *q, const int *ldq,
@@ -82,10 +90,25 @@ namespace cdea
     DoFHandler<1>                  dof_handler;
     QGauss<1>                      quadrature;
     AffineConstraints<double>      constraints; ///< homogeneous: Newton updates
-    TrilinosWrappers::SparseMatrix tangent;
+    SparsityPattern                sparsity;
+    SparseMatrix<double>           tangent; ///< with the constraints applied
+    /// Linear solver of the Newton and arc-length systems.
+    LinearSolver                   linear_solver = LinearSolver::banded_lu;
+    int                            bandwidth     = 0; ///< max |i - j| of a tangent entry
+    std::vector<double>            band_lu;           ///< LAPACK band LU of the tangent
+    std::vector<int>               pivots;
+    bool                           factorized = false;
+    TrilinosWrappers::SparseMatrix trilinos_tangent; ///< copy for Trilinos KLU
+    /// Factor the assembled tangent (banded LU), or copy it for Trilinos;
+    /// false if it is singular.
+    bool factorize();
+    /// u = tangent^-1 b with the factorization; false if that failed.
+    bool apply_inverse(const Vector<double> &b, Vector<double> &u);
     Vector<double>                 system_rhs;
     Vector<double>                 solution;
     FEValues<1>                    fe_values; ///< at the assembly quadrature, reused
+    Quadrature<1>                  edge_point; ///< the left end of a cell
+    mutable FEValues<1>            fe_edge;    ///< at edge_point (ring inner edges), reused
 
     unsigned int r_inner, z_inner, r_outer, z_outer; ///< boundary dofs
 
@@ -147,6 +170,8 @@ namespace cdea
     , quadrature(disc_in.degree + 1)
     , fe_values(fe, quadrature,
                 update_values | update_gradients | update_quadrature_points | update_JxW_values)
+    , edge_point(Point<1>(0.))
+    , fe_edge(fe, edge_point, update_values | update_gradients | update_quadrature_points)
     , volume_quadrature(2 * disc_in.degree)
     , fe_volume(fe, volume_quadrature,
                 update_values | update_gradients | update_quadrature_points | update_JxW_values)
@@ -180,7 +205,11 @@ namespace cdea
     for (const unsigned int dof : {r_inner, r_outer, z_outer})
       constraints.add_line(dof);
     constraints.close();
-    tangent.reinit(dsp);
+    sparsity.copy_from(dsp);
+    tangent.reinit(sparsity);
+    for (unsigned int i = 0; i < sparsity.n_rows(); ++i)
+      for (auto entry = sparsity.begin(i); entry != sparsity.end(i); ++entry)
+        bandwidth = std::max<int>(bandwidth, std::abs(int(entry->column()) - int(i)));
 
     solution.reinit(dof_handler.n_dofs());
     system_rhs.reinit(dof_handler.n_dofs());
@@ -347,26 +376,84 @@ namespace cdea
         cell->get_dof_indices(dofs);
         constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs, tangent, system_rhs);
       }
-    tangent.compress(VectorOperation::add);
     system_rhs(z_inner) += load.force;
     if (rhs)
       *rhs = system_rhs;
     if (c > 0.)
       constraints.set_zero(volume_gradient);
+    factorized = factorize();
+  }
+
+  // Band storage for dgbtrf: ab(kl + ku + i - j, j) = K(i, j) with kl = ku =
+  // bandwidth and ldab = 2 kl + ku + 1 (the extra kl rows take the fill-in of
+  // the row pivoting).
+  bool MembraneModel::Impl::factorize()
+  {
+    if (linear_solver == LinearSolver::trilinos_klu)
+      {
+        trilinos_tangent.reinit(tangent);
+        return true;
+      }
+    const int n = tangent.m(), kl = bandwidth, ku = bandwidth, ldab = 2 * kl + ku + 1;
+    band_lu.assign(std::size_t(ldab) * n, 0.);
+    pivots.resize(n);
+    for (int i = 0; i < n; ++i)
+      for (auto entry = tangent.begin(i); entry != tangent.end(i); ++entry)
+        {
+          const int j = entry->column();
+          band_lu[(kl + ku + i - j) + std::size_t(j) * ldab] = entry->value();
+        }
+    int info = 0;
+    dgbtrf_(&n, &n, &kl, &ku, band_lu.data(), &ldab, pivots.data(), &info);
+    return info == 0;
+  }
+
+  bool MembraneModel::Impl::apply_inverse(const Vector<double> &b, Vector<double> &u)
+  {
+    if (!factorized)
+      return false;
+    u = b;
+    if (linear_solver == LinearSolver::trilinos_klu)
+      {
+        try
+          {
+            SolverControl                  control(1, 0.);
+            TrilinosWrappers::SolverDirect direct(control);
+            direct.solve(trilinos_tangent, u, b);
+          }
+        catch (const std::exception &)
+          {
+            // KLU refuses a singular tangent.
+            return false;
+          }
+        return true;
+      }
+    const int  n = tangent.m(), kl = bandwidth, ku = bandwidth, ldab = 2 * kl + ku + 1;
+    const int  nrhs = 1;
+    const char trans = 'N';
+    int        info  = 0;
+    dgbtrs_(&trans, &n, &kl, &ku, &nrhs, band_lu.data(), &ldab, pivots.data(), u.begin(), &n,
+            &info);
+    return info == 0;
   }
 
   void MembraneModel::Impl::solve_tangent(const Vector<double> &rhs, Vector<double> &u)
   {
-    SolverControl                  control(1, 0.);
-    TrilinosWrappers::SolverDirect direct(control);
     u.reinit(rhs.size());
-    direct.solve(tangent, u, rhs);
+    Vector<double> v(rhs.size());
+    // The free surface couples every dof: the tangent is K + k g g^T with g
+    // the volume gradient and k = rho g / tube area (Sherman-Morrison).
+    if (!apply_inverse(rhs, u) ||
+        (free_surface_coupling > 0. && !apply_inverse(volume_gradient, v)))
+      {
+        // A singular tangent: a non-finite update makes Newton and the
+        // arc-length corrector report a failed step, which the driver cuts
+        // back or reports.
+        u = std::numeric_limits<double>::quiet_NaN();
+        return;
+      }
     if (free_surface_coupling > 0.)
       {
-        // The free surface couples every dof: the tangent is K + k g g^T with
-        // g the volume gradient and k = rho g / tube area (Sherman-Morrison).
-        Vector<double> v(u.size());
-        direct.solve(tangent, v, volume_gradient);
         const double k = free_surface_coupling;
         u.add(-k * (volume_gradient * u) / (1. + k * (volume_gradient * v)), v);
       }
@@ -859,6 +946,11 @@ namespace cdea
 
   void MembraneModel::set_relaxed(const bool relaxed) { impl->relaxed = relaxed; }
 
+  void MembraneModel::set_linear_solver(const LinearSolver solver)
+  {
+    impl->linear_solver = solver;
+  }
+
   bool MembraneModel::relaxed() const { return impl->relaxed; }
 
   void MembraneModel::predict(const std::vector<double> &older, const double factor)
@@ -912,11 +1004,8 @@ namespace cdea
 
     // Hoop stress at the quadrature points and at each ring's inner edge,
     // evaluated on that ring's side (the first element of the ring).
-    const Quadrature<1> edge(Point<1>(0.));
-    FEValues<1>         fe_quad(impl->fe, impl->quadrature,
-                                update_values | update_gradients | update_quadrature_points);
-    FEValues<1>         fe_edge(impl->fe, edge,
-                                update_values | update_gradients | update_quadrature_points);
+    FEValues<1>        &fe_quad = impl->fe_values;
+    FEValues<1>        &fe_edge = impl->fe_edge;
     std::vector<double> local(impl->fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> dofs(local.size());
     // Where the plain hoop stress is negative the relaxed law is wrinkled:

@@ -4,6 +4,7 @@
 #include <cdea/fe/membrane_model.h>
 #include <cdea/solver/load_stepper.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,10 @@ namespace cdea
   SteppingSettings stepping_settings(const Parameters &p);
   FeDiscretization fe_discretization(const Parameters &p);
   NewtonSettings   newton_settings(const Parameters &p);
+
+  /// An FE model of @p scene set up as the parameters say (discretization,
+  /// Newton, linear solver, relaxed law, water load).
+  std::unique_ptr<MembraneModel> make_fe_model(const Parameters &p, const Scene &scene);
 
   /// Exit codes: 0 success, 1 bad input or unwritable output, 2 the run
   /// stopped before the end of its voltage path (every converged step is in

@@ -83,6 +83,7 @@ namespace cdea
       double       min_voltage_increment_kV;
       unsigned int max_cutbacks;
       std::string  continuation; ///< "load stepping" or "arc length"
+      std::string  linear_solver; ///< "banded LU" or "Trilinos KLU"
       unsigned int max_arc_length_steps;
       double       max_displacement_mm;
       bool         stability_check;

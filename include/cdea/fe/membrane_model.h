@@ -24,10 +24,19 @@
 
 namespace cdea
 {
+  /// How the tangent systems are solved: LAPACK's banded LU (factored once
+  /// per assembly, cheap for the banded 1D tangent) or Trilinos' sparse
+  /// direct solver KLU (through deal.II's wrappers).
+  enum class LinearSolver
+  {
+    banded_lu,
+    trilinos_klu
+  };
+
   struct FeDiscretization
   {
-    unsigned int degree              = 3;
-    unsigned int elements_per_ring   = 8;
+    unsigned int degree              = 4;
+    unsigned int elements_per_ring   = 4;
     double       grading             = 4.;
     unsigned int refinements         = 0;
     unsigned int samples_per_element = 4;
@@ -73,6 +82,8 @@ namespace cdea
     /// (Wrinkling/Model = relaxed); off: the plain law everywhere.
     void set_relaxed(bool relaxed);
     bool relaxed() const;
+
+    void set_linear_solver(LinearSolver solver);
 
     /// pi int_A^B r^2 (-z') dR by Gauss quadrature exact for the FE solution.
     double enclosed_volume() const override;
