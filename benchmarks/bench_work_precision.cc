@@ -451,9 +451,11 @@ int main(int argc, char **argv)
                   << "/ring: " << std::setw(8) << ok[i].first * 1e3 << " ms, worst disp err "
                   << worst_disp[key] << ", worst s2 err " << worst_s2[key] << "\n";
       }
-    const auto def = std::make_pair(3u, 8u);
+    const FeDiscretization defaults;
+    const auto def = std::make_pair(defaults.degree, defaults.elements_per_ring);
     if (fe.count(def))
-      std::cout << "  (the current default p=3, 8/ring: " << fe[def].first * 1e3
+      std::cout << "  (the default p=" << def.first << ", " << def.second
+                << "/ring: " << fe[def].first * 1e3
                 << " ms, worst disp err " << worst_disp[def] << ", worst s2 err "
                 << worst_s2[def] << ")\n";
   }

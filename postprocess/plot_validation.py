@@ -153,8 +153,8 @@ def plot_work_precision(data_dir, out_dir):
                 ax.annotate(f"{rr['tolerance']:.0e}", (rr["cpu_median_s"] * 1e3,
                                                        max(rr["disp_err"], 1e-14)),
                             textcoords="offset points", xytext=(-28, -3), fontsize=7)
-        for p, n, marker, text in [(3, 8, "o", "current default p = 3, 8/ring"),
-                                   (4, 4, "s", "proposed default p = 4, 4/ring")]:
+        for p, n, marker, text in [(4, 4, "s", "default p = 4, 4/ring"),
+                                   (3, 8, "o", "former default p = 3, 8/ring")]:
             d = select(rows, scene=scene, method="fe", degree=p, elements_per_ring=n)
             if d:
                 ax.plot(d[0]["cpu_median_s"] * 1e3, d[0]["disp_err"], marker, ms=11,
