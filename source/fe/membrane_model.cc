@@ -902,35 +902,46 @@ namespace cdea
   // symmetric solver is used.
   double MembraneModel::min_tangent_eigenvalue() const
   {
-    const auto                K = tangent_matrix();
     std::vector<unsigned int> free;
+    std::vector<int>          index_of(n_dofs(), -1); // position among the free dofs
     for (unsigned int i = 0; i < n_dofs(); ++i)
       if (!impl->constraints.is_constrained(i))
-        free.push_back(i);
+        {
+          index_of[i] = free.size();
+          free.push_back(i);
+        }
     const int n = free.size();
-    const auto entry = [&](const int i, const int j) {
-      return 0.5 * (K[free[i]][free[j]] + K[free[j]][free[i]]);
-    };
     if (impl->water_weight() > 0.)
       {
+        const auto      K = tangent_matrix();
         Eigen::MatrixXd Kf(n, n);
         for (int i = 0; i < n; ++i)
           for (int j = 0; j < n; ++j)
-            Kf(i, j) = entry(i, j);
+            Kf(i, j) = 0.5 * (K[free[i]][free[j]] + K[free[j]][free[i]]);
         return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Kf, Eigen::EigenvaluesOnly)
           .eigenvalues()(0);
       }
-    int kd = 0;
+    // With homogeneous constraints the assembled sparse tangent, restricted to
+    // the free rows and columns, is the tangent of the free dofs.
+    impl->assemble_tangent(impl->solution, nullptr);
+    const SparseMatrix<double> &K  = impl->tangent;
+    int                         kd = 0;
     for (int i = 0; i < n; ++i)
-      for (int j = i + 1; j < n; ++j)
-        if (entry(i, j) != 0.)
-          kd = std::max(kd, j - i);
+      for (auto entry = K.begin(free[i]); entry != K.end(free[i]); ++entry)
+        if (index_of[entry->column()] >= 0 && entry->value() != 0.)
+          kd = std::max(kd, std::abs(index_of[entry->column()] - i));
     // Upper band storage: ab(kd + i - j, j) = K(i, j), column-major, ldab = kd + 1.
     const int           ldab = kd + 1;
     std::vector<double> ab(ldab * n, 0.);
-    for (int j = 0; j < n; ++j)
-      for (int i = std::max(0, j - kd); i <= j; ++i)
-        ab[(kd + i - j) + j * ldab] = entry(i, j);
+    for (int i = 0; i < n; ++i)
+      for (auto entry = K.begin(free[i]); entry != K.end(free[i]); ++entry)
+        {
+          const int j = index_of[entry->column()];
+          if (j >= i)
+            ab[(kd + i - j) + j * ldab] += 0.5 * entry->value();
+          if (j >= 0 && j <= i)
+            ab[(kd + j - i) + i * ldab] += 0.5 * entry->value();
+        }
     const char          jobz = 'N', range = 'I', uplo = 'U';
     const int           il = 1, iu = 1, ldq = 1, ldz = 1;
     const double        vl = 0., vu = 0., abstol = 0.;
