@@ -56,6 +56,11 @@ namespace cdea
   /// subsection Sweep is made here. Throws InputError naming the parameter.
   SweepSettings sweep_settings(const Parameters &p, const Scene &scene);
 
+  /// The Solver settings of the file for the load stages of a row, by load
+  /// stepping and without the stability, breakdown and arc-length options
+  /// (the map reports none of them).
+  SteppingSettings sweep_stepping_settings(const Parameters &p);
+
   /// The two-ring scene of one map row: rings [1, rv] and [rv, b/a], the path
   /// raising both to the inner voltage.
   Scene sweep_scene(const Scene &base, double rv_over_a, double inner_voltage);
@@ -93,8 +98,14 @@ namespace cdea
     std::vector<double> s2_inner_ring2;  ///< Pa, at r_v
     SweepLine red, blue;
     unsigned int solves            = 0; ///< equilibrium solves attempted (all stages)
-    unsigned int newton_iterations = 0;
-    double       seconds           = 0.;
+    unsigned int newton_iterations = 0; ///< of all those solves
+    /// Where the solves went: the load stages up to the base state, the root
+    /// searches of the two lines, and the solves that failed (cut-backs).
+    unsigned int base_solves = 0, base_iterations = 0;
+    unsigned int line_solves = 0, line_iterations = 0;
+    unsigned int failed_solves = 0, failed_iterations = 0;
+    double       seconds = 0.; ///< wall time of the row (not written to the file)
+    double       base_seconds = 0., line_seconds = 0.; ///< of it: base state, root searches
   };
 
   /// Continuation of one row with @p model, a model of @p scene (from

@@ -1,0 +1,386 @@
+// The map file of `cdea sweep`, <Directory>/<Base name>_map.h5, written with
+// the plain HDF5 C API by rank 0 after the rows have been gathered. The file
+// holds no run-dependent data (no times, no rank count, no object time
+// stamps), so a serial and a distributed run of the same map give the same file.
+
+#include <cdea/app/sweep.h>
+
+#include <hdf5.h>
+
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+#include <system_error>
+
+#ifndef CDEA_VERSION
+#  define CDEA_VERSION "unknown"
+#endif
+
+namespace cdea
+{
+  namespace
+  {
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+    /// HDF5's automatic error printing off while alive (errors become exceptions).
+    class ErrorPrintingOff
+    {
+    public:
+      ErrorPrintingOff()
+      {
+        H5Eget_auto2(H5E_DEFAULT, &old_func, &old_data);
+        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+      }
+      ~ErrorPrintingOff() { H5Eset_auto2(H5E_DEFAULT, old_func, old_data); }
+      ErrorPrintingOff(const ErrorPrintingOff &)            = delete;
+      ErrorPrintingOff &operator=(const ErrorPrintingOff &) = delete;
+
+    private:
+      H5E_auto2_t old_func = nullptr;
+      void       *old_data = nullptr;
+    };
+
+    herr_t collect_error(unsigned int, const H5E_error2_t *err, void *data)
+    {
+      auto *messages = static_cast<std::vector<std::string> *>(data);
+      if (err->desc != nullptr && err->desc[0] != '\0')
+        messages->emplace_back(err->desc);
+      return 0;
+    }
+
+    /// The innermost and outermost descriptions of the HDF5 error stack.
+    std::string hdf5_error_text()
+    {
+      std::vector<std::string> messages;
+      H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, collect_error, &messages);
+      H5Eclear2(H5E_DEFAULT);
+      if (messages.empty())
+        return "unknown HDF5 error";
+      std::string text = messages.front();
+      if (messages.size() > 1 && messages.back() != text)
+        text += " (HDF5: " + messages.back() + ")";
+      for (char &c : text)
+        if (c == '\n')
+          c = ' ';
+      return text;
+    }
+
+    /// An owned HDF5 identifier.
+    class Handle
+    {
+    public:
+      Handle(const hid_t id, herr_t (*closer)(hid_t))
+        : id(id)
+        , closer(closer)
+      {}
+      ~Handle()
+      {
+        if (id >= 0)
+          closer(id);
+      }
+      Handle(const Handle &)            = delete;
+      Handle &operator=(const Handle &) = delete;
+      operator hid_t() const { return id; }
+
+    private:
+      hid_t id;
+      herr_t (*closer)(hid_t);
+    };
+
+    class Writer
+    {
+    public:
+      explicit Writer(const std::string &path)
+        : path(path)
+      {}
+
+      [[noreturn]] void fail(const std::string &what) const
+      {
+        throw std::runtime_error("cannot write '" + path + "': " + what + " failed: " +
+                                 hdf5_error_text());
+      }
+      hid_t check(const hid_t id, const std::string &what) const
+      {
+        if (id < 0)
+          fail(what);
+        return id;
+      }
+      void check_status(const herr_t status, const std::string &what) const
+      {
+        if (status < 0)
+          fail(what);
+      }
+
+      void string_attribute(const hid_t object, const std::string &name,
+                            const std::string &value) const
+      {
+        Handle type(check(H5Tcopy(H5T_C_S1), "H5Tcopy"), H5Tclose);
+        check_status(H5Tset_size(type, H5T_VARIABLE), "H5Tset_size");
+        check_status(H5Tset_cset(type, H5T_CSET_UTF8), "H5Tset_cset");
+        Handle      space(check(H5Screate(H5S_SCALAR), "H5Screate"), H5Sclose);
+        Handle      attribute(check(H5Acreate2(object, name.c_str(), type, space, H5P_DEFAULT,
+                                               H5P_DEFAULT),
+                                    "H5Acreate2(" + name + ")"),
+                              H5Aclose);
+        const char *pointer = value.c_str();
+        check_status(H5Awrite(attribute, type, &pointer), "H5Awrite(" + name + ")");
+      }
+
+      void double_attribute(const hid_t object, const std::string &name, const double value) const
+      {
+        Handle space(check(H5Screate(H5S_SCALAR), "H5Screate"), H5Sclose);
+        Handle attribute(check(H5Acreate2(object, name.c_str(), H5T_IEEE_F64LE, space,
+                                          H5P_DEFAULT, H5P_DEFAULT),
+                               "H5Acreate2(" + name + ")"),
+                         H5Aclose);
+        check_status(H5Awrite(attribute, H5T_NATIVE_DOUBLE, &value), "H5Awrite(" + name + ")");
+      }
+
+      void int_attribute(const hid_t object, const std::string &name, const int value) const
+      {
+        Handle space(check(H5Screate(H5S_SCALAR), "H5Screate"), H5Sclose);
+        Handle attribute(check(H5Acreate2(object, name.c_str(), H5T_STD_I32LE, space,
+                                          H5P_DEFAULT, H5P_DEFAULT),
+                               "H5Acreate2(" + name + ")"),
+                         H5Aclose);
+        check_status(H5Awrite(attribute, H5T_NATIVE_INT, &value), "H5Awrite(" + name + ")");
+      }
+
+      /// A dataset of doubles (row-major @p dims) with unit and description.
+      void dataset(const hid_t file, const std::string &name, const std::vector<hsize_t> &dims,
+                   const std::vector<double> &values, const std::string &unit,
+                   const std::string &description) const
+      {
+        Handle space(check(H5Screate_simple(int(dims.size()), dims.data(), nullptr),
+                           "H5Screate_simple"),
+                     H5Sclose);
+        Handle dcpl(check(H5Pcreate(H5P_DATASET_CREATE), "H5Pcreate"), H5Pclose);
+        check_status(H5Pset_obj_track_times(dcpl, false), "H5Pset_obj_track_times");
+        Handle set(check(H5Dcreate2(file, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT,
+                                    dcpl, H5P_DEFAULT),
+                         "H5Dcreate2(" + name + ")"),
+                   H5Dclose);
+        if (!values.empty())
+          check_status(H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
+                                values.data()),
+                       "H5Dwrite(" + name + ")");
+        string_attribute(set, "unit", unit);
+        string_attribute(set, "description", description);
+      }
+
+      void int_dataset(const hid_t file, const std::string &name, const std::vector<int> &values,
+                       const std::string &description) const
+      {
+        const hsize_t dims[1] = {values.size()};
+        Handle space(check(H5Screate_simple(1, dims, nullptr), "H5Screate_simple"), H5Sclose);
+        Handle dcpl(check(H5Pcreate(H5P_DATASET_CREATE), "H5Pcreate"), H5Pclose);
+        check_status(H5Pset_obj_track_times(dcpl, false), "H5Pset_obj_track_times");
+        Handle set(check(H5Dcreate2(file, name.c_str(), H5T_STD_I32LE, space, H5P_DEFAULT,
+                                    dcpl, H5P_DEFAULT),
+                         "H5Dcreate2(" + name + ")"),
+                   H5Dclose);
+        if (!values.empty())
+          check_status(H5Dwrite(set, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT,
+                                values.data()),
+                       "H5Dwrite(" + name + ")");
+        string_attribute(set, "unit", "1");
+        string_attribute(set, "description", description);
+      }
+
+      void string_dataset(const hid_t file, const std::string &name,
+                          const std::vector<std::string> &values,
+                          const std::string              &description) const
+      {
+        Handle type(check(H5Tcopy(H5T_C_S1), "H5Tcopy"), H5Tclose);
+        check_status(H5Tset_size(type, H5T_VARIABLE), "H5Tset_size");
+        check_status(H5Tset_cset(type, H5T_CSET_UTF8), "H5Tset_cset");
+        const hsize_t dims[1] = {values.size()};
+        Handle space(check(H5Screate_simple(1, dims, nullptr), "H5Screate_simple"), H5Sclose);
+        Handle dcpl(check(H5Pcreate(H5P_DATASET_CREATE), "H5Pcreate"), H5Pclose);
+        check_status(H5Pset_obj_track_times(dcpl, false), "H5Pset_obj_track_times");
+        Handle set(check(H5Dcreate2(file, name.c_str(), type, space, H5P_DEFAULT, dcpl,
+                                    H5P_DEFAULT),
+                         "H5Dcreate2(" + name + ")"),
+                   H5Dclose);
+        std::vector<const char *> pointers;
+        for (const auto &s : values)
+          pointers.push_back(s.c_str());
+        if (!values.empty())
+          check_status(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()),
+                       "H5Dwrite(" + name + ")");
+        string_attribute(set, "unit", "");
+        string_attribute(set, "description", description);
+      }
+
+    private:
+      std::string path;
+    };
+
+    std::string format(const double x)
+    {
+      std::ostringstream o;
+      o.precision(12);
+      o << x;
+      return o.str();
+    }
+  } // namespace
+
+  void write_sweep_file(const std::string &path, const SweepMap &map,
+                        const std::string &parameter_text)
+  {
+    const SweepSettings &s = map.settings;
+    const std::size_t    n = map.rows.size(), m = s.outer_voltages.size();
+
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    if (!parent.empty())
+      {
+        std::error_code error;
+        std::filesystem::create_directories(parent, error);
+        if (error)
+          throw std::runtime_error("cannot write '" + path + "': cannot create directory '" +
+                                   parent.string() + "': " + error.message());
+      }
+
+    ErrorPrintingOff quiet;
+    Writer           w(path);
+    Handle           fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+#if H5_VERSION_GE(1, 10, 7)
+    if (fapl >= 0)
+      H5Pset_file_locking(fapl, false, true);
+#endif
+    // No modification times in the object headers: the same map gives the
+    // same bytes.
+    Handle fcpl(H5Pcreate(H5P_FILE_CREATE), H5Pclose);
+    if (fcpl >= 0)
+      H5Pset_obj_track_times(fcpl, false);
+    const hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl >= 0 ? hid_t(fcpl) : H5P_DEFAULT,
+                               fapl >= 0 ? hid_t(fapl) : H5P_DEFAULT);
+    if (id < 0)
+      throw std::runtime_error("cannot create '" + path + "': " + hdf5_error_text());
+    Handle file(id, H5Fclose);
+
+    // Parameters as attributes.
+    w.string_attribute(file, "parameters", parameter_text);
+    w.string_attribute(file, "code_version", CDEA_VERSION);
+    w.string_attribute(file, "method", "finite elements");
+    w.double_attribute(file, "inner_voltage_kV", s.inner_voltage / 1e3);
+    w.double_attribute(file, "outer_voltage_from_kV", s.outer_from / 1e3);
+    w.double_attribute(file, "outer_voltage_to_kV", s.outer_to / 1e3);
+    w.double_attribute(file, "outer_voltage_step_kV", s.outer_step / 1e3);
+    w.double_attribute(file, "line_tolerance_V", s.line_tolerance);
+    w.double_attribute(file, "zero_voltage_displacement_mm", map.zero_voltage_displacement * 1e3);
+    w.int_attribute(file, "n_rv", int(n));
+    w.int_attribute(file, "n_outer", int(m));
+    {
+      std::string values;
+      for (std::size_t i = 0; i < s.ring_edge_values.size(); ++i)
+        values += (i ? ", " : "") + format(s.ring_edge_values[i]);
+      w.string_attribute(file, "ring_edge_values", values);
+    }
+
+    auto per_row = [&](auto get) {
+      std::vector<double> v(n);
+      for (std::size_t i = 0; i < n; ++i)
+        v[i] = get(map.rows[i]);
+      return v;
+    };
+    auto grid = [&](const std::vector<double> SweepRow::*field, const double factor) {
+      std::vector<double> v(n * m, nan);
+      for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t k = 0; k < m; ++k)
+          v[i * m + k] = (map.rows[i].*field)[k] * factor;
+      return v;
+    };
+
+    std::vector<double> outer(m);
+    for (std::size_t k = 0; k < m; ++k)
+      outer[k] = s.outer_voltages[k] / 1e3;
+    const hsize_t hn = n, hm = m;
+    w.dataset(file, "rv_over_a", {hn}, per_row([](const SweepRow &r) { return r.rv_over_a; }),
+              "1", "inner ring's outer edge r_v over the disk radius a (pre-stretched flat film)");
+    w.dataset(file, "outer_voltage_kV", {hm}, outer, "kV",
+              "voltage of the outer ring; the inner ring is held at inner_voltage_kV");
+    w.dataset(file, "displacement_mm", {hn, hm}, grid(&SweepRow::displacement, 1e3), "mm",
+              "disk deflection |z(disk) - z(frame)|, rv x outer voltage; NaN where the "
+              "continuation did not reach the point");
+    w.dataset(file, "stroke_mm", {hn, hm}, grid(&SweepRow::stroke, 1e3), "mm",
+              "displacement minus zero_voltage_displacement_mm");
+    w.dataset(file, "stroke_increase_percent", {hn, hm}, grid(&SweepRow::stroke_increase, 1.),
+              "%",
+              "100 (stroke / stroke with both rings at the inner voltage - 1)");
+    {
+      std::vector<double> v(n * m * 2, nan);
+      for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t k = 0; k < m; ++k)
+          {
+            v[(i * m + k) * 2 + 0] = map.rows[i].s2_inner_ring1[k] / 1e3;
+            v[(i * m + k) * 2 + 1] = map.rows[i].s2_inner_ring2[k] / 1e3;
+          }
+      w.dataset(file, "s2_inner_edge_kPa", {hn, hm, 2}, v, "kPa",
+                "nominal hoop stress s2 at the inner edge of ring 1 (disk edge) and ring 2 "
+                "(r_v, on the outer ring's side), rv x outer voltage x 2");
+    }
+    const std::pair<const char *, SweepLine SweepRow::*> lines[] = {{"red", &SweepRow::red},
+                                                                    {"blue", &SweepRow::blue}};
+    for (const auto &[name, line] : lines)
+      {
+        const std::string prefix = std::string(name) + "_line_";
+        const std::string what =
+          std::string(name) == "red"
+            ? "red line (s2 = 0 at the outer ring's inner edge)"
+            : "blue line (equal s2 at the inner edges of both rings)";
+        w.dataset(file, prefix + "outer_kV", {hn},
+                  per_row([&](const SweepRow &r) { return (r.*line).outer_voltage / 1e3; }), "kV",
+                  "outer voltage on the " + what +
+                    ", by root finding to line_tolerance_V; NaN where absent in the range");
+        w.dataset(file, prefix + "increase_percent", {hn},
+                  per_row([&](const SweepRow &r) { return (r.*line).stroke_increase; }), "%",
+                  "stroke increase on the " + what);
+        w.dataset(file, prefix + "displacement_mm", {hn},
+                  per_row([&](const SweepRow &r) { return (r.*line).displacement * 1e3; }), "mm",
+                  "displacement on the " + what);
+        std::vector<double> s2(n * 2);
+        for (std::size_t i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < 2; ++j)
+            s2[i * 2 + j] = (map.rows[i].*line).s2_inner[j] / 1e3;
+        w.dataset(file, prefix + "s2_inner_edge_kPa", {hn, 2}, s2, "kPa",
+                  "s2 at the inner edges of rings 1 and 2 on the " + what);
+      }
+    w.dataset(file, "base_displacement_mm", {hn},
+              per_row([](const SweepRow &r) { return r.base_displacement * 1e3; }), "mm",
+              "displacement with both rings at the inner voltage (the reference of the "
+              "stroke increase)");
+    {
+      std::vector<double> v(n * 2);
+      for (std::size_t i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < 2; ++j)
+          v[i * 2 + j] = map.rows[i].base_s2_inner[j] / 1e3;
+      w.dataset(file, "base_s2_inner_edge_kPa", {hn, 2}, v, "kPa",
+                "s2 at the inner edges of rings 1 and 2 with both rings at the inner voltage");
+    }
+    w.dataset(file, "lowest_outer_kV", {hn},
+              per_row([](const SweepRow &r) { return r.lowest_voltage / 1e3; }), "kV",
+              "lowest outer voltage of the grid reached by the continuation");
+    w.dataset(file, "highest_outer_kV", {hn},
+              per_row([](const SweepRow &r) { return r.highest_voltage / 1e3; }), "kV",
+              "highest outer voltage of the grid reached by the continuation");
+    {
+      std::vector<int>         solves(n), iterations(n);
+      std::vector<std::string> messages(n);
+      for (std::size_t i = 0; i < n; ++i)
+        {
+          solves[i]     = int(map.rows[i].solves);
+          iterations[i] = int(map.rows[i].newton_iterations);
+          messages[i]   = map.rows[i].message;
+        }
+      w.int_dataset(file, "solves", solves,
+                    "equilibrium solves of the row (load stages, continuation, root finding)");
+      w.int_dataset(file, "newton_iterations", iterations, "Newton iterations of the row");
+      w.string_dataset(file, "stop_message", messages,
+                       "why the continuation of the row stopped before the end of the grid "
+                       "(empty if it did not)");
+    }
+    if (H5Fflush(file, H5F_SCOPE_LOCAL) < 0)
+      throw std::runtime_error("cannot write '" + path + "': " + hdf5_error_text());
+  }
+} // namespace cdea
