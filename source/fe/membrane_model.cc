@@ -107,6 +107,14 @@ namespace cdea
     Vector<double>                 system_rhs;
     Vector<double>                 solution;
     FEValues<1>                    fe_values; ///< at the assembly quadrature, reused
+    /// Per-cell work arrays of assemble_cell, sized once.
+    struct Scratch
+    {
+      std::vector<types::global_dof_index> dofs;
+      std::vector<double>                  dl1, dl2, value, grad;
+      std::vector<unsigned int>            component; ///< of each cell dof
+    };
+    mutable Scratch scratch;
     Quadrature<1>                  edge_point; ///< the left end of a cell
     mutable FEValues<1>            fe_edge;    ///< at edge_point (ring inner edges), reused
 
@@ -205,6 +213,12 @@ namespace cdea
     for (const unsigned int dof : {r_inner, r_outer, z_outer})
       constraints.add_line(dof);
     constraints.close();
+    const unsigned int n_cell = fe.n_dofs_per_cell();
+    scratch.dofs.resize(n_cell);
+    for (auto *v : {&scratch.dl1, &scratch.dl2, &scratch.value, &scratch.grad})
+      v->resize(n_cell);
+    for (unsigned int i = 0; i < n_cell; ++i)
+      scratch.component.push_back(fe.system_to_component_index(i).first);
     sparsity.copy_from(dsp);
     tangent.reinit(sparsity);
     for (unsigned int i = 0; i < sparsity.n_rows(); ++i)
@@ -265,16 +279,17 @@ namespace cdea
                                             Vector<double> &cell_rhs) const
   {
     const unsigned int n = fe.n_dofs_per_cell();
-    std::vector<types::global_dof_index> dofs(n);
+    // Scratch reused across calls: this runs for every cell of every assembly.
+    auto &dofs  = scratch.dofs;
+    auto &dl1   = scratch.dl1;
+    auto &dl2   = scratch.dl2;
+    auto &value = scratch.value;
+    auto &grad  = scratch.grad;
+    auto &comp  = scratch.component;
     cell->get_dof_indices(dofs);
     fe_values.reinit(cell);
     const unsigned int ring     = cell->material_id();
     const double       two_pi_H = 2. * M_PI * scene.material.thickness;
-
-    std::vector<double> dl1(n), dl2(n), value(n), grad(n);
-    std::vector<unsigned int> comp(n);
-    for (unsigned int i = 0; i < n; ++i)
-      comp[i] = fe.system_to_component_index(i).first;
 
     cell_rhs = 0.;
     if (cell_matrix)
