@@ -4,6 +4,7 @@
 // stamps), so a serial and a distributed run of the same map give the same file.
 
 #include <cdea/app/sweep.h>
+#include <cdea/output/hdf5_support.h>
 
 #include <hdf5.h>
 
@@ -22,48 +23,8 @@ namespace cdea
   {
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
-    /// HDF5's automatic error printing off while alive (errors become exceptions).
-    class ErrorPrintingOff
-    {
-    public:
-      ErrorPrintingOff()
-      {
-        H5Eget_auto2(H5E_DEFAULT, &old_func, &old_data);
-        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-      }
-      ~ErrorPrintingOff() { H5Eset_auto2(H5E_DEFAULT, old_func, old_data); }
-      ErrorPrintingOff(const ErrorPrintingOff &)            = delete;
-      ErrorPrintingOff &operator=(const ErrorPrintingOff &) = delete;
-
-    private:
-      H5E_auto2_t old_func = nullptr;
-      void       *old_data = nullptr;
-    };
-
-    herr_t collect_error(unsigned int, const H5E_error2_t *err, void *data)
-    {
-      auto *messages = static_cast<std::vector<std::string> *>(data);
-      if (err->desc != nullptr && err->desc[0] != '\0')
-        messages->emplace_back(err->desc);
-      return 0;
-    }
-
-    /// The innermost and outermost descriptions of the HDF5 error stack.
-    std::string hdf5_error_text()
-    {
-      std::vector<std::string> messages;
-      H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, collect_error, &messages);
-      H5Eclear2(H5E_DEFAULT);
-      if (messages.empty())
-        return "unknown HDF5 error";
-      std::string text = messages.front();
-      if (messages.size() > 1 && messages.back() != text)
-        text += " (HDF5: " + messages.back() + ")";
-      for (char &c : text)
-        if (c == '\n')
-          c = ' ';
-      return text;
-    }
+    using hdf5::ErrorPrintingOff;
+    using hdf5::error_text;
 
     /// An owned HDF5 identifier.
     class Handle
@@ -97,7 +58,7 @@ namespace cdea
       [[noreturn]] void fail(const std::string &what) const
       {
         throw std::runtime_error("cannot write '" + path + "': " + what + " failed: " +
-                                 hdf5_error_text());
+                                 error_text());
       }
       hid_t check(const hid_t id, const std::string &what) const
       {
@@ -256,7 +217,7 @@ namespace cdea
     const hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl >= 0 ? hid_t(fcpl) : H5P_DEFAULT,
                                fapl >= 0 ? hid_t(fapl) : H5P_DEFAULT);
     if (id < 0)
-      throw std::runtime_error("cannot create '" + path + "': " + hdf5_error_text());
+      throw std::runtime_error("cannot create '" + path + "': " + error_text());
     Handle file(id, H5Fclose);
 
     // Parameters as attributes.
@@ -381,6 +342,6 @@ namespace cdea
                        "(empty if it did not)");
     }
     if (H5Fflush(file, H5F_SCOPE_LOCAL) < 0)
-      throw std::runtime_error("cannot write '" + path + "': " + hdf5_error_text());
+      throw std::runtime_error("cannot write '" + path + "': " + error_text());
   }
 } // namespace cdea

@@ -1,3 +1,4 @@
+#include <cdea/output/hdf5_support.h>
 #include <cdea/output/results_file.h>
 
 #include <hdf5.h>
@@ -29,59 +30,8 @@ namespace cdea
 
     constexpr hsize_t summary_chunk_rows = 128;
 
-    /// Turns off HDF5's automatic error-stack printing while alive (we report
-    /// errors through exceptions) and restores the previous handler.
-    class ErrorPrintingOff
-    {
-    public:
-      ErrorPrintingOff()
-      {
-        H5Eget_auto2(H5E_DEFAULT, &old_func, &old_data);
-        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-      }
-      ~ErrorPrintingOff() { H5Eset_auto2(H5E_DEFAULT, old_func, old_data); }
-      ErrorPrintingOff(const ErrorPrintingOff &)            = delete;
-      ErrorPrintingOff &operator=(const ErrorPrintingOff &) = delete;
-
-    private:
-      H5E_auto2_t old_func = nullptr;
-      void       *old_data = nullptr;
-    };
-
-    herr_t collect_error(unsigned int, const H5E_error2_t *err, void *data)
-    {
-      auto *messages = static_cast<std::vector<std::string> *>(data);
-      if (err->desc != nullptr && err->desc[0] != '\0')
-        messages->emplace_back(err->desc);
-      return 0;
-    }
-
-    /// A one-line summary of the current HDF5 error stack (which it clears):
-    /// the system error text if the innermost entry carries one, else the
-    /// innermost description, followed by the outermost description.
-    std::string hdf5_error_text()
-    {
-      std::vector<std::string> messages; // innermost first
-      H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, collect_error, &messages);
-      H5Eclear2(H5E_DEFAULT);
-      if (messages.empty())
-        return "unknown HDF5 error";
-      std::string       reason = messages.front();
-      const std::string tag    = "error message = '";
-      const auto        begin  = reason.find(tag);
-      if (begin != std::string::npos)
-        {
-          const auto end = reason.find('\'', begin + tag.size());
-          if (end != std::string::npos)
-            reason = reason.substr(begin + tag.size(), end - begin - tag.size());
-        }
-      for (char &c : reason)
-        if (c == '\n')
-          c = ' ';
-      if (messages.size() > 1 && messages.back() != reason)
-        reason += " (HDF5: " + messages.back() + ")";
-      return reason;
-    }
+    using hdf5::ErrorPrintingOff;
+    using hdf5::error_text;
 
     /// An owned HDF5 identifier with its close function.
     class Handle
@@ -159,7 +109,7 @@ namespace cdea
     [[noreturn]] void fail(const std::string &what) const
     {
       throw std::runtime_error("ResultsFile '" + file_path + "': " + what + " failed: " +
-                               hdf5_error_text());
+                               error_text());
     }
     hid_t check(const hid_t id, const std::string &what) const
     {
@@ -432,7 +382,7 @@ namespace cdea
                                  fapl.get() >= 0 ? fapl.get() : H5P_DEFAULT);
     if (file < 0)
       throw std::runtime_error("cannot create results file '" + path +
-                               "': " + hdf5_error_text());
+                               "': " + error_text());
     impl->file = Handle(file, H5Fclose);
 
     impl->write_string_attribute(file, "parameters", parameters_text);
