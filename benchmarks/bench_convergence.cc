@@ -46,17 +46,6 @@ using namespace cdea;
 
 namespace
 {
-  Scene make_scene(const std::vector<double> &edges, const std::vector<std::vector<double>> &kV)
-  {
-    Scene scene;
-    scene.ring_edges_over_a = edges;
-    auto volts              = kV;
-    for (auto &w : volts)
-      for (double &v : w)
-        v *= 1e3;
-    scene.path = VoltagePath(volts);
-    return scene;
-  }
 
   /// Run @p model through all stages of @p scene; throws if it stops early.
   StepSummary run(EquilibriumModel &model, const Scene &scene)
@@ -307,8 +296,8 @@ int main(int argc, char **argv)
     Scene       scene;
   };
   const std::vector<Case> cases{
-    {"full", make_scene({1., 3.}, {{5.}})},
-    {"partitioned", make_scene({1., 1.7, 3.}, {{5., 5.}, {5., 6.}})}};
+    {"full", paper_scene({1., 3.}, {{5.}})},
+    {"partitioned", paper_scene({1., 1.7, 3.}, {{5., 5.}, {5., 6.}})}};
 
   std::vector<Row> rows;
   std::cout << std::setprecision(3) << std::scientific;

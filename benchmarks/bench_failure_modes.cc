@@ -67,17 +67,6 @@ namespace
 {
   constexpr double not_a_number = std::numeric_limits<double>::quiet_NaN();
 
-  Scene make_scene(const std::vector<double> &edges, const std::vector<std::vector<double>> &kV)
-  {
-    Scene scene;
-    scene.ring_edges_over_a = edges;
-    auto volts              = kV;
-    for (auto &w : volts)
-      for (double &v : w)
-        v *= 1e3;
-    scene.path = VoltagePath(volts);
-    return scene;
-  }
 
   FeDiscretization fe_disc(const unsigned p, const unsigned n, const double grading = 4.,
                            const unsigned refinements = 0)
@@ -319,7 +308,7 @@ namespace
   Lines locate_lines(EquilibriumModel &model, const double r_v, const double Vi,
                      const double Vo_max, const std::vector<Target> &targets)
   {
-    Scene       scene = make_scene({1., r_v, 3.}, {{Vi * 1e-3, Vi * 1e-3}});
+    Scene       scene = paper_scene({1., r_v, 3.}, {{Vi * 1e-3, Vi * 1e-3}});
     Lines       lines;
     LoadStepper stepper(scene, model, SteppingSettings());
     stepper.on_step = [&](const StepSummary &s) {
@@ -461,11 +450,11 @@ int main(int argc, char **argv)
     double              V_start;
   };
   const std::vector<PathCase> paths{
-    {"full", make_scene({1., 3.}, {{7.}}), make_scene({1., 3.}, {{7.}}),
-     make_scene({1., 3.}, {{6.6}}), {0.}, 0, 0.},
-    {"rv1.7", make_scene({1., 1.7, 3.}, {{5., 5.}, {5., 7.5}}),
-     make_scene({1., 1.7, 3.}, {{5., 5.}, {5., 8.}}),
-     make_scene({1., 1.7, 3.}, {{5., 5.}, {5., 7.5}}), {5000., 5000.}, 1, 5000.}};
+    {"full", paper_scene({1., 3.}, {{7.}}), paper_scene({1., 3.}, {{7.}}),
+     paper_scene({1., 3.}, {{6.6}}), {0.}, 0, 0.},
+    {"rv1.7", paper_scene({1., 1.7, 3.}, {{5., 5.}, {5., 7.5}}),
+     paper_scene({1., 1.7, 3.}, {{5., 5.}, {5., 8.}}),
+     paper_scene({1., 1.7, 3.}, {{5., 5.}, {5., 7.5}}), {5000., 5000.}, 1, 5000.}};
 
   double           full_onset_V = not_a_number;
   SteppingSettings fine_stepping;
@@ -604,8 +593,8 @@ int main(int argc, char **argv)
             std::string  failures;
             for (const double V : Vs)
               {
-                Scene target = pc.name == "full" ? make_scene({1., 3.}, {{V * 1e-3}}) :
-                                                   make_scene({1., 1.7, 3.},
+                Scene target = pc.name == "full" ? paper_scene({1., 3.}, {{V * 1e-3}}) :
+                                                   paper_scene({1., 1.7, 3.},
                                                               {{5., 5.}, {5., V * 1e-3}});
                 std::unique_ptr<EquilibriumModel> cont, cold;
                 if (method == 0)
@@ -752,7 +741,7 @@ int main(int argc, char **argv)
           Lines        result[2];
           for (int m = 0; m < 2; ++m)
             {
-              const Scene scene = make_scene({1., r_v, 3.}, {{Vi * 1e-3, Vi * 1e-3}});
+              const Scene scene = paper_scene({1., r_v, 3.}, {{Vi * 1e-3, Vi * 1e-3}});
               std::unique_ptr<EquilibriumModel> model;
               if (m == 0)
                 model = std::make_unique<MembraneModel>(scene, fe_disc(4, 16), NewtonSettings());
@@ -912,7 +901,7 @@ int main(int argc, char **argv)
         return pct(s.displacement - l.displacement_0V, l.displacement_base - l.displacement_0V) -
                target;
       };
-      const Scene   scene = make_scene({1., r_v, 3.}, {{Vi * 1e-3, Vi * 1e-3}});
+      const Scene   scene = paper_scene({1., r_v, 3.}, {{Vi * 1e-3, Vi * 1e-3}});
       MembraneModel fe(scene, fe_disc(4, 16), NewtonSettings());
       const Lines   l = locate_lines(fe, r_v, Vi, 9000., {g, red_line});
       std::cout << std::setprecision(2) << "  inner " << Vi * 1e-3 << " kV, r_v/a = " << r_v

@@ -60,58 +60,47 @@ using namespace cdea;
 
 namespace
 {
-  Scene make_scene(const std::vector<double> &edges, const std::vector<std::vector<double>> &kV)
-  {
-    Scene scene;
-    scene.ring_edges_over_a = edges;
-    auto volts              = kV;
-    for (auto &w : volts)
-      for (double &v : w)
-        v *= 1e3;
-    scene.path = VoltagePath(volts);
-    return scene;
-  }
 
   /// The scenes of tests/test_validation_agreement.cc (public cases, own
   /// scenes, paper cases past their onset).
   std::vector<std::pair<std::string, Scene>> validation_scenes()
   {
     std::vector<std::pair<std::string, Scene>> v;
-    v.push_back({"public full 0 V", make_scene({1., 3.}, {{0.}})});
-    v.push_back({"public full 5 kV", make_scene({1., 3.}, {{5.}})});
-    v.push_back({"public r_v 1.7 5/6 kV", make_scene({1., 1.7, 3.}, {{5., 5.}, {5., 6.}})});
+    v.push_back({"public full 0 V", paper_scene({1., 3.}, {{0.}})});
+    v.push_back({"public full 5 kV", paper_scene({1., 3.}, {{5.}})});
+    v.push_back({"public r_v 1.7 5/6 kV", paper_scene({1., 1.7, 3.}, {{5., 5.}, {5., 6.}})});
     {
-      Scene s        = make_scene({1., 4.}, {{4.5}});
+      Scene s        = paper_scene({1., 4.}, {{4.5}});
       s.disk_radius  = 10e-3;
       s.frame_radius = 40e-3;
       s.prestretch   = 3.;
       v.push_back({"geometry b/a 4, lam 3", s});
     }
     {
-      Scene s    = make_scene({1., 3.}, {{2.8}});
+      Scene s    = paper_scene({1., 3.}, {{2.8}});
       s.material = {50e3, 60., 4.5e-11, 0.5e-3};
       v.push_back({"material", s});
     }
     {
-      Scene s = make_scene({1., 1.5, 3.}, {{4., 4.}, {4., 5.5}});
+      Scene s = paper_scene({1., 1.5, 3.}, {{4., 4.}, {4., 5.5}});
       s.mass  = 0.1;
       v.push_back({"mass 100 g", s});
     }
     {
-      Scene s = make_scene({1., 3.}, {{6.}});
+      Scene s = paper_scene({1., 3.}, {{6.}});
       s.mass  = 0.5;
       v.push_back({"mass 500 g", s});
     }
-    v.push_back({"three rings", make_scene({1., 1.5, 2.2, 3.}, {{4., 4., 4.}, {4., 5., 6.}})});
+    v.push_back({"three rings", paper_scene({1., 1.5, 2.2, 3.}, {{4., 4., 4.}, {4., 5., 6.}})});
     v.push_back({"three rings, onset",
-                 make_scene({1., 1.4, 2., 3.}, {{4.5, 4.5, 4.5}, {4.5, 5.5, 7.}})});
+                 paper_scene({1., 1.4, 2., 3.}, {{4.5, 4.5, 4.5}, {4.5, 5.5, 7.}})});
     {
-      Scene s      = make_scene({1., 1.3, 1.8, 2.4, 3.}, {{3., 3., 3., 3.}, {3., 3.5, 4., 4.5}});
+      Scene s      = paper_scene({1., 1.3, 1.8, 2.4, 3.}, {{3., 3., 3., 3.}, {3., 3.5, 4., 4.5}});
       s.prestretch = 2.;
       v.push_back({"four rings, lam 2", s});
     }
-    v.push_back({"paper full to 5.5 kV", make_scene({1., 3.}, {{5.5}})});
-    v.push_back({"paper r_v 1.7 to 5/7 kV", make_scene({1., 1.7, 3.}, {{5., 5.}, {5., 7.}})});
+    v.push_back({"paper full to 5.5 kV", paper_scene({1., 3.}, {{5.5}})});
+    v.push_back({"paper r_v 1.7 to 5/7 kV", paper_scene({1., 1.7, 3.}, {{5., 5.}, {5., 7.}})});
     return v;
   }
 
@@ -270,8 +259,8 @@ int main(int argc, char **argv)
     Scene       scene;
   };
   const std::vector<Case> cases{
-    {"full", make_scene({1., 3.}, {{5.}})},
-    {"partitioned", make_scene({1., 1.7, 3.}, {{5., 5.}, {5., 6.}})}};
+    {"full", paper_scene({1., 3.}, {{5.}})},
+    {"partitioned", paper_scene({1., 1.7, 3.}, {{5., 5.}, {5., 6.}})}};
 
   std::vector<Point> points;
   std::cout << std::setprecision(3);

@@ -21,4 +21,17 @@ namespace cdea
       ++ring;
     return ring;
   }
+
+  Scene paper_scene(const std::vector<double>              &ring_edges_over_a,
+                    const std::vector<std::vector<double>> &waypoints_kV)
+  {
+    Scene scene;
+    scene.ring_edges_over_a = ring_edges_over_a;
+    auto volts              = waypoints_kV;
+    for (auto &waypoint : volts)
+      for (double &v : waypoint)
+        v *= 1e3;
+    scene.path = VoltagePath(volts);
+    return scene;
+  }
 } // namespace cdea

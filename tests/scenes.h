@@ -9,19 +9,7 @@
 
 namespace cdea_test
 {
-  /// The paper's actuator with the given ring edges (r/a) and waypoints (kV).
-  inline cdea::Scene paper_scene(const std::vector<double>              &edges,
-                                 const std::vector<std::vector<double>> &waypoints_kV)
-  {
-    cdea::Scene scene;
-    scene.ring_edges_over_a = edges;
-    auto volts              = waypoints_kV;
-    for (auto &w : volts)
-      for (double &v : w)
-        v *= 1e3;
-    scene.path = cdea::VoltagePath(volts);
-    return scene;
-  }
+  using cdea::paper_scene;
 
   /// Run all stages; returns the summary of the last converged step.
   inline cdea::StepSummary run_to_end(cdea::EquilibriumModel &model, const cdea::Scene &scene,

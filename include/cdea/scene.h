@@ -35,4 +35,9 @@ namespace cdea
     /// ring outside them, the last edge to the last ring).
     unsigned int ring_of(double R) const;
   };
+
+  /// The paper's actuator (the defaults above) with the given ring edges
+  /// (r/a) and voltage-path waypoints in kV: for tests, benchmarks and studies.
+  Scene paper_scene(const std::vector<double>              &ring_edges_over_a,
+                    const std::vector<std::vector<double>> &waypoints_kV);
 } // namespace cdea

@@ -346,6 +346,23 @@ namespace cdea
     output.parse(prm);
   }
 
+  double parse_number(const std::string &token, const std::string &name, const std::string &text)
+  {
+    std::size_t used  = 0;
+    double      value = 0.;
+    try
+      {
+        value = std::stod(token, &used);
+      }
+    catch (const std::exception &)
+      {
+        used = 0;
+      }
+    if (used != token.size() || !std::isfinite(value))
+      throw InputError(name + ": '" + token + "' is not a number (in '" + text + "')");
+    return value;
+  }
+
   std::vector<double> parse_number_list(const std::string &text, const std::string &name)
   {
     std::vector<double> values;
@@ -358,20 +375,7 @@ namespace cdea
         if (first == std::string::npos)
           throw InputError(name + ": empty entry in '" + text +
                            "' (expected numbers separated by ',')");
-        const std::string token = item.substr(first, last - first + 1);
-        std::size_t       used  = 0;
-        double            value = 0.;
-        try
-          {
-            value = std::stod(token, &used);
-          }
-        catch (const std::exception &)
-          {
-            used = 0;
-          }
-        if (used != token.size() || !std::isfinite(value))
-          throw InputError(name + ": '" + token + "' is not a number (in '" + text + "')");
-        values.push_back(value);
+        values.push_back(parse_number(item.substr(first, last - first + 1), name, text));
       }
     if (values.empty())
       throw InputError(name + ": no value given (expected numbers separated by ',')");

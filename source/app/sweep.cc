@@ -70,19 +70,7 @@ namespace cdea
             tokens.push_back(token);
             continue;
           }
-        std::size_t used  = 0;
-        double      value = 0.;
-        try
-          {
-            value = std::stod(token, &used);
-          }
-        catch (const std::exception &)
-          {
-            used = 0;
-          }
-        if (used != token.size() || !std::isfinite(value))
-          throw InputError(name + ": '" + token + "' is not a number (in '" + text + "')");
-        items.push_back(value);
+        items.push_back(parse_number(token, name, text));
         tokens.push_back(token);
       }
     if (!text.empty() && text.back() == ',')

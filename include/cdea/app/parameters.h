@@ -171,6 +171,10 @@ namespace cdea
   /// A complete, documented parameter file with every default.
   std::string default_parameter_file();
 
+  /// One finite number, the whole of @p token; otherwise an InputError naming
+  /// the parameter @p name and the entry @p text it came from.
+  double parse_number(const std::string &token, const std::string &name, const std::string &text);
+
   /// Parse "1, 1.7, 3" into numbers; @p name is used in error messages.
   std::vector<double> parse_number_list(const std::string &text, const std::string &name);
 } // namespace cdea
