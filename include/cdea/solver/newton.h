@@ -104,6 +104,10 @@ namespace cdea
               std::ostringstream m;
               m << "the line search found no decrease of the residual at Newton iteration "
                 << k << " (residual " << res << ")";
+              if (res < 1e3 * settings.residual_tolerance)
+                m << "; the residual has stalled near the tolerance, at the round-off level "
+                     "of this discretization: Solver/Residual tolerance may be below what it "
+                     "can reach";
               report.message = m.str();
               return report;
             }
