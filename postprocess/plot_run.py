@@ -114,6 +114,8 @@ class Run:
                                      if onset_v is not None else None)
             onset_r = s.attrs.get("onset_radius_mm", np.nan)
             self.onset_radius_mm = float(np.asarray(onset_r, dtype=float).ravel()[0])
+            onset_t = s.attrs.get("onset_load_factor", np.nan)
+            self.onset_load_factor = float(np.asarray(onset_t, dtype=float).ravel()[0])
             if self.onset_voltage_kV is None or len(self.onset_voltage_kV) != self.n_rings:
                 self.onset_found = False
 
@@ -372,6 +374,8 @@ def plot_displacement(run, out):
         off_path = ""
         if single:
             x_onset = run.onset_voltage_kV[0]
+        elif np.isfinite(run.onset_load_factor):
+            x_onset = run.onset_load_factor  # written by the solver: exact
         else:
             vrows = run.rows(STAGE_VOLTAGE)
             x_onset, distance = (onset_path_parameter(run, vrows) if len(vrows)

@@ -91,6 +91,9 @@ for name, rings in [("default", 1), ("partitioned-rv1.7", 2), ("fold", 1)]:
                   f"onset on the outer ring between 6.4 and 6.5 kV ({v})")
             check(abs(s.attrs["onset_radius_mm"] - 1.7 * 14) < 1e-6,
                   "onset at the outer ring's inner edge r = 1.7 a")
+            t = s.attrs["onset_load_factor"]
+            check(1.0 < t < 2.0 and abs(5.0 + 1.5 * (t - 1.0) - v[1]) < 1e-9,
+                  f"onset_load_factor {t} is the path parameter of the onset voltages")
         else:
             v = s.attrs["onset_voltage_kV"][0]
             check(onset == 1 and 5.0 < v < 5.5, f"full-electrode onset between 5.0 and 5.5 kV ({v})")

@@ -589,6 +589,8 @@ namespace cdea
                                                  std::vector<double>(d.rings, nan_value));
     d.write_double_attribute(d.summary, "onset_radius_mm",
                              onset.found ? onset.radius * to_mm : nan_value);
+    d.write_double_attribute(d.summary, "onset_load_factor",
+                             onset.found ? onset.load_factor : nan_value);
     d.flush();
   }
 

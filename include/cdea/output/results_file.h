@@ -14,7 +14,8 @@
 //       newton_iterations (int), plus extra columns (double, NaN-padded for
 //       rows written before the column first appeared)
 //     attributes: onset_found (int), onset_voltage_kV (double[n_rings]),
-//                 onset_radius_mm (double), plus set_summary_attribute() ones
+//                 onset_radius_mm (double), onset_load_factor (double: the
+//                 stage parameter t there), plus set_summary_attribute() ones
 //   /steps/NNNNNN           one group per appended step (6 digits from 000000)
 //       R, r, z (mm), theta (rad), lambda1, lambda2, s1, s2 (kPa), E (MV/m),
 //       Phi (kV), ring (int); 1D, one entry per sample point
