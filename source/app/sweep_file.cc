@@ -26,27 +26,7 @@ namespace cdea
     using hdf5::ErrorPrintingOff;
     using hdf5::error_text;
 
-    /// An owned HDF5 identifier.
-    class Handle
-    {
-    public:
-      Handle(const hid_t id, herr_t (*closer)(hid_t))
-        : id(id)
-        , closer(closer)
-      {}
-      ~Handle()
-      {
-        if (id >= 0)
-          closer(id);
-      }
-      Handle(const Handle &)            = delete;
-      Handle &operator=(const Handle &) = delete;
-      operator hid_t() const { return id; }
-
-    private:
-      hid_t id;
-      herr_t (*closer)(hid_t);
-    };
+    using hdf5::Handle;
 
     class Writer
     {

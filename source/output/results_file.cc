@@ -33,49 +33,7 @@ namespace cdea
     using hdf5::ErrorPrintingOff;
     using hdf5::error_text;
 
-    /// An owned HDF5 identifier with its close function.
-    class Handle
-    {
-    public:
-      Handle() = default;
-      Handle(const hid_t handle, herr_t (*close_function)(hid_t))
-        : id(handle)
-        , closer(close_function)
-      {}
-      ~Handle() { reset(); }
-      Handle(Handle &&other) noexcept
-        : id(other.id)
-        , closer(other.closer)
-      {
-        other.id = -1;
-      }
-      Handle &operator=(Handle &&other) noexcept
-      {
-        if (this != &other)
-          {
-            reset();
-            id       = other.id;
-            closer   = other.closer;
-            other.id = -1;
-          }
-        return *this;
-      }
-      Handle(const Handle &)            = delete;
-      Handle &operator=(const Handle &) = delete;
-
-      void reset() noexcept
-      {
-        if (id >= 0 && closer != nullptr)
-          closer(id);
-        id = -1;
-      }
-      hid_t get() const { return id; }
-      operator hid_t() const { return id; }
-
-    private:
-      hid_t id = -1;
-      herr_t (*closer)(hid_t) = nullptr;
-    };
+    using hdf5::Handle;
   } // namespace
 
   struct ResultsFile::Impl
