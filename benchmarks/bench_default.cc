@@ -13,6 +13,8 @@
 #include <cdea/fe/membrane_model.h>
 #include <cdea/solver/load_stepper.h>
 
+#include "bench_common.h"
+
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -30,12 +32,7 @@ using namespace cdea;
 
 namespace
 {
-  double median(std::vector<double> v)
-  {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-  }
+  using cdea_bench::median;
 
   /// A line of /proc/self/status in MiB ("VmRSS", "VmHWM").
   double status_mib(const std::string &key)
