@@ -96,14 +96,7 @@ int main(int argc, char **argv)
   // Whole processes, as a user runs them.
   const std::filesystem::path out =
     std::filesystem::temp_directory_path() / ("cdea-bench-" + std::to_string(getpid()));
-  std::filesystem::create_directories(out);
-  const std::string prm = (out / "bench.prm").string();
-  {
-    std::ifstream in(file);
-    std::ofstream copy(prm);
-    copy << in.rdbuf() << "\nsubsection Output\n  set Directory = " << out.string()
-         << "\nend\n";
-  }
+  const std::string prm = cdea_bench::prm_writing_to(file, out);
   std::vector<double> process_time;
   for (int k = 0; k < process_runs; ++k)
     {

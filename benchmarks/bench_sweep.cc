@@ -303,14 +303,7 @@ int main(int argc, char **argv)
   // 2. Whole processes, serial and on `ranks` ranks.
   const std::filesystem::path out =
     std::filesystem::temp_directory_path() / ("cdea-bench-sweep-" + std::to_string(getpid()));
-  std::filesystem::create_directories(out);
-  const std::string prm = (out / "bench.prm").string();
-  {
-    std::ifstream in(file);
-    std::ofstream copy(prm);
-    copy << in.rdbuf() << "\nsubsection Output\n  set Directory = " << out.string()
-         << "\nend\n";
-  }
+  const std::string prm = cdea_bench::prm_writing_to(file, out);
   // A child mpirun must not inherit this process's (singleton) MPI environment.
   const std::string clean_env =
     "env $(env | grep -E '^(OMPI_|PMIX_|OPAL_|HYDRA_|PMI_)' | cut -d= -f1 | sed 's/^/-u /') ";
