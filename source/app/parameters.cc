@@ -304,6 +304,13 @@ namespace cdea
                         "working directory.");
       prm.declare_entry("Base name", "default", Anything(),
                         "The results go to <Directory>/<Base name>.h5.");
+      prm.declare_entry("ParaView", "false", Bool(),
+                        "cdea run: also write <Directory>/<Base name>.pvd with one VTU file "
+                        "per converged step in <Directory>/<Base name>_vtu/ (the film as "
+                        "the revolved surface, the disk as a second piece).");
+      prm.declare_entry("ParaView segments", "36", Integer(3, 3600),
+                        "Cells around the axis in the revolved surface of the ParaView "
+                        "output.");
       prm.leave_subsection();
     }
 
@@ -312,6 +319,8 @@ namespace cdea
       prm.enter_subsection("Output");
       directory    = prm.get("Directory");
       base_name    = prm.get("Base name");
+      paraview          = prm.get_bool("ParaView");
+      paraview_segments = prm.get_integer("ParaView segments");
       prm.leave_subsection();
     }
   } // namespace parameters
@@ -545,12 +554,13 @@ namespace cdea
     return parameters;
   }
 
-  std::string default_parameter_file()
+  std::string default_parameter_file(const ParameterFormat format)
   {
     ParameterHandler prm;
     Parameters::declare(prm);
     std::ostringstream out;
-    prm.print_parameters(out, ParameterHandler::Text);
+    prm.print_parameters(out, format == ParameterFormat::json ? ParameterHandler::JSON :
+                                                                ParameterHandler::PRM);
     return out.str();
   }
 } // namespace cdea

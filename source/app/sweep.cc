@@ -3,6 +3,7 @@
 // The continuation of one row is in sweep_row.cc, the file in sweep_file.cc.
 
 #include <cdea/app/commands.h>
+#include <cdea/app/mpi_session.h>
 #include <cdea/app/parameters.h>
 #include <cdea/app/sweep.h>
 
@@ -340,25 +341,12 @@ namespace cdea
       return {index, std::move(r)};
     }
 
+    /// Where this process stands in MPI_COMM_WORLD (alone when MPI is off).
     struct Mpi
     {
-      bool         active = false;
-      unsigned int rank = 0, size = 1;
-      Mpi()
-      {
-        int initialized = 0, finalized = 0;
-        MPI_Initialized(&initialized);
-        MPI_Finalized(&finalized);
-        active = initialized && !finalized;
-        if (active)
-          {
-            int r = 0, s = 1;
-            MPI_Comm_rank(MPI_COMM_WORLD, &r);
-            MPI_Comm_size(MPI_COMM_WORLD, &s);
-            rank = r;
-            size = s;
-          }
-      }
+      bool         active = mpi::initialized();
+      unsigned int rank   = mpi::rank();
+      unsigned int size   = mpi::size();
     };
 
     constexpr int progress_tag = 7401;
@@ -547,14 +535,16 @@ namespace cdea
     }
 
     /// Points done, total and time left: a live bar on a terminal, plain
-    /// lines every CDEA_PROGRESS_SECONDS (default 5) otherwise.
+    /// lines every CDEA_PROGRESS_SECONDS (default 5) otherwise and under an MPI
+    /// launcher (OpenMPI gives each rank a pseudo-terminal of its own, which
+    /// the launcher copies into one stream, often a file).
     class Progress
     {
     public:
       Progress(const std::size_t total, const bool enabled)
         : total(total)
         , enabled(enabled)
-        , terminal(isatty(fileno(stdout)) != 0)
+        , terminal(isatty(fileno(stdout)) != 0 && !mpi::launched_by_mpirun())
         , start(std::chrono::steady_clock::now())
         , last(start)
       {

@@ -20,6 +20,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <cdea/app/mpi_session.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/material/tension_field.h>
 #include <cdea/solver/arc_length.h>
@@ -98,7 +99,9 @@ namespace cdea
     std::vector<double>            band_lu;           ///< LAPACK band LU of the tangent
     std::vector<int>               pivots;
     bool                           factorized = false;
-    TrilinosWrappers::SparseMatrix trilinos_tangent; ///< copy for Trilinos KLU
+    /// Copy for Trilinos KLU, created on first use: constructing a Trilinos
+    /// matrix needs MPI, which only this solver option starts.
+    std::unique_ptr<TrilinosWrappers::SparseMatrix> trilinos_tangent;
     /// Factor the assembled tangent (banded LU), or copy it for Trilinos;
     /// false if it is singular.
     bool factorize();
@@ -406,7 +409,12 @@ namespace cdea
   {
     if (linear_solver == LinearSolver::trilinos_klu)
       {
-        trilinos_tangent.reinit(tangent);
+        if (!trilinos_tangent)
+          {
+            mpi::ensure_initialized();
+            trilinos_tangent = std::make_unique<TrilinosWrappers::SparseMatrix>();
+          }
+        trilinos_tangent->reinit(tangent);
         return true;
       }
     const int n = tangent.m(), kl = bandwidth, ku = bandwidth, ldab = 2 * kl + ku + 1;
@@ -434,7 +442,7 @@ namespace cdea
           {
             SolverControl                  control(1, 0.);
             TrilinosWrappers::SolverDirect direct(control);
-            direct.solve(trilinos_tangent, u, b);
+            direct.solve(*trilinos_tangent, u, b);
           }
         catch (const std::exception &)
           {

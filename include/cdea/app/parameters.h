@@ -134,6 +134,8 @@ namespace cdea
     {
       std::string directory;
       std::string base_name;
+      bool         paraview;          ///< also write <Base name>.pvd and its VTU files
+      unsigned int paraview_segments; ///< cells around the axis in the revolved surface
       static void declare(dealii::ParameterHandler &prm);
       void        parse(dealii::ParameterHandler &prm);
     };
@@ -168,8 +170,14 @@ namespace cdea
   /// parameters as deal.II writes them back (for the results file).
   Parameters read_parameters(const std::string &filename, std::string *text = nullptr);
 
+  enum class ParameterFormat
+  {
+    prm, ///< a .prm file with every entry documented
+    json ///< deal.II's JSON form: value, default, pattern and documentation of each entry
+  };
+
   /// A complete, documented parameter file with every default.
-  std::string default_parameter_file();
+  std::string default_parameter_file(ParameterFormat format = ParameterFormat::prm);
 
   /// One finite number, the whole of @p token; otherwise an InputError naming
   /// the parameter @p name and the entry @p text it came from.
