@@ -2,7 +2,9 @@
 #include <cdea/app/parameters.h>
 #include <cdea/app/pump.h>
 #include <cdea/fe/membrane_model.h>
+#include <cdea/output/paraview_writer.h>
 #include <cdea/output/results_file.h>
+#include <cdea/output/state_check.h>
 #include <cdea/shooting/shooting_model.h>
 #include <cdea/solver/load_stepper.h>
 
@@ -123,6 +125,9 @@ namespace cdea
                              "pre-stretched flat radius where the wrinkled zone ends");
         file.describe_column("max_field_MV_per_m", "MV/m",
                              "largest true electric field (NaN: breakdown check off)");
+        file.describe_column("nonphysical", "bits",
+                             "0: a possible state; 1: the meridian leaves 0 <= r <= b; "
+                             "2: it crosses itself or the disk (3: both)");
       }
 
       void header() const
@@ -141,8 +146,9 @@ namespace cdea
           reference_volume = volume;
         volume_change = volume - reference_volume; // NaN before the reference
         level_drop    = volume_change / tube_area;
-        const double lam = scene.prestretch;
-        file.append(s, model.fields(),
+        const double     lam    = scene.prestretch;
+        const StepFields fields = model.fields();
+        file.append(s, fields,
                     {{"volume_mm3", volume * 1e9},
                      {"volume_change_mm3", volume_change * 1e9},
                      {"level_drop_mm", level_drop * 1e3},
@@ -151,7 +157,8 @@ namespace cdea
                                                                double(s.min_eigenvalue > 0.)},
                      {"wrinkled_zone_inner_mm", lam * s.wrinkled_zone_inner * 1e3},
                      {"wrinkled_zone_outer_mm", lam * s.wrinkled_zone_outer * 1e3},
-                     {"max_field_MV_per_m", s.max_field * 1e-6}});
+                     {"max_field_MV_per_m", s.max_field * 1e-6},
+                     {"nonphysical", double(nonphysical_flags(fields, scene.frame_radius))}});
         last = s;
         std::ostringstream v;
         for (const double x : s.voltages)
@@ -220,7 +227,16 @@ namespace cdea
 
       StepRecorder recorder(*file, model, scene, tube_area(p));
       LoadStepper  stepper(scene, model, stepping_settings(p));
-      stepper.on_step  = [&](const StepSummary &s) { recorder.step(s); };
+      // ParaView output (Output/ParaView): a VTU per step, moved in place at the end.
+      std::unique_ptr<ParaViewWriter> paraview;
+      if (p.output.paraview)
+        paraview = std::make_unique<ParaViewWriter>(path.substr(0, path.size() - 3),
+                                                    p.output.paraview_segments);
+      stepper.on_step = [&](const StepSummary &s) {
+        recorder.step(s);
+        if (paraview)
+          paraview->write_step(s, model.fields());
+      };
       stepper.on_onset = [&](const OnsetRecord &onset) {
         file->write_onset(onset);
         std::cout << "      loss of tension (s2 = 0) at " << kv_list(onset.voltages)
@@ -265,6 +281,13 @@ namespace cdea
       const RunResult result = stepper.run();
       const double    seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+      if (paraview)
+        {
+          paraview->finish();
+          std::cout << "ParaView: " << paraview->n_steps() << " steps in "
+                    << path.substr(0, path.size() - 3) << ".pvd\n";
+        }
 
       const StepSummary &s = recorder.last;
       std::cout << "\nFinal state: voltages " << kv_list(s.voltages) << ", displacement "

@@ -1,0 +1,341 @@
+// VTK XML writer for ParaView (the file formats of "VTK File Formats",
+// VTK User's Guide): UnstructuredGrid pieces with their data appended as raw
+// little- or big-endian bytes, each block preceded by its byte count (UInt64),
+// and a Collection (PVD) listing one file per time.
+#include <cdea/output/paraview_writer.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <system_error>
+
+namespace cdea
+{
+  namespace
+  {
+    namespace fs = std::filesystem;
+
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+    bool little_endian()
+    {
+      const std::uint16_t one = 1;
+      unsigned char       first;
+      std::memcpy(&first, &one, 1);
+      return first == 1;
+    }
+
+    const char *byte_order()
+    {
+      return little_endian() ? "LittleEndian" : "BigEndian";
+    }
+
+    /// The raw bytes after <AppendedData encoding="raw">_ and the XML that
+    /// refers to them by offset.
+    class AppendedData
+    {
+    public:
+      template <typename T>
+      void add(const std::string &name, const char *type, const std::vector<T> &values,
+               const unsigned int components = 1)
+      {
+        xml << "        <DataArray type=\"" << type << "\"";
+        if (!name.empty())
+          xml << " Name=\"" << name << "\"";
+        if (components > 1)
+          xml << " NumberOfComponents=\"" << components << "\"";
+        xml << " format=\"appended\" offset=\"" << bytes.size() << "\"/>\n";
+        const std::uint64_t size = values.size() * sizeof(T);
+        bytes.append(reinterpret_cast<const char *>(&size), sizeof(size));
+        bytes.append(reinterpret_cast<const char *>(values.data()), size);
+      }
+
+      /// The XML written since the last call.
+      std::string take_xml()
+      {
+        std::string s = xml.str();
+        xml.str("");
+        return s;
+      }
+
+      std::string bytes;
+
+    private:
+      std::ostringstream xml;
+    };
+
+    /// Points, cells and point data of one piece.
+    struct Piece
+    {
+      std::vector<double>                            points; ///< x, y, z
+      std::vector<std::int64_t>                      connectivity, offsets;
+      std::vector<std::uint8_t>                      types;
+      std::vector<std::pair<std::string, std::vector<double>>> reals;
+      std::vector<std::int32_t>                      ring, wrinkled;
+
+      void add_cell(const std::uint8_t type, std::initializer_list<std::int64_t> vertices)
+      {
+        connectivity.insert(connectivity.end(), vertices);
+        offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
+        types.push_back(type);
+      }
+
+      std::size_t n_points() const { return points.size() / 3; }
+    };
+
+    constexpr std::uint8_t vtk_triangle = 5, vtk_quad = 9;
+
+    /// Names and values of the real point data of the film, in file units.
+    std::vector<std::pair<std::string, std::vector<double>>> film_data(const StepFields &f)
+    {
+      std::vector<std::pair<std::string, std::vector<double>>> d;
+      const auto add = [&](const std::string &name, const std::vector<double> &v,
+                           const double scale) {
+        std::vector<double> x(v.size());
+        for (std::size_t i = 0; i < v.size(); ++i)
+          x[i] = v[i] * scale;
+        d.emplace_back(name, std::move(x));
+      };
+      add("R", f.R, 1e3);
+      add("r", f.r, 1e3);
+      add("z", f.z, 1e3);
+      add("lambda1", f.lambda1, 1.);
+      add("lambda2", f.lambda2, 1.);
+      add("s1", f.s1, 1e-3);
+      add("s2", f.s2, 1e-3);
+      std::vector<double> sigma1(f.s1.size()), sigma2(f.s2.size());
+      for (std::size_t i = 0; i < sigma1.size(); ++i)
+        {
+          sigma1[i] = f.lambda1[i] * f.s1[i]; // true stress sigma_i = l_i s_i
+          sigma2[i] = f.lambda2[i] * f.s2[i];
+        }
+      add("sigma1", sigma1, 1e-3);
+      add("sigma2", sigma2, 1e-3);
+      add("E", f.E, 1e-6);
+      add("Phi", f.Phi, 1e-3);
+      return d;
+    }
+
+    /// The film: the meridian revolved about the axis in @p n segments.
+    Piece film(const StepSummary &s, const StepFields &f, const unsigned int n)
+    {
+      Piece             p;
+      const std::size_t m = f.R.size();
+      const auto        data = film_data(f);
+      p.reals.resize(data.size());
+      for (std::size_t a = 0; a < data.size(); ++a)
+        p.reals[a].first = data[a].first;
+      for (std::size_t i = 0; i < m; ++i)
+        {
+          // As the summary's wrinkled column: not in the pre-stretch stage,
+          // which starts from the stress-free film. Plain law: where s2 < 0.
+          // Relaxed law (it reports a zone): s2 = 0 where wrinkled, also at
+          // samples just outside the zone's quadrature points.
+          const bool relaxed_zone = !std::isnan(s.wrinkled_zone_inner);
+          const bool wrinkled =
+            s.stage != Stage::prestretch &&
+            (f.s2[i] < 0. ||
+             (relaxed_zone && (f.s2[i] == 0. || (f.R[i] >= s.wrinkled_zone_inner &&
+                                                 f.R[i] <= s.wrinkled_zone_outer))));
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              const double phi = 2. * M_PI * j / n;
+              p.points.insert(p.points.end(), {f.r[i] * 1e3 * std::cos(phi),
+                                               f.r[i] * 1e3 * std::sin(phi), f.z[i] * 1e3});
+              for (std::size_t a = 0; a < data.size(); ++a)
+                p.reals[a].second.push_back(data[a].second[i]);
+              p.ring.push_back(f.ring[i]);
+              p.wrinkled.push_back(wrinkled);
+            }
+        }
+      for (std::size_t i = 0; i + 1 < m; ++i)
+        {
+          if (!(f.R[i + 1] > f.R[i]))
+            continue; // the two samples of a ring edge: no cell between them
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              const std::int64_t a = i * n + j, b = i * n + (j + 1) % n;
+              p.add_cell(vtk_quad, {a, a + n, b + n, b});
+            }
+        }
+      return p;
+    }
+
+    /// The rigid disk: a fan of triangles at z(A) out to r(A), with the
+    /// film's point data (NaN where the disk has none, ring -1).
+    Piece disk(const StepFields &f, const unsigned int n, const Piece &film_piece)
+    {
+      Piece        p;
+      const double a = f.r.front() * 1e3, z = f.z.front() * 1e3;
+      p.points.insert(p.points.end(), {0., 0., z});
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          const double phi = 2. * M_PI * j / n;
+          p.points.insert(p.points.end(), {a * std::cos(phi), a * std::sin(phi), z});
+        }
+      for (unsigned int j = 0; j < n; ++j)
+        p.add_cell(vtk_triangle, {0, 1 + j, 1 + (j + 1) % n});
+      for (const auto &[name, values] : film_piece.reals)
+        {
+          std::vector<double> v(n + 1, nan);
+          if (name == "r")
+            for (unsigned int j = 0; j <= n; ++j)
+              v[j] = j == 0 ? 0. : a;
+          else if (name == "z")
+            v.assign(n + 1, z);
+          p.reals.emplace_back(name, std::move(v));
+        }
+      p.ring.assign(n + 1, -1);
+      p.wrinkled.assign(n + 1, 0);
+      return p;
+    }
+
+    std::string number(const double x)
+    {
+      std::ostringstream o;
+      o << std::setprecision(17) << x;
+      return o.str();
+    }
+
+    void write_vtu(const std::string &path, const StepSummary &s, const double time,
+                   const std::vector<Piece> &pieces)
+    {
+      AppendedData       data;
+      std::ostringstream xml;
+      xml << "<?xml version=\"1.0\"?>\n"
+          << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"" << byte_order()
+          << "\" header_type=\"UInt64\">\n  <UnstructuredGrid>\n    <FieldData>\n";
+      const auto field = [&](const char *name, const char *type,
+                             const std::vector<double> &values) {
+        xml << "      <DataArray type=\"" << type << "\" Name=\"" << name
+            << "\" NumberOfTuples=\"1\" NumberOfComponents=\"" << values.size()
+            << "\" format=\"ascii\">";
+        for (const double v : values)
+          xml << ' ' << number(v);
+        xml << " </DataArray>\n";
+      };
+      std::vector<double> kV;
+      for (const double v : s.voltages)
+        kV.push_back(v * 1e-3);
+      field("TimeValue", "Float64", {time});
+      field("stage", "Int32", {double(static_cast<int>(s.stage))});
+      field("load_factor", "Float64", {s.load_factor});
+      field("voltage_kV", "Float64", kV);
+      field("displacement_mm", "Float64", {s.displacement * 1e3});
+      xml << "    </FieldData>\n";
+      for (const Piece &p : pieces)
+        {
+          xml << "    <Piece NumberOfPoints=\"" << p.n_points() << "\" NumberOfCells=\""
+              << p.types.size() << "\">\n      <PointData Scalars=\"s2\">\n";
+          for (const auto &[name, values] : p.reals)
+            data.add(name, "Float64", values);
+          data.add("ring", "Int32", p.ring);
+          data.add("wrinkled", "Int32", p.wrinkled);
+          xml << data.take_xml() << "      </PointData>\n      <Points>\n";
+          data.add("", "Float64", p.points, 3);
+          xml << data.take_xml() << "      </Points>\n      <Cells>\n";
+          data.add("connectivity", "Int64", p.connectivity);
+          data.add("offsets", "Int64", p.offsets);
+          data.add("types", "UInt8", p.types);
+          xml << data.take_xml() << "      </Cells>\n    </Piece>\n";
+        }
+      xml << "  </UnstructuredGrid>\n  <AppendedData encoding=\"raw\">\n   _";
+      std::ofstream out(path, std::ios::binary);
+      out << xml.str();
+      out.write(data.bytes.data(), static_cast<std::streamsize>(data.bytes.size()));
+      out << "\n  </AppendedData>\n</VTKFile>\n";
+      out.close();
+      if (!out)
+        throw std::runtime_error("cannot write the ParaView file '" + path + "'");
+    }
+  } // namespace
+
+  ParaViewWriter::ParaViewWriter(const std::string &stem_, const unsigned int segments)
+    : stem(stem_)
+    , name(fs::path(stem_).filename().string())
+    , segments(segments)
+  {
+    if (segments < 3)
+      throw std::invalid_argument("ParaViewWriter: at least 3 segments are needed");
+    std::error_code error;
+    fs::remove_all(folder(true), error);
+    fs::create_directories(folder(true), error);
+    if (error || !fs::is_directory(folder(true)))
+      throw std::runtime_error("cannot create the ParaView folder '" + folder(true) +
+                               "'" + (error ? ": " + error.message() : std::string()));
+  }
+
+  std::string ParaViewWriter::folder(const bool partial) const
+  {
+    return stem + (partial ? "_vtu.partial" : "_vtu");
+  }
+
+  double ParaViewWriter::next_time(const double tau, const double previous_tau,
+                                   const double previous_time, bool &turned)
+  {
+    if (std::isnan(previous_time))
+      return tau;
+    if (!turned && tau > previous_tau)
+      return tau;
+    turned = true;
+    // Past a turn of t: on by the change of t (and by a little at a
+    // standstill, so that no two times are equal).
+    return previous_time + std::max(std::abs(tau - previous_tau), 1e-9);
+  }
+
+  void ParaViewWriter::write_step(const StepSummary &summary, const StepFields &fields)
+  {
+    if (fields.R.empty())
+      throw std::invalid_argument("ParaViewWriter: a step without samples");
+    const double tau  = static_cast<int>(summary.stage) - 2 + summary.load_factor;
+    const double time = next_time(tau, last_tau, times.empty() ? nan : times.back(), turned);
+    last_tau          = tau;
+    std::ostringstream file;
+    file << name << '_' << std::setw(6) << std::setfill('0') << times.size() << ".vtu";
+    const Piece membrane = film(summary, fields, segments);
+    write_vtu(folder(true) + "/" + file.str(), summary, time,
+              {membrane, disk(fields, segments, membrane)});
+    times.push_back(time);
+    write_collection(stem + ".partial.pvd", fs::path(folder(true)).filename().string());
+  }
+
+  void ParaViewWriter::write_collection(const std::string &path,
+                                        const std::string &vtu_folder) const
+  {
+    const std::string  temporary = path + ".tmp";
+    std::ofstream      out(temporary);
+    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\""
+        << byte_order() << "\">\n  <Collection>\n";
+    for (std::size_t k = 0; k < times.size(); ++k)
+      out << "    <DataSet timestep=\"" << number(times[k]) << "\" group=\"\" part=\"0\" file=\""
+          << vtu_folder << '/' << name << '_' << std::setw(6) << std::setfill('0') << k
+          << ".vtu\"/>\n"
+          << std::setfill(' ');
+    out << "  </Collection>\n</VTKFile>\n";
+    out.close();
+    std::error_code error;
+    if (out)
+      fs::rename(temporary, path, error);
+    if (!out || error)
+      throw std::runtime_error("cannot write the ParaView collection '" + path + "'");
+  }
+
+  void ParaViewWriter::finish()
+  {
+    std::error_code error;
+    fs::remove_all(folder(false), error);
+    if (!error)
+      fs::rename(folder(true), folder(false), error);
+    if (error)
+      throw std::runtime_error("cannot move the ParaView files to '" + folder(false) +
+                               "': " + error.message());
+    write_collection(stem + ".pvd", fs::path(folder(false)).filename().string());
+    fs::remove(stem + ".partial.pvd", error);
+  }
+} // namespace cdea

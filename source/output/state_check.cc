@@ -1,0 +1,69 @@
+#include <cdea/output/state_check.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace cdea
+{
+  namespace
+  {
+    struct Point2
+    {
+      double r, z;
+    };
+
+    bool operator==(const Point2 &a, const Point2 &b)
+    {
+      return a.r == b.r && a.z == b.z;
+    }
+
+    /// Sign of the turn a -> b -> c (cross product of b - a and c - a).
+    int orientation(const Point2 &a, const Point2 &b, const Point2 &c)
+    {
+      const double x = (b.r - a.r) * (c.z - a.z) - (b.z - a.z) * (c.r - a.r);
+      return (x > 0.) - (x < 0.);
+    }
+
+    /// Segments pq and uv cross at a point inside both (a touch at an end
+    /// point or a collinear overlap does not count: neighbouring segments
+    /// share end points).
+    bool cross(const Point2 &p, const Point2 &q, const Point2 &u, const Point2 &v)
+    {
+      const int o1 = orientation(p, q, u), o2 = orientation(p, q, v);
+      const int o3 = orientation(u, v, p), o4 = orientation(u, v, q);
+      return o1 * o2 < 0 && o3 * o4 < 0;
+    }
+  } // namespace
+
+  int nonphysical_flags(const StepFields &f, const double frame_radius)
+  {
+    int flags = physical;
+    // 1e-9 b: the end sample sits on the frame up to round-off.
+    const double tolerance = 1e-9 * frame_radius;
+    for (const double r : f.r)
+      if (r < -tolerance || r > frame_radius + tolerance)
+        flags |= outside_frame;
+
+    // The polyline: the disk from the axis to r(A), then the meridian, with
+    // repeated points (the two samples of a ring edge) dropped.
+    std::vector<Point2> line;
+    if (!f.r.empty())
+      line.push_back({0., f.z.front()});
+    for (std::size_t i = 0; i < f.r.size(); ++i)
+      {
+        const Point2 p{f.r[i], f.z[i]};
+        if (line.empty() || !(p == line.back()))
+          line.push_back(p);
+      }
+    // O(n^2) over a few hundred samples: microseconds per step.
+    for (std::size_t i = 0; i + 1 < line.size() && !(flags & self_intersection); ++i)
+      for (std::size_t j = i + 2; j + 1 < line.size(); ++j)
+        if (cross(line[i], line[i + 1], line[j], line[j + 1]))
+          {
+            flags |= self_intersection;
+            break;
+          }
+    return flags;
+  }
+} // namespace cdea
