@@ -79,6 +79,14 @@ namespace
     return d;
   }
 
+  /// "FE p=4, 4/ring": the default discretization of the library, by name.
+  std::string default_fe_name()
+  {
+    const FeDiscretization d;
+    return "FE p=" + std::to_string(d.degree) + ", " + std::to_string(d.elements_per_ring) +
+           "/ring";
+  }
+
   // ---------------------------------------------------------------------
   // Load stepping along a path: every converged voltage step.
 
@@ -481,8 +489,8 @@ int main(int argc, char **argv)
           };
           std::vector<Method> methods;
           methods.push_back(
-            {"FE p=3, 8/ring (default)",
-             std::make_unique<MembraneModel>(*scene, fe_disc(3, 8), NewtonSettings())});
+            {default_fe_name() + " (default)",
+             std::make_unique<MembraneModel>(*scene, FeDiscretization(), NewtonSettings())});
           methods.push_back(
             {"FE p=2, 2/ring (coarse)",
              std::make_unique<MembraneModel>(*scene, fe_disc(2, 2), NewtonSettings())});
@@ -606,8 +614,10 @@ int main(int argc, char **argv)
                   }
                 else
                   {
-                    cont = std::make_unique<MembraneModel>(target, fe_disc(3, 8), NewtonSettings());
-                    cold = std::make_unique<MembraneModel>(target, fe_disc(3, 8), NewtonSettings());
+                    cont = std::make_unique<MembraneModel>(target, FeDiscretization(),
+                                                           NewtonSettings());
+                    cold = std::make_unique<MembraneModel>(target, FeDiscretization(),
+                                                           NewtonSettings());
                   }
                 const PathRun r = step_path(*cont, target);
                 LoadStepper   driver(target, *cold, SteppingSettings());
@@ -628,7 +638,7 @@ int main(int argc, char **argv)
                 else
                   failures += " " + std::to_string(int(V));
               }
-            std::cout << "  " << (method == 0 ? "shooting (tolerance 1e-10)" : "FE p=3, 8/ring")
+            std::cout << "  " << (method == 0 ? "shooting (tolerance 1e-10)" : default_fe_name())
                       << ": " << n_ok << " of " << Vs.size() << " voltages from " << V_first
                       << " to " << V_last << " V converged, largest |displacement - continued| "
                       << worst * 1e3 << " mm"

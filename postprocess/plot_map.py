@@ -76,6 +76,8 @@ class Map:
             self.outer = np.asarray(f["outer_voltage_kV"][...], dtype=float)
             n, m = len(self.rv), len(self.outer)
             self.disp = np.asarray(f["displacement_mm"][...], dtype=float).reshape(n, m)
+            self.zero_disp = float(np.asarray(f.attrs.get("zero_voltage_displacement_mm",
+                                                          np.nan)).ravel()[0])
             self.inc = np.asarray(f["stroke_increase_percent"][...], dtype=float).reshape(n, m)
             self.s2 = np.asarray(f["s2_inner_edge_kPa"][...], dtype=float).reshape(n, m, 2)
             self.line = {}
@@ -131,12 +133,17 @@ def line_label(name):
             "blue": "blue line: equal s2 at both inner edges"}[name]
 
 
-def plot_map(mp, out_dir):
-    fig, ax = plt.subplots(figsize=(7.2, 5.0), constrained_layout=True)
-    data = np.ma.masked_invalid(mp.disp)
+def draw_map(fig, ax, mp, stroke=False):
+    """The map of one file on @p ax: displacement (or the stroke, displacement
+    minus its zero-voltage value, with @p stroke), both lines with their
+    maxima, and the region past the red line hatched: there the outer ring
+    has lost tension, so those layouts and voltages are not usable."""
+    values = mp.disp - mp.zero_disp if stroke else mp.disp
+    quantity = "stroke" if stroke else "displacement"
+    data = np.ma.masked_invalid(values)
     if len(mp.outer) > 1 and len(mp.rv) > 1:
         mesh = ax.pcolormesh(mp.outer, mp.rv, data, shading="nearest", cmap="viridis")
-        levels = np.arange(np.floor(np.nanmin(mp.disp)), np.ceil(np.nanmax(mp.disp)) + 1, 1.0)
+        levels = np.arange(np.floor(np.nanmin(values)), np.ceil(np.nanmax(values)) + 1, 1.0)
         if len(levels) > 1:
             cs = ax.contour(mp.outer, mp.rv, data, levels=levels, colors="white",
                             linewidths=0.5, alpha=0.6)
@@ -144,30 +151,58 @@ def plot_map(mp, out_dir):
     else:
         mesh = ax.scatter(np.repeat(mp.outer[None, :], len(mp.rv), 0),
                           np.repeat(mp.rv[:, None], len(mp.outer), 1), c=data, cmap="viridis")
-    fig.colorbar(mesh, ax=ax, label="displacement (mm)")
+    fig.colorbar(mesh, ax=ax, label=f"{quantity} (mm)")
+    red_outer = mp.line["red"][0]
+    if np.any(np.isfinite(red_outer)):
+        # Past the red line, up to the end of the grid (or where the row
+        # stopped): greyed and hatched.
+        right = np.where(np.isfinite(mp.highest), np.minimum(mp.highest, mp.outer[-1]),
+                         mp.outer[-1])
+        has = np.isfinite(red_outer)
+        rv, left, right = mp.rv[has], red_outer[has], np.maximum(right[has], red_outer[has])
+        if len(rv) > 1:  # out to the cell edges of the first and last row
+            half = 0.5 * (mp.rv[1] - mp.rv[0])
+            rv = np.concatenate(([rv[0] - half], rv, [rv[-1] + half]))
+            left = np.concatenate(([left[0]], left, [left[-1]]))
+            right = np.concatenate(([right[0]], right, [right[-1]]))
+        ax.fill_betweenx(rv, left, right,
+                         facecolor=(1, 1, 1, 0.55), edgecolor="0.25", hatch="///", lw=0,
+                         zorder=3, label="past the red line: lost tension, not usable")
     if not np.all(np.isnan(mp.highest)) and np.any(mp.highest < mp.outer[-1]):
         ax.plot(mp.highest, mp.rv, color="0.4", ls=":", lw=1.2,
                 label="highest outer voltage reached (fold)")
     for name, color, offset in (("red", "tab:red", (10, 6)), ("blue", "tab:blue", (-62, -16))):
         outer, inc = mp.line[name]
-        ax.plot(outer, mp.rv, color=color, lw=2, label=line_label(name))
+        ax.plot(outer, mp.rv, color=color, lw=2, label=line_label(name), zorder=4)
         best = mp.maximum(name)
         if best is not None:
             i, v, p = best
             ax.plot(v, mp.rv[i], marker="*", ms=15, color=color, mec="black", zorder=5)
             ax.annotate(f"{p:.1f} %", (v, mp.rv[i]), textcoords="offset points",
-                        xytext=offset, color="black", fontsize=9,
+                        xytext=offset, color="black", fontsize=9, zorder=6,
                         bbox=dict(boxstyle="round,pad=0.2", fc="white", alpha=0.8))
     ax.set_xlabel("outer ring voltage (kV)")
     ax.set_ylabel("r_v / a")
     ax.set_xlim(mp.outer[0], mp.outer[-1])
-    ax.set_title(f"inner ring at {mp.inner:g} kV: displacement; * = largest stroke increase "
+    ax.set_title(f"inner ring at {mp.inner:g} kV: {quantity}; * = largest stroke increase "
                  "on a line", fontsize=10)
-    ax.legend(loc="lower right", fontsize=7.5, framealpha=0.85)
+    ax.legend(loc="lower right", fontsize=7.5, framealpha=0.9).set_zorder(6)
+
+
+def plot_map(mp, out_dir):
+    fig, ax = plt.subplots(figsize=(7.2, 5.0), constrained_layout=True)
+    draw_map(fig, ax, mp)
     path = os.path.join(out_dir, f"{mp.base}_map.png")
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path
+
+
+# Colours of the red and the blue line of each map in a combined figure: the
+# first map in red and blue, the next ones in other hues, so that two inner
+# voltages never share a colour.
+LINE_COLORS = [("tab:red", "tab:blue"), ("tab:orange", "tab:cyan"), ("tab:pink", "tab:purple"),
+               ("tab:brown", "tab:green")]
 
 
 def plot_increase(maps, path, paper):
@@ -175,7 +210,8 @@ def plot_increase(maps, path, paper):
     markers = ["o", "s", "^", "D", "v"]
     for j, mp in enumerate(maps):
         mk = markers[j % len(markers)]
-        for name, color, ls in (("red", "tab:red", "-"), ("blue", "tab:blue", "--")):
+        red, blue = LINE_COLORS[j % len(LINE_COLORS)]
+        for name, color, ls in (("red", red, "-"), ("blue", blue, "--")):
             outer, inc = mp.line[name]
             label = f"inner {mp.inner:g} kV, {name} line"
             ax.plot(mp.rv, inc, color=color, ls=ls, marker=mk, ms=3.5, lw=1.4, label=label)
@@ -190,7 +226,7 @@ def plot_increase(maps, path, paper):
         if paper:
             for name, rv, p in PAPER.get(round(mp.inner, 6), []):
                 ax.plot(rv, p, marker=mk, ms=11, ls="none", mfc="none",
-                        mec="tab:red" if name == "red" else "tab:blue", mew=2.2, zorder=6,
+                        mec=red if name == "red" else blue, mew=2.2, zorder=6,
                         label=f"paper: largest increase, inner {mp.inner:g} kV, {name} line")
     ax.set_xlabel("r_v / a")
     ax.set_ylabel("stroke increase on the line (%)")

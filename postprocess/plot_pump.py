@@ -114,8 +114,8 @@ class PumpRun:
         return [i for i in self.rows if abs(self.t[i] - round(self.t[i])) < 1e-9]
 
 
-def plot(runs, out, paper):
-    fig, ax = plt.subplots(figsize=(6.0, 4.2))
+def draw(ax, runs, paper):
+    """The level-drop curves of @p runs (and the paper's points) on @p ax."""
     colors = ["tab:blue", "tab:orange", "tab:green", "tab:purple", "tab:brown"]
     for k, run in enumerate(runs):
         color = colors[k % len(colors)]
@@ -145,6 +145,11 @@ def plot(runs, out, paper):
     ax.set_title("Pump module: water level drop (dashed: both rings ramped together)",
                  fontsize=9)
     ax.grid(alpha=0.3)
+
+
+def plot(runs, out, paper):
+    fig, ax = plt.subplots(figsize=(6.0, 4.2))
+    draw(ax, runs, paper)
     ax.legend(fontsize=8, loc="upper left")
     fig.tight_layout()
     fig.savefig(out, dpi=100)

@@ -107,6 +107,11 @@ class Run:
             self.stroke_mm = self._column(s, "stroke_mm")
             self.mass_g = self._column(s, "mass_g")
             self.wrinkled = self._column(s, "wrinkled", fill=0).astype(int)
+            # 0: possible; bit 1: r outside [0, b]; bit 2: the meridian crosses
+            # itself or the disk (files of older versions lack the column).
+            self.nonphysical = np.nan_to_num(self._column(s, "nonphysical", fill=0)).astype(int)
+            # The relaxed law's wrinkled zone (pre-stretched flat radii, mm).
+            self.zone_inner_mm = self._column(s, "wrinkled_zone_inner_mm")
 
             self.onset_found = int(np.asarray(s.attrs.get("onset_found", 0)).ravel()[0]) == 1
             onset_v = s.attrs.get("onset_voltage_kV", None)
@@ -178,7 +183,43 @@ class Run:
                      STAGE_LOAD: " (load)"}.get(int(self.stage[step]), "")
         if self.wrinkled[step]:
             text += ", wrinkled"
+        if self.nonphysical[step]:
+            text += ", NON-PHYSICAL"
         return text
+
+    def nonphysical_reason(self, step):
+        bits = self.nonphysical[step]
+        reasons = [text for bit, text in ((1, "r beyond the frame or the axis"),
+                                          (2, "the meridian crosses itself or the disk"))
+                   if bits & bit]
+        return " and ".join(reasons)
+
+    def wrinkled_points(self, step, fields):
+        """Samples of a step that have lost tension: s2 < 0 (plain law), or
+        s2 = 0 where the relaxed law reports a wrinkled zone; none in the
+        pre-stretch stage (it starts from the stress-free film)."""
+        if self.stage[step] == STAGE_PRESTRETCH:
+            return np.zeros(len(fields["s2"]), dtype=bool)
+        mask = fields["s2"] < 0
+        if np.isfinite(self.zone_inner_mm[step]):
+            mask |= fields["s2"] == 0
+        return mask
+
+    def x_axis(self, rows):
+        """x values and label of a curve over the voltage stage: the voltage
+        (one ring); with several rings the outer ring's voltage, unless the
+        path holds it while other rings move (then the path parameter t)."""
+        v = self.voltage_kV[rows]
+        if self.n_rings == 1:
+            return v[:, 0], "voltage Φ (kV)"
+        outer_held = np.any((np.diff(v[:, -1]) == 0) &
+                            np.any(np.diff(v[:, :-1], axis=0) != 0, axis=1))
+        if not outer_held:
+            return v[:, -1], f"voltage of the outer ring (ring {self.n_rings}, kV)"
+        x = self.load_factor[rows].copy()
+        if self.stage[rows[0]] != STAGE_VOLTAGE and len(rows) > 1:
+            x[0] = 0.0  # end of the load stage = start of the voltage path
+        return x, "voltage path parameter t (the outer voltage is held on part of the path)"
 
 
 # ---------------------------------------------------------------- steps
@@ -256,6 +297,32 @@ def ring_segments(fields):
     return segments
 
 
+def true_runs(mask):
+    """Index arrays of the maximal runs of True in a boolean array."""
+    runs, start = [], None
+    for k, flag in enumerate(list(mask) + [False]):
+        if flag and start is None:
+            start = k
+        elif not flag and start is not None:
+            runs.append(np.arange(start, k))
+            start = None
+    return runs
+
+
+def shade_wrinkled(ax, x, y, mask, label):
+    """A wide translucent red band under the wrinkled part of a curve.
+    Returns the label if it was used (so that it appears once)."""
+    for idx in true_runs(mask):
+        if len(idx) == 1:
+            ax.plot(x[idx], y[idx], "o", color="tab:red", ms=9, alpha=0.35, zorder=1,
+                    label=label)
+        else:
+            ax.plot(x[idx], y[idx], color="tab:red", lw=9, alpha=0.3, zorder=1,
+                    solid_capstyle="round", label=label)
+        label = None
+    return label
+
+
 def downward_sign(run, loaded):
     """+1 if the solver's z grows downward (the loaded disk lies at larger z
     than the frame), else -1: the disk always sags under its dead load."""
@@ -276,13 +343,23 @@ def plot_profiles(run, steps, all_fields, out):
     shades = step_shades(len(steps))
     handles, labels = [], []
     disk_r, disk_depths = 0.0, []
+    wrinkle_label, wrinkle_handle = "wrinkled (lost tension)", None
+    depth_range = [0.0, 0.0]
     for shade, step in zip(shades, steps):
         f = all_fields[step]
         depth = sign * (f["z"] - f["z"][-1])  # below the frame plane, mm
+        depth_range = [min(depth_range[0], depth.min()), max(depth_range[1], depth.max())]
+        wrinkled = run.wrinkled_points(step, f)
+        if wrinkled.any() and wrinkle_handle is None:
+            shade_wrinkled(ax, f["r"], depth, wrinkled, wrinkle_label)
+            wrinkle_handle = ax.lines[-1]
+        elif wrinkled.any():
+            shade_wrinkled(ax, f["r"], depth, wrinkled, None)
         step_handles = {}
+        style = "--" if run.nonphysical[step] else "-"
         for ring, idx in ring_segments(f):
             cmap = plt.get_cmap(RING_COLORMAPS[ring % len(RING_COLORMAPS)])
-            (line,) = ax.plot(f["r"][idx], depth[idx], color=cmap(shade), lw=1.6)
+            (line,) = ax.plot(f["r"][idx], depth[idx], color=cmap(shade), lw=1.6, ls=style)
             step_handles.setdefault(ring, line)
         disk_r = max(disk_r, f["r"][0])
         disk_depths.append(depth[0])
@@ -291,18 +368,29 @@ def plot_profiles(run, steps, all_fields, out):
         handles.append(tuple(step_handles[k] for k in sorted(step_handles)))
         labels.append(f"{run.voltage_label(step)} (step {step})")
     frame_r = max(all_fields[s]["r"][-1] for s in steps)
+    r_max = max(np.max(all_fields[s]["r"]) for s in steps)
     ax.plot([frame_r, frame_r * 1.04], [0, 0], color="dimgray", lw=4,
             solid_capstyle="butt")
     ax.axhline(0.0, color="gray", lw=0.6, ls=":")
-    ax.invert_yaxis()
-    ax.set_xlim(0.0, frame_r * 1.05)
+    # Equal scales: the cone's true shape. Nothing is cut off, also not a
+    # non-physical state reaching beyond the frame.
+    ax.set_aspect("equal", adjustable="box")
+    ax.set_xlim(0.0, max(frame_r * 1.05, r_max * 1.02))
+    margin = 0.05 * (depth_range[1] - depth_range[0] + 1.0)
+    ax.set_ylim(depth_range[1] + margin, depth_range[0] - margin)  # positive down
     ax.set_xlabel("r (mm)")
     ax.set_ylabel("z below the frame plane (mm, positive down)")
-    ax.set_title(f"Deformed meridians: {os.path.basename(run.path)}\n"
-                 "(black: rigid disk; one colour per electrode ring, darker = later)",
-                 fontsize=10)
+    notes = "black: rigid disk; one colour per electrode ring, darker = later"
+    if any(run.nonphysical[s] for s in steps):
+        notes += "\ndashed: non-physical state (" + "; ".join(
+            sorted({run.nonphysical_reason(s) for s in steps if run.nonphysical[s]})) + ")"
+    ax.set_title(f"Deformed meridians: {os.path.basename(run.path)}\n({notes})", fontsize=10)
+    if wrinkle_handle is not None:
+        handles.append(wrinkle_handle)
+        labels.append(wrinkle_label)
     ax.legend(handles, labels, handler_map={tuple: HandlerTuple(ndivide=None)},
-              fontsize=8, loc="lower right", framealpha=0.9)
+              fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=2,
+              frameon=False)
     ax.grid(alpha=0.3)
     fig.tight_layout()
     fig.savefig(out, dpi=130)
@@ -340,20 +428,19 @@ def plot_displacement(run, out):
         if end_load is not None and np.all(run.voltage_kV[end_load] == 0.0):
             rows = np.concatenate(([end_load], rows))  # the zero-voltage state
     single = run.n_rings == 1
-    if single:
-        x = run.voltage_kV[rows, 0]
-        xlabel = "voltage Φ (kV)"
-    else:
-        x = run.load_factor[rows].copy()
-        if run.stage[rows[0]] != STAGE_VOLTAGE and len(rows) > 1:
-            x[0] = 0.0  # end of the load stage = start of the voltage path
-        xlabel = "voltage path parameter t"
+    x, xlabel = run.x_axis(rows)
+    on_path_parameter = xlabel.startswith("voltage path parameter")
 
     fig, ax = plt.subplots(figsize=(7.5, 5.6))
     ax.plot(x, run.displacement_mm[rows], "o-", ms=3, color="tab:blue",
             label="displacement")
     if np.any(np.isfinite(run.stroke_mm[rows])):
         ax.plot(x, run.stroke_mm[rows], "s--", ms=3, color="tab:green", label="stroke")
+    bad = run.nonphysical[rows] != 0
+    if np.any(bad):
+        reasons = "; ".join(sorted({run.nonphysical_reason(r) for r in rows[bad]}))
+        ax.plot(x[bad], run.displacement_mm[rows][bad], "x", ms=7, mew=1.5, color="black",
+                label=f"non-physical state ({reasons})")
     ax.set_xlabel(xlabel)
     ax.set_ylabel("displacement, stroke (mm)")
 
@@ -372,8 +459,8 @@ def plot_displacement(run, out):
 
     if run.onset_found:
         off_path = ""
-        if single:
-            x_onset = run.onset_voltage_kV[0]
+        if not on_path_parameter:
+            x_onset = run.onset_voltage_kV[-1]
         elif np.isfinite(run.onset_load_factor):
             x_onset = run.onset_load_factor  # written by the solver: exact
         else:
@@ -394,7 +481,8 @@ def plot_displacement(run, out):
     if not single:
         ax2 = ax.twinx()
         styles = ["-", "--", ":", "-."]
-        for ring in range(run.n_rings):
+        shown = range(run.n_rings) if on_path_parameter else range(run.n_rings - 1)
+        for ring in shown:
             ax2.plot(x, run.voltage_kV[rows, ring], color="gray", lw=1.0,
                      ls=styles[ring % len(styles)], label=f"ring {ring + 1} voltage")
         ax2.set_ylabel("ring voltage (kV)", color="dimgray")
@@ -426,14 +514,19 @@ def plot_distributions(run, steps, all_fields, out):
               ("s2", r"$s_2/\mu$" if mu else r"$s_2$ (kPa)", 1.0 / mu if mu else 1.0)]
     colors = plt.get_cmap("viridis")(np.linspace(0.0, 0.9, len(steps)))
     for ax, (key, ylabel, factor) in zip(axes.flat, panels):
+        wrinkle_label = "wrinkled (lost tension)"
         for color, step in zip(colors, steps):
             f = all_fields[step]
             a = f["r"][0]
             label = f"{run.voltage_label(step)} (step {step})"
+            wrinkled = run.wrinkled_points(step, f)
             for ring, idx in ring_segments(f):
                 ax.plot(f["r"][idx] / a, f[key][idx] * factor, color=color, lw=1.4,
-                        label=label)
+                        label=label, ls="--" if run.nonphysical[step] else "-")
                 label = None
+                if wrinkled[idx].any():
+                    wrinkle_label = shade_wrinkled(ax, f["r"][idx] / a, f[key][idx] * factor,
+                                                   wrinkled[idx], wrinkle_label)
         ax.set_ylabel(ylabel)
         ax.grid(alpha=0.3)
         if key == "s2":

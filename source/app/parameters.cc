@@ -115,8 +115,9 @@ namespace cdea
                         "the meridian stretch varies fastest. 1 is uniform.");
       prm.declare_entry("Global refinements", "0", Integer(0, 20),
                         "Times every element is bisected (h-refinement studies).");
-      prm.declare_entry("Samples per element", "4", Integer(1, 1000),
-                        "Equally spaced points per element at which fields are written.");
+      prm.declare_entry("Samples per element", "16", Integer(1, 1000),
+                        "Equally spaced points per element at which fields are written (enough for "
+                        "smooth profiles in plots and ParaView).");
       prm.leave_subsection();
     }
 

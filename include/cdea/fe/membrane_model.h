@@ -39,7 +39,7 @@ namespace cdea
     unsigned int elements_per_ring   = 4;
     double       grading             = 4.;
     unsigned int refinements         = 0;
-    unsigned int samples_per_element = 4;
+    unsigned int samples_per_element = 16;
   };
 
   /// Hydrostatic load of the pump module's water (doc/pump.md). The water
