@@ -187,7 +187,7 @@ def stroke(run):
 
 def save(fig, out, name):
     path = os.path.join(out, f"paper-fig{name}.png")
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=90)
     plt.close(fig)
     print("wrote", path)
 

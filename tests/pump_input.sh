@@ -6,14 +6,7 @@
 # columns: volume_mm3 everywhere, volume_change_mm3 and level_drop_mm NaN
 # before the end of the load stage, level_drop = volume_change / (20 x 20);
 # postprocess/plot_pump.py plots it.
-set -u
-exe="${CDEA_EXECUTABLE:?}"
-src="${CDEA_SOURCE_DIR:?}"
-PYTHON=${PYTHON:-/usr/bin/python3}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-failures=0
+source "$(dirname "$0")/script_helpers.bash"
 
 # case NAME COMMAND "sed expression on prm/pump.prm" "text the message must contain"
 case_() {
@@ -95,5 +88,4 @@ else
   echo "FAIL prm/pump.prm: $(cat pump.err)"; failures=$((failures + 1))
 fi
 
-echo "$failures failed"
-[ $failures -eq 0 ]
+finish

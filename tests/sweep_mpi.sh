@@ -3,19 +3,11 @@
 # same data bit for bit (the rows are dealt round-robin to the ranks and each is
 # computed from scratch; rank 0 gathers them) and, having no run-dependent
 # content, be the same bytes. Also: rank 0 alone prints (one table, one
-# progress report), plain progress lines under mpirun without being told, bad input under
-# mpirun (one message, non-zero exit, no file), and postprocess/plot_map.py on
-# the result. Needs mpirun (Debian: openmpi-bin) and python3 with h5py.
-set -u
-exe="${CDEA_EXECUTABLE:?}"
-src="${CDEA_SOURCE_DIR:?}"
-PYTHON=${PYTHON:-/usr/bin/python3}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-failures=0
-fail() { echo "FAIL $*"; failures=$((failures + 1)); }
-ok() { echo "ok   $*"; }
+# progress report), plain progress lines under mpirun without being told to,
+# bad input under mpirun (one message, non-zero exit, no file), and
+# postprocess/plot_map.py on the result. Needs mpirun (Debian: openmpi-bin) and
+# python3 with h5py.
+source "$(dirname "$0")/script_helpers.bash"
 
 command -v mpirun > /dev/null || { echo "FAIL mpirun not found (Debian: openmpi-bin)"; exit 1; }
 # Root (containers, CI) needs the explicit permission; allow more ranks than
@@ -112,5 +104,4 @@ fi
   fail "plot_map.py on a non-map file exits 0" ||
   { grep -q "not a cdea map file" perr.txt && ok "plot_map.py: non-map file rejected" || fail "plot_map.py message: $(cat perr.txt)"; }
 
-echo "$failures failed"
-[ $failures -eq 0 ]
+finish

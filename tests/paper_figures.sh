@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# postprocess/paper_figures.py --quick: runs cdea for every figure, writes the
+# seven PNGs, and prints the comparison with the paper's experiments. The two
+# measured increases are computed from the red line, which cdea sweep locates
+# by root finding (independent of the map's grid), so the numbers must equal
+# the independent values of bench_failure_modes (doc/validation.md, section
+# 5): +54.01 % at r_v/a = 1.4 over both rings at 5.0 kV, +19.44 % at 1.7 over
+# both at 5.5 kV, stroke 5.5448 mm at 5 kV. Also: bad --only and a bad CSV
+# give exit 1 and a message.
+source "$(dirname "$0")/script_helpers.bash"
+
+script="$src/postprocess/paper_figures.py"
+if "$PYTHON" "$script" --quick --cdea "$exe" --work "$work/runs" --out "$work/figs" \
+     --measured "$src/postprocess/paper_measured.csv" > "$work/out.txt" 2> "$work/err.txt"; then
+  ok "paper_figures.py --quick exits 0"
+else
+  fail "paper_figures.py exit status"; cat "$work/err.txt"
+fi
+for n in 3 4 6 7 8 9 11; do
+  f="$work/figs/paper-fig$n.png"
+  [ -s "$f" ] && [ "$(head -c 4 "$f" | tail -c 3)" = "PNG" ] && ok "paper-fig$n.png written" ||
+    fail "paper-fig$n.png missing or not a PNG"
+done
+grep -q "both rings at 5.0 kV: 5.5448 mm" "$work/out.txt" &&
+  ok "stroke with both rings at 5 kV: 5.5448 mm" || fail "stroke at 5 kV: $(grep 'both rings' "$work/out.txt")"
+line=$(grep "measured (paper, section 4)" "$work/out.txt")
+case "$line" in
+  *"over both at 5.0 kV -> cdea +54.01 %"*"over both at 5.5 kV -> cdea +19.44 %"*)
+    ok "experiments: $line" ;;
+  *) fail "experiments line: '$line'" ;;
+esac
+
+"$PYTHON" "$script" --only 5 --cdea "$exe" --work "$work/r2" --out "$work/f2" > /dev/null 2> "$work/e2.txt" &&
+  fail "--only 5 exits 0" || { grep -q "no figure 5" "$work/e2.txt" && ok "--only 5 rejected" || fail "message: $(cat "$work/e2.txt")"; }
+printf 'figure,series,x,y\n11,bad,four,24\n' > "$work/bad.csv"
+"$PYTHON" "$script" --only 11 --measured "$work/bad.csv" --cdea "$exe" --work "$work/r3" --out "$work/f3" \
+  > /dev/null 2> "$work/e3.txt" &&
+  fail "a bad CSV exits 0" || { grep -q "data line 1" "$work/e3.txt" && ok "bad CSV rejected: $(cat "$work/e3.txt")" || fail "message: $(cat "$work/e3.txt")"; }
+
+finish
