@@ -66,4 +66,17 @@ namespace cdea
           }
     return flags;
   }
+
+  std::vector<SummaryColumn> NonPhysicalCheck::columns() const
+  {
+    return {{"nonphysical", "bits",
+             "0: a possible state; 1: the meridian leaves 0 <= r <= b; 2: it crosses itself "
+             "or the disk (3: both)"}};
+  }
+
+  void NonPhysicalCheck::evaluate(StepContext &context, StepSummary &summary)
+  {
+    summary.columns.emplace_back("nonphysical",
+                                 double(nonphysical_flags(context.fields(), frame_radius)));
+  }
 } // namespace cdea

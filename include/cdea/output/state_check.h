@@ -6,6 +6,7 @@
 // itself or the disk. Such states are flagged, not removed.
 
 #include <cdea/output/records.h>
+#include <cdea/solver/postprocessors.h>
 
 namespace cdea
 {
@@ -22,4 +23,18 @@ namespace cdea
   /// the samples only: a crossing between two samples is judged from the
   /// straight segments joining them.
   int nonphysical_flags(const StepFields &fields, double frame_radius);
+
+  /// The postprocessor of the /summary column `nonphysical` (the bits above).
+  class NonPhysicalCheck final : public Postprocessor
+  {
+  public:
+    explicit NonPhysicalCheck(double frame_radius)
+      : frame_radius(frame_radius)
+    {}
+    std::vector<SummaryColumn> columns() const override;
+    void evaluate(StepContext &context, StepSummary &summary) override;
+
+  private:
+    double frame_radius;
+  };
 } // namespace cdea
