@@ -5,7 +5,6 @@
 
 #include <cstdlib>
 #include <memory>
-#include <string>
 
 namespace cdea
 {
@@ -33,17 +32,6 @@ namespace cdea
       const char *value = std::getenv(name);
       return value != nullptr && *value != '\0';
     }
-
-    /// A positive integer from the environment, or 0.
-    unsigned int variable_number(const char *name)
-    {
-      const char *value = std::getenv(name);
-      if (value == nullptr)
-        return 0;
-      char         *end = nullptr;
-      const long    n   = std::strtol(value, &end, 10);
-      return end != value && n > 0 ? static_cast<unsigned int>(n) : 0;
-    }
   } // namespace
 
   namespace mpi
@@ -53,17 +41,6 @@ namespace cdea
       return has_variable("OMPI_COMM_WORLD_SIZE") || has_variable("PMIX_RANK") ||
              has_variable("PMI_RANK") ||
              (has_variable("SLURM_STEP_ID") && has_variable("SLURM_PROCID"));
-    }
-
-    unsigned int launched_size()
-    {
-      if (!launched_by_mpirun())
-        return 1;
-      for (const char *name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE",
-                               "SLURM_STEP_NUM_TASKS", "SLURM_NTASKS"})
-        if (const unsigned int n = variable_number(name))
-          return n;
-      return 1;
     }
 
     void ensure_initialized()

@@ -16,10 +16,6 @@ namespace cdea
     /// SLURM_STEP_ID and SLURM_PROCID). Reads the environment only.
     bool launched_by_mpirun();
 
-    /// Number of processes the launcher started (1 without a launcher), from
-    /// the environment, before and without MPI_Init.
-    unsigned int launched_size();
-
     /// Initialise MPI (through deal.II, so that Trilinos and PETSc are set up
     /// too) unless that has happened already. It is finalised when the
     /// MpiSession ends, or at the end of the program without one.
