@@ -88,7 +88,7 @@ round() { # round old|new
   record "$1" map_work '^\(equilibrium solves per map: [0-9]*, Newton iterations: [0-9]*\).*'
 }
 echo
-echo "speed: $rounds rounds of bench_default $default_prm 31 3 and bench_sweep $sweep_prm 3 0"
+echo "speed: $rounds rounds of bench_default ${default_prm#$repo/} 31 3 and bench_sweep ${sweep_prm#$repo/} 3 0"
 for ((k = 1; k <= rounds; ++k)); do
   if ((k % 2)); then round old; round new; else round new; round old; fi
   echo "  round $k of $rounds done (load average $(cut -d' ' -f1 /proc/loadavg))"

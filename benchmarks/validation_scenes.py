@@ -7,11 +7,12 @@ Usage:
       writes PRM_DIR/<scene>.prm (default discretization and solver settings)
       whose results go to RESULTS_DIR/<scene>.h5
   validation_scenes.py compare OLD_DIR NEW_DIR
-      for every /summary column: the largest difference between the two
-      results of a scene over all its rows (relative to the column's largest
-      magnitude in the old file) and at the last row (relative to the old
-      value), the largest over the scenes; exit 1 if a scene is missing or
-      the rows differ in number.
+      for every floating-point /summary column: the largest difference
+      between the two results of a scene over all its rows (relative to the
+      column's largest magnitude in the old file; where, with both values)
+      and at the last row (relative to the old value), the largest over the
+      scenes; for every integer column the rows that differ; exit 1 if a
+      scene is missing or the rows differ in number.
 
 Used by benchmarks/compare_revisions.sh. Needs h5py and numpy.
 """
@@ -80,7 +81,9 @@ def compare(old_dir, new_dir):
     import h5py
     import numpy as np
 
-    worst = {}  # column -> [all rows, scene, last row, scene]
+    # column -> worst over the scenes: [all rows, scene, row, old, new, last row, scene]
+    worst = {}
+    differing = {}  # integer column -> [rows that differ, rows, where]
     problems = []
     for name, *_ in SCENES:
         paths = [os.path.join(d, name + ".h5") for d in (old_dir, new_dir)]
@@ -92,34 +95,44 @@ def compare(old_dir, new_dir):
                 if column not in new["summary"]:
                     problems.append(f"{name}: column {column} missing in the new results")
                     continue
-                a = np.asarray(old["summary"][column], dtype=float)
-                b = np.asarray(new["summary"][column], dtype=float)
+                a, b = np.asarray(old["summary"][column]), np.asarray(new["summary"][column])
                 if a.shape != b.shape:
                     problems.append(f"{name}: {column} has shape {a.shape} old, {b.shape} new")
                     continue
-                nan_a, nan_b = np.isnan(a), np.isnan(b)
-                if np.any(nan_a != nan_b):
+                if a.dtype.kind in "iub":
+                    d = differing.setdefault(column, [0, 0, []])
+                    rows = np.nonzero(np.any((a != b).reshape(len(a), -1), axis=1))[0]
+                    d[0] += len(rows)
+                    d[1] += len(a)
+                    d[2] += [f"{name} row {r}: {a[r]} -> {b[r]}" for r in rows]
+                    continue
+                a, b = a.reshape(len(a), -1), b.reshape(len(b), -1)
+                if np.any(np.isnan(a) != np.isnan(b)):
                     problems.append(f"{name}: {column} is NaN in different rows")
                     continue
-                a, b = np.where(nan_a, 0.0, a), np.where(nan_b, 0.0, b)
-                scale = np.max(np.abs(a)) if a.size else 0.0
-                diff = np.abs(a - b)
-                all_rows = np.max(diff) / scale if scale > 0 else float(np.max(diff, initial=0))
-                last_a, last_b = a[-1], b[-1]
+                a, b = np.nan_to_num(a), np.nan_to_num(b)
+                scale = np.max(np.abs(a), initial=0.0)
+                diff = np.abs(a - b) / (scale if scale > 0 else 1.0)
+                row, k = np.unravel_index(np.argmax(diff), diff.shape) if diff.size else (0, 0)
                 with np.errstate(invalid="ignore", divide="ignore"):
-                    last = np.where(last_a != 0, np.abs(last_b - last_a) / np.abs(last_a),
-                                    np.abs(last_b - last_a))
-                last = float(np.max(last, initial=0))
-                w = worst.setdefault(column, [0.0, "", 0.0, ""])
-                if all_rows >= w[0]:
-                    w[0], w[1] = all_rows, name
-                if last >= w[2]:
-                    w[2], w[3] = last, name
-    print(f"{'/summary column':<24} {'all rows':>10}  {'scene':<20} {'last row':>10}  scene")
-    for column, (all_rows, s_all, last, s_last) in sorted(worst.items()):
-        print(f"{column:<24} {all_rows:10.2e}  {s_all:<20} {last:10.2e}  {s_last}")
-    print("(all rows: max |new - old| over the scene's rows / max |old| of the column; last row:"
-          " |new - old| / |old| at the end state; largest over the 12 scenes)")
+                    last = np.where(a[-1] != 0, np.abs(b[-1] - a[-1]) / np.abs(a[-1]),
+                                    np.abs(b[-1] - a[-1]))
+                last = float(np.max(last, initial=0.0))
+                w = worst.setdefault(column, [-1.0, "", 0, 0.0, 0.0, -1.0, ""])
+                if diff.size and diff[row, k] > w[0]:
+                    w[:5] = [float(diff[row, k]), name, int(row), a[row, k], b[row, k]]
+                if last > w[5]:
+                    w[5:] = [last, name]
+    print(f"{'/summary column':<23}{'all rows':>10}  {'where: scene, row, old -> new':<55}"
+          f"{'last row':>10}  scene")
+    for column, (all_rows, s_all, row, a, b, last, s_last) in sorted(worst.items()):
+        where = f"{s_all}, {row}, {a:.6g} -> {b:.6g}"
+        print(f"{column:<23}{all_rows:10.2e}  {where:<55}{last:10.2e}  {s_last}")
+    print("(all rows: largest |new - old| over the rows of a scene over the largest |old| of the"
+          " column there;\n last row: |new - old| / |old| at the end of the path; both the"
+          " largest over the 12 scenes)")
+    for column, (n, total, where) in sorted(differing.items()):
+        print(f"{column}: {n} of {total} rows differ" + (": " + "; ".join(where) if where else ""))
     for p in problems:
         print("MISMATCH:", p)
     return 1 if problems else 0
