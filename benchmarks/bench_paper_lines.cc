@@ -278,8 +278,10 @@ namespace
                       << l.fe.blue.outer_voltage - l.sh.blue.outer_voltage << std::setw(9)
                       << l.fe.red.outer_voltage - l.sh.red.outer_voltage << std::setw(9)
                       << l.fe.red.stroke_increase - l.sh.red.stroke_increase
-                      << std::defaultfloat << std::setprecision(7)
-                      << (l.fe.message.empty() ? "" : "  " + l.fe.message) << "\n";
+                      << std::defaultfloat << std::setprecision(7);
+            if (!l.fe.message.empty())
+              std::cout << "  fold above " << l.fe.highest_voltage * 1e-3 << " kV";
+            std::cout << "\n";
           }
       }
     require(bool(csv), "could not write " + (dir / "paper_lines.csv").string());
