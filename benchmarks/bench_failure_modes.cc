@@ -89,7 +89,7 @@ namespace
     unsigned int        varying;    ///< the ring whose voltage varies
     double              V_start;    ///< V where the varying ring starts on its last segment
     std::vector<double> cold_voltages, scan_voltages;
-    /// Ring voltages of the target of a cold start at voltage V of `varying`.
+    /// The scene of a cold start: the path straight to voltage V of `varying`.
     std::function<Scene(double)> target;
   };
 
