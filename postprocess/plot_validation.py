@@ -7,7 +7,8 @@ Usage: plot_validation.py [DATA_DIR] [--out FIG_DIR]
 DATA_DIR (default: results/validation) holds the output of
   build/benchmarks/bench_convergence     -> convergence.csv
   build/benchmarks/bench_work_precision  -> work_precision.csv
-  build/benchmarks/bench_failure_modes   -> failure_*.csv, paper_lines.csv
+  build/benchmarks/bench_failure_modes   -> failure_*.csv
+  build/benchmarks/bench_paper_lines     -> paper_lines.csv
 FIG_DIR (default: doc/figures next to this script's folder) receives
   convergence.png, work-precision.png, failure-modes.png, paper-lines.png;
 a figure whose input file is missing is skipped with a message.
@@ -201,7 +202,7 @@ def plot_failure_modes(data_dir, out_dir):
         m = (b == 0) & (s2 < 0)
         ax.plot(v[m], d[m], "-", color="tab:red", lw=3, alpha=0.35,
                 label="$s_2 < 0$ somewhere (wrinkled)")
-        for method, marker, color in [("FE p=3; 8/ring (default)", "o", "tab:green"),
+        for method, marker, color in [("FE p=4; 4/ring (default)", "o", "tab:green"),
                                       ("FE p=2; 2/ring (coarse)", "^", "tab:orange"),
                                       ("shooting tol 1e-10 (default)", "x", "tab:blue")]:
             s = select(steps, case=case, method=method)
@@ -222,7 +223,7 @@ def plot_failure_modes(data_dir, out_dir):
             inset = ax.inset_axes([0.62, 0.06, 0.35, 0.33])
             inset.plot(v[b <= 1], d[b <= 1], "k-", lw=1)
             inset.plot(v[k], d[k], "k*", ms=9)
-            for method, marker, color in [("FE p=3; 8/ring (default)", "o", "tab:green"),
+            for method, marker, color in [("FE p=4; 4/ring (default)", "o", "tab:green"),
                                           ("FE p=4; 32/ring (refined)", "s", "tab:purple"),
                                           ("shooting tol 1e-10 (default)", "x", "tab:blue")]:
                 s = select(steps, case=case, method=method)
