@@ -7,7 +7,8 @@ Usage: plot_validation.py [DATA_DIR] [--out FIG_DIR]
 DATA_DIR (default: results/validation) holds the output of
   build/benchmarks/bench_convergence     -> convergence.csv
   build/benchmarks/bench_work_precision  -> work_precision.csv
-  build/benchmarks/bench_failure_modes   -> failure_*.csv, paper_lines.csv
+  build/benchmarks/bench_failure_modes   -> failure_*.csv
+  build/benchmarks/bench_paper_lines     -> paper_lines.csv
 FIG_DIR (default: doc/figures next to this script's folder) receives
   convergence.png, work-precision.png, failure-modes.png, paper-lines.png;
 a figure whose input file is missing is skipped with a message.

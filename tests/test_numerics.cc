@@ -4,8 +4,8 @@
 // against dense Eigen computations of the same matrices.
 
 #include <cdea/numerics/bracketed_root.h>
-#include <cdea/solver/band_matrix.h>
-#include <cdea/solver/tangent_solver.h>
+#include <cdea/solver/band_eigenvalue.h>
+#include <cdea/solver/sherman_morrison.h>
 
 #include <Eigen/Dense>
 

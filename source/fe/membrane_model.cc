@@ -1,6 +1,7 @@
 #include "membrane_model_impl.h"
 
 #include <cdea/solver/arc_length.h>
+#include <cdea/solver/band_eigenvalue.h>
 
 #include <Eigen/Eigenvalues>
 

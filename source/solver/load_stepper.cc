@@ -152,8 +152,9 @@ namespace cdea
                                   const std::function<double(const StepSummary &)> &f,
                                   Evaluated &at_root, unsigned int &iterations)
   {
-    // Every evaluation starts from the nearest converged state on the f >= 0
-    // side; the one nearest to the root is kept for the report.
+    // Every evaluation starts from the converged state on the f >= 0 side
+    // nearest to the root (t1 may lie below t0 on a branch followed backwards
+    // by arc length); the evaluation with the smallest |f| is reported.
     ModelState   start  = state0;
     double       t_start = t0;
     double       best_t = t1, best_f = std::numeric_limits<double>::infinity();
@@ -173,7 +174,7 @@ namespace cdea
           at_root    = e;
           iterations = s.iterations;
         }
-      if (ft >= 0. && t > t_start)
+      if (ft >= 0. && std::abs(t - t0) > std::abs(t_start - t0))
         {
           start   = model.state();
           t_start = t;

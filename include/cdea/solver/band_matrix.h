@@ -44,10 +44,4 @@ namespace cdea
     unsigned int        bw = 0;
     std::vector<double> values;
   };
-
-  /// Smallest eigenvalue of the symmetric part (A + A^T) / 2 of @p A without
-  /// the rows and columns listed in @p excluded (LAPACK dsbevx on the band);
-  /// NaN if LAPACK fails.
-  double smallest_symmetric_eigenvalue(const BandMatrix                &A,
-                                       const std::vector<unsigned int> &excluded);
 } // namespace cdea

@@ -1,8 +1,8 @@
 #pragma once
 // Direct solvers of the tangent systems K u = b behind one interface: LAPACK's
 // band LU (the default) and, in fe/trilinos_solver.h, Trilinos' KLU. A rank-one
-// update K + k g g^T (the water's free surface couples every dof) is solved
-// with the factorization of K by Sherman-Morrison.
+// update K + k g g^T is solved with either by Sherman-Morrison
+// (sherman_morrison.h).
 
 #include <cdea/solver/band_matrix.h>
 
@@ -40,19 +40,5 @@ namespace cdea
     BandMatrix       lu;
     std::vector<int> pivots;
     bool             factorized = false;
-  };
-
-  /// (K + k g g^T)^-1 b = K^-1 b - k (g . K^-1 b) / (1 + k g . K^-1 g) K^-1 g.
-  class ShermanMorrison
-  {
-  public:
-    /// With the factorization of K in @p solver: remember k, g and K^-1 g.
-    bool prepare(const TangentSolver &solver, double k, const Eigen::VectorXd &g);
-    /// b <- (K + k g g^T)^-1 b.
-    bool solve(const TangentSolver &solver, Eigen::VectorXd &b) const;
-
-  private:
-    double          k = 0.;
-    Eigen::VectorXd g, K_inv_g;
   };
 } // namespace cdea
