@@ -3,6 +3,7 @@
 #include <cdea/app/mpi_session.h>
 #include <cdea/app/sweep.h>
 #include <cdea/app/parameters.h>
+#include <cdea/app/run_control.h>
 
 #include <iostream>
 #include <string>
@@ -11,6 +12,7 @@ int main(int argc, char **argv)
 {
   const cdea::MpiSession mpi(argc, argv);
   const std::vector<std::string> args(argv + 1, argv + argc);
+  cdea::ignore_output_signals();
   try
     {
       if (args.empty())
@@ -37,6 +39,8 @@ int main(int argc, char **argv)
         return cdea::compare(args[1]);
       if (command == "sweep" && args.size() == 2)
         return cdea::run_sweep(args[1]);
+      if (command == "recover" && args.size() == 2)
+        return cdea::recover(args[1]);
       std::cerr << "cdea: unknown command or wrong number of arguments: '" << command
                 << "'\n\n"
                 << cdea::usage();
@@ -44,7 +48,7 @@ int main(int argc, char **argv)
     }
   catch (const std::exception &e)
     {
-      std::cerr << "cdea: error: " << e.what() << '\n';
+      std::cerr << "cdea: error: " << cdea::one_line_message(e) << '\n';
       return cdea::exit_input_error;
     }
 }

@@ -1,8 +1,10 @@
 #include <cdea/app/commands.h>
 #include <cdea/app/parameters.h>
 #include <cdea/app/pump.h>
+#include <cdea/app/run_control.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/output/results_file.h>
+#include <cdea/output/safe_files.h>
 #include <cdea/shooting/shooting_model.h>
 #include <cdea/solver/load_stepper.h>
 
@@ -31,11 +33,15 @@ namespace cdea
            "  cdea sweep FILE.prm        design map over two-ring layouts and outer voltages\n"
            "                             (subsection Sweep), <Base name>_map.h5; runs under\n"
            "                             mpirun -np N as well\n"
+           "  cdea recover FILE.h5       rebuild the results of a killed run from its\n"
+           "                             journal FILE.h5.journal\n"
            "  cdea print-parameters      print a complete, documented parameter file\n"
            "  cdea --help                this text\n"
            "\n"
-           "Exit codes: 0 success; 1 bad input or output not writable; 2 the run stopped\n"
-           "before the end of its voltage path (converged steps stay in the results file).\n"
+           "Exit codes: 0 success; 1 bad input or output not writable (nothing written);\n"
+           "2 the run stopped before the end of its voltage path, was interrupted\n"
+           "(SIGINT, SIGTERM) or could not write all its steps (the messages say where\n"
+           "the converged steps are).\n"
            "See doc/usage.md for every parameter and the output layout.\n";
   }
 
@@ -204,6 +210,8 @@ namespace cdea
                    const std::string &prm_text, const std::string &path,
                    const std::string &method)
     {
+      // ---- results file: start (exit 1 if it cannot be ours) ----
+      const StopOnSignals          stop_on_signals;
       std::unique_ptr<ResultsFile> file;
       try
         {
@@ -213,14 +221,20 @@ namespace cdea
         }
       catch (const std::exception &e)
         {
-          std::cerr << "cdea: cannot write results: " << e.what() << '\n';
+          std::cerr << "cdea: " << one_line_message(e) << '\n';
           return exit_input_error;
         }
+      for (const std::string &note : file->notes())
+        std::cerr << "cdea: " << note << '\n';
       file->write_onset(OnsetRecord());
 
       StepRecorder recorder(*file, model, scene, tube_area(p));
       LoadStepper  stepper(scene, model, stepping_settings(p));
-      stepper.on_step  = [&](const StepSummary &s) { recorder.step(s); };
+      stepper.on_step  = [&](const StepSummary &s) {
+        recorder.step(s);
+        if (StopOnSignals::requested() != 0) // stop at this step boundary
+          throw RunInterrupted(StopOnSignals::requested());
+      };
       stepper.on_onset = [&](const OnsetRecord &onset) {
         file->write_onset(onset);
         std::cout << "      loss of tension (s2 = 0) at " << kv_list(onset.voltages)
@@ -261,9 +275,33 @@ namespace cdea
       std::cout << "cdea " << CDEA_VERSION << " (" << method << "): " << scene.n_rings()
                 << " ring(s), writing " << path << '\n';
       recorder.header();
-      const auto      start  = std::chrono::steady_clock::now();
-      const RunResult result = stepper.run();
-      const double    seconds =
+      const auto start = std::chrono::steady_clock::now();
+      // ---- the run: a signal, an output failure or an error stops it ----
+      RunResult   result;
+      std::string stopped; // why the run was cut short, "" if it was not
+      try
+        {
+          result = stepper.run();
+        }
+      catch (const RunInterrupted &e)
+        {
+          stopped = e.what();
+        }
+      catch (const OutputError &e)
+        {
+          stopped = std::string("the results cannot be written: ") + e.what();
+        }
+      catch (const std::exception &e)
+        {
+          stopped = "error: " + one_line_message(e);
+        }
+      if (!stopped.empty())
+        {
+          result.completed = false;
+          result.message   = stopped;
+          result.steps     = file->n_steps();
+        }
+      const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
       const StepSummary &s = recorder.last;
@@ -304,14 +342,26 @@ namespace cdea
         std::cout << "Arc-length continuation ended: " << result.end << '\n';
       std::cout << result.steps << " steps, " << result.newton_iterations
                 << " Newton iterations, " << std::setprecision(3) << seconds << " s\n";
+      // ---- results file: finish (written whole, then renamed into place) ----
+      const std::string status = result.completed ?
+                                   std::string("complete") :
+                                   "stopped after step " +
+                                     std::to_string(int(file->n_steps()) - 1) + ": " +
+                                     result.message;
+      const ResultsFile::Finish done = file->finish(status);
+      std::cout << "results: " << done.steps_written << " steps in "
+                << (done.written ? done.file : std::string("no file")) << " ("
+                << file->checkpoints() << " checkpoints, " << std::setprecision(3)
+                << file->checkpoint_seconds() << " s)\n";
       if (!result.completed)
-        {
-          std::cerr << "cdea: the run stopped early: " << result.message << "\n"
-                    << "cdea: the " << file->n_steps() << " converged steps are in " << path
-                    << '\n';
-          return exit_not_complete;
-        }
-      return exit_success;
+        std::cerr << "cdea: the run stopped early: " << result.message << '\n';
+      for (const std::string &message : done.messages)
+        std::cerr << "cdea: " << message << '\n';
+      if (!result.completed && done.written)
+        std::cerr << "cdea: the " << done.steps_written << " converged steps are in "
+                  << done.file << '\n';
+      const bool all_written = done.written && done.steps_written == file->n_steps();
+      return result.completed && all_written ? exit_success : exit_not_complete;
     }
   } // namespace
 

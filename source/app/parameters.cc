@@ -1,6 +1,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <cdea/app/parameters.h>
+#include <cdea/app/run_control.h>
 
 #include <cmath>
 #include <filesystem>
@@ -397,22 +398,6 @@ namespace cdea
         throw InputError(name + " must be positive, got " + format(value));
     }
 
-    /// deal.II's messages span several indented lines: fold them into one.
-    std::string one_line(const std::string &text)
-    {
-      std::string out;
-      for (const char c : text)
-        if (c == '\n' || c == ' ' || c == '\t')
-          {
-            if (!out.empty() && out.back() != ' ')
-              out += ' ';
-          }
-        else
-          out += c;
-      while (!out.empty() && out.back() == ' ')
-        out.pop_back();
-      return out;
-    }
   } // namespace
 
   Scene Parameters::scene() const
@@ -531,7 +516,7 @@ namespace cdea
       {
         std::ostringstream message;
         e.print_info(message);
-        throw InputError("in parameter file '" + filename + "': " + one_line(message.str()));
+        throw InputError("in parameter file '" + filename + "': " + fold_whitespace(message.str()));
       }
     Parameters parameters;
     parameters.parse(prm);

@@ -5,6 +5,7 @@
 #include <cdea/app/commands.h>
 #include <cdea/app/parameters.h>
 #include <cdea/app/sweep.h>
+#include <cdea/output/safe_files.h>
 
 #include <mpi.h>
 #include <unistd.h>
@@ -678,19 +679,30 @@ namespace cdea
       }
     const std::string path = p.results_path("_map");
 
-    // The output folder must be writable before hours of work start.
-    int writable = 1;
+    // The output folder must be writable, and the map file ours alone,
+    // before hours of work start.
+    int        writable = 1;
+    OutputLock lock;
     if (root)
       {
-        std::error_code error;
-        const auto      dir = std::filesystem::path(path).parent_path();
-        if (!dir.empty())
-          std::filesystem::create_directories(dir, error);
-        if (error || access(dir.empty() ? "." : dir.c_str(), W_OK) != 0)
+        std::vector<std::string> created;
+        std::string              why;
+        try
           {
-            std::cerr << "cdea: cannot write '" << path << "': the directory '"
-                      << dir.string() << "' cannot be created or is not writable"
-                      << (error ? ": " + error.message() : std::string()) << '\n';
+            created = create_directories(parent_directory(path));
+            if (access(parent_directory(path).c_str(), W_OK) != 0)
+              why = "the directory '" + parent_directory(path) + "' is not writable";
+            else
+              lock.acquire(path, why);
+          }
+        catch (const std::exception &e)
+          {
+            why = e.what();
+          }
+        if (!lock.held())
+          {
+            remove_created_directories(created);
+            std::cerr << "cdea: cannot write '" << path << "': " << why << '\n';
             writable = 0;
           }
       }
@@ -731,16 +743,20 @@ namespace cdea
     if (!root)
       return exit_success;
 
+    // A map none of whose layouts reached the inner voltage is no map.
+    const bool no_row_reached =
+      std::none_of(map.rows.begin(), map.rows.end(),
+                   [](const SweepRow &r) { return r.base_reached; });
+    const std::string status =
+      no_row_reached ? "stopped: no layout reached the inner voltage" : "complete";
     try
       {
-        write_sweep_file(path, map, text);
+        write_sweep_file(path, map, text, status);
       }
     catch (const std::exception &e)
       {
-        std::cerr << "cdea: " << e.what() << '\n';
-        std::error_code ignored;
-        std::filesystem::remove(path, ignored); // no half-written map
-        return exit_input_error;
+        std::cerr << "cdea: " << e.what() << " (the map is lost; an older map stays)\n";
+        return exit_not_complete;
       }
 
     // Table: one line per layout.
@@ -778,6 +794,14 @@ namespace cdea
     std::cout << n * m << " map points, " << solves << " equilibrium solves, " << iterations
               << " Newton iterations, " << std::setprecision(3) << seconds << " s on "
               << mpi.size << (mpi.size == 1 ? " rank" : " ranks") << "\nwrote " << path << '\n';
+    if (no_row_reached)
+      {
+        std::cerr << "cdea: no layout reached the inner voltage of "
+                  << settings.inner_voltage / 1e3 << " kV (first row: "
+                  << (map.rows.empty() ? std::string("none") : map.rows.front().message)
+                  << "): the map is empty\n";
+        return exit_not_complete;
+      }
     return exit_success;
   }
 } // namespace cdea
