@@ -389,6 +389,8 @@ namespace cdea
         {
           Input in;
           in.parameters = read_parameters(prm_file, &in.text);
+          for (const std::string &warning : in.parameters.input_warnings)
+            std::cerr << "cdea: warning: " << warning << '\n';
           in.scene      = in.parameters.scene();
           validate_reservoir(in.parameters);
           return in;

@@ -2,6 +2,7 @@
 
 #include <cdea/app/parameters.h>
 #include <cdea/app/run_control.h>
+#include <cdea/app/validation.h>
 
 #include <cmath>
 #include <filesystem>
@@ -380,6 +381,9 @@ namespace cdea
       }
     if (values.empty())
       throw InputError(name + ": no value given (expected numbers separated by ',')");
+    if (text.find_last_not_of(" \t") != std::string::npos &&
+        text[text.find_last_not_of(" \t")] == ',')
+      throw InputError(name + ": empty entry at the end of '" + text + "'");
     return values;
   }
 
@@ -480,6 +484,10 @@ namespace cdea
       }
     if (waypoints.empty())
       throw InputError(path_name + ": no waypoint given");
+    const auto last = electrodes.voltage_path_text.find_last_not_of(" \t");
+    if (last != std::string::npos && electrodes.voltage_path_text[last] == ';')
+      throw InputError(path_name + ": empty waypoint at the end of '" +
+                       electrodes.voltage_path_text + "'");
     scene.path = VoltagePath(waypoints);
 
     if (output.base_name.empty() || output.base_name.find('/') != std::string::npos)
@@ -519,8 +527,23 @@ namespace cdea
         throw InputError("in parameter file '" + filename + "': " + fold_whitespace(message.str()));
       }
     Parameters parameters;
-    parameters.parse(prm);
-    parameters.scene(); // validate now, before anything is written
+    try
+      {
+        parameters.parse(prm);
+      }
+    catch (const dealii::ExceptionBase &e)
+      {
+        std::ostringstream message;
+        e.print_info(message);
+        throw InputError("in parameter file '" + filename + "': " + fold_whitespace(message.str()));
+      }
+    validate_ranges(parameters, parameters.scene()); // now, before anything is written
+    {
+      std::ifstream      in(filename);
+      std::ostringstream content;
+      content << in.rdbuf();
+      parameters.input_warnings = duplicate_entry_warnings(content.str(), filename);
+    }
     if (text)
       {
         std::ostringstream out;

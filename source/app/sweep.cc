@@ -670,6 +670,9 @@ namespace cdea
         p        = read_parameters(prm_file, &text);
         base     = p.scene();
         settings = sweep_settings(p, base);
+        for (const std::string &warning : p.input_warnings)
+          if (root)
+            std::cerr << "cdea: warning: " << warning << '\n';
       }
     catch (const InputError &e)
       {

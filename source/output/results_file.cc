@@ -129,6 +129,7 @@ namespace cdea
     d.minimum_interval = checkpoint_interval_setting();
 
     std::vector<std::string> created;
+    bool                     journal_started = false; // the journal at the path is ours
     try
       {
         created = create_directories(d.directory);
@@ -149,18 +150,29 @@ namespace cdea
           throw OutputError("cannot write results file '" + path + "': it is a directory");
         if (file_exists(journal_of(path)))
           {
-            const Recovery saved = recover_results(path, false);
-            d.notes.push_back("an earlier run writing " + path + " was killed: " + saved.message);
+            try
+              {
+                const Recovery saved = recover_results(path, false);
+                d.notes.push_back("an earlier run writing " + path +
+                                  " did not finish its file: " + saved.message);
+              }
+            catch (const OutputError &e)
+              {
+                throw OutputError("cannot start writing " + path +
+                                  ": the journal of an earlier run that did not write all its "
+                                  "steps must be saved first, but " + e.what());
+              }
           }
         remove_temporaries(path);
         remove_file(checkpoint_of(path));
+        journal_started = true;
         d.journal.open(journal_of(path), parameters_text, n_rings, extra_root_attributes);
         d.directory_id = DirectoryIdentity::of(d.directory);
       }
     catch (...)
       {
         d.journal.close();
-        if (d.lock.held())
+        if (journal_started)
           remove_file(journal_of(path));
         d.lock.release();
         remove_created_directories(created);
@@ -351,8 +363,8 @@ namespace cdea
         return r;
       }
     replay.document->set_root_attribute(
-      "run_status", "killed: rebuilt from the journal; the run was stopped by a signal or a "
-                    "crash after its last step here");
+      "run_status", "rebuilt from the journal: the run ended without writing all its steps "
+                    "(killed, crashed, or out of disk space) after the last step here");
     r.file = into_path_if_free && !file_exists(path) ? path : free_sibling_name(path, ".recovered");
     const WriteOutcome out = replace_file(r.file, replay.document->image(), true);
     if (!out.ok)
