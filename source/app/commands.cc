@@ -161,9 +161,9 @@ namespace cdea
         last = s;
         std::ostringstream v;
         for (const double x : s.voltages)
-          v << std::setw(7) << std::fixed << std::setprecision(3) << x * 1e-3;
+          v << ' ' << std::setw(6) << std::fixed << std::setprecision(3) << x * 1e-3;
         std::cout << std::setw(5) << file.n_steps() - 1 << std::setw(13) << stage_name(s.stage)
-                  << std::setw(10) << std::fixed << std::setprecision(5) << s.load_factor
+                  << ' ' << std::setw(9) << std::fixed << std::setprecision(5) << s.load_factor
                   << "  " << v.str() << std::setw(12) << std::setprecision(6)
                   << s.displacement * 1e3 << std::setw(12)
                   << (std::isnan(s.stroke) ? std::string("-") : [&] {
