@@ -108,10 +108,23 @@ outcomes = {}
 for trial in range(kills):
     sig = rng.choice([signal.SIGKILL, signal.SIGKILL, signal.SIGINT, signal.SIGTERM])
     interval = rng.choice(["0", "0.05", "1"])
-    delay = rng.uniform(0.1, 1.8)
+    # Mostly while steps are computed and written (counted from the first
+    # printed step, so that a slow start on a busy machine does not matter),
+    # sometimes during the start.
+    during_start = rng.random() < 0.15
+    delay = rng.uniform(0.0, 0.6) if during_start else rng.uniform(0.0, 1.3)
     env = dict(os.environ, CDEA_CHECKPOINT_SECONDS=interval)
     with open("run.out", "wb") as out, open("run.err", "wb") as err:
-        p = subprocess.Popen([exe, "run", "long.prm"], stdout=out, stderr=err, env=env)
+        # Default signal actions, also when this test runs in a background job
+        # (which ignores SIGINT and cdea would keep ignoring it).
+        p = subprocess.Popen([exe, "run", "long.prm"], stdout=out, stderr=err, env=env,
+                             preexec_fn=lambda: [signal.signal(s, signal.SIG_DFL)
+                                                 for s in (signal.SIGINT, signal.SIGTERM)])
+        if not during_start:
+            for _ in range(600):
+                if printed_steps("run.out") or p.poll() is not None:
+                    break
+                time.sleep(0.02)
         time.sleep(delay)
         p.send_signal(sig)
         try:
@@ -122,7 +135,8 @@ for trial in range(kills):
             fail(f"trial {trial}: no exit 60 s after {sig.name}")
     printed = printed_steps("run.out")
     err = open("run.err", errors="replace").read()
-    tag = f"trial {trial:2d}: {sig.name:7s} after {delay:4.2f} s (checkpoints {interval:>4s} s), " \
+    when = "after the start" if during_start else "after the first step"
+    tag = f"trial {trial:2d}: {sig.name:7s} {delay:4.2f} s {when} (checkpoints {interval:>4s} s), " \
           f"{len(printed)} steps printed, exit {rc}"
     left = sorted(os.listdir("out"))
     if rc == 0:

@@ -33,11 +33,16 @@ namespace cdea
     stop_signal = 0;
     for (int i = 0; i < 3; ++i)
       {
+        // A signal ignored from the start stays ignored (nohup, background
+        // jobs of a shell).
+        sigaction(stop_signals[i], nullptr, &previous[i]);
+        if (previous[i].sa_handler == SIG_IGN)
+          continue;
         struct sigaction action = {};
         action.sa_handler       = ask_to_stop;
         action.sa_flags         = SA_RESTART;
         sigemptyset(&action.sa_mask);
-        sigaction(stop_signals[i], &action, &previous[i]);
+        sigaction(stop_signals[i], &action, nullptr);
       }
   }
 

@@ -10,7 +10,8 @@ namespace cdea
   /// For the lifetime of the object SIGINT, SIGTERM and SIGHUP only ask the
   /// run to stop: it stops after its current step and finishes its results
   /// file. A second such signal ends the process at once, as without the
-  /// object (the journal keeps the steps; doc/usage.md).
+  /// object (the journal keeps the steps; doc/usage.md). A signal that was
+  /// ignored when the object was made (nohup) stays ignored.
   class StopOnSignals
   {
   public:
