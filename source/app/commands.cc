@@ -164,20 +164,20 @@ namespace cdea
           v << ' ' << std::setw(6) << std::fixed << std::setprecision(3) << x * 1e-3;
         std::cout << std::setw(5) << file.n_steps() - 1 << std::setw(13) << stage_name(s.stage)
                   << ' ' << std::setw(9) << std::fixed << std::setprecision(5) << s.load_factor
-                  << "  " << v.str() << std::setw(12) << std::setprecision(6)
-                  << s.displacement * 1e3 << std::setw(12)
+                  << "  " << v.str() << ' ' << std::setw(11) << std::setprecision(6)
+                  << s.displacement * 1e3 << ' ' << std::setw(11)
                   << (std::isnan(s.stroke) ? std::string("-") : [&] {
                        std::ostringstream o;
                        o << std::fixed << std::setprecision(6) << s.stroke * 1e3;
                        return o.str();
                      }())
-                  << std::setw(12)
+                  << ' ' << std::setw(11)
                   << (std::isnan(volume_change) ? std::string("-") : [&] {
                        std::ostringstream o;
                        o << std::fixed << std::setprecision(3) << volume_change * 1e9;
                        return o.str();
                      }())
-                  << std::setw(12) << std::setprecision(6)
+                  << ' ' << std::setw(11) << std::setprecision(6)
                   << s.s2_min / scene.material.shear_modulus << std::setw(6)
                   << (s.wrinkled ? "yes" : "no") << std::setw(7)
                   << (std::isnan(s.min_eigenvalue) ? "-" : s.min_eigenvalue > 0. ? "yes" : "NO")
