@@ -18,11 +18,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <deque>
-#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
-#include <system_error>
 
 namespace cdea
 {
@@ -686,28 +684,11 @@ namespace cdea
     // before hours of work start.
     int        writable = 1;
     OutputLock lock;
-    if (root)
+    std::string why;
+    if (root && !claim_output(path, lock, why))
       {
-        std::vector<std::string> created;
-        std::string              why;
-        try
-          {
-            created = create_directories(parent_directory(path));
-            if (access(parent_directory(path).c_str(), W_OK) != 0)
-              why = "the directory '" + parent_directory(path) + "' is not writable";
-            else
-              lock.acquire(path, why);
-          }
-        catch (const std::exception &e)
-          {
-            why = e.what();
-          }
-        if (!lock.held())
-          {
-            remove_created_directories(created);
-            std::cerr << "cdea: cannot write '" << path << "': " << why << '\n';
-            writable = 0;
-          }
+        std::cerr << "cdea: cannot write '" << path << "': " << why << '\n';
+        writable = 0;
       }
     if (mpi.active && mpi.size > 1)
       MPI_Bcast(&writable, 1, MPI_INT, 0, MPI_COMM_WORLD);

@@ -130,24 +130,13 @@ namespace cdea
 
     std::vector<std::string> created;
     bool                     journal_started = false; // the journal at the path is ours
+    {
+      std::string why;
+      if (!claim_output(path, d.lock, why, &created))
+        throw OutputError("cannot write results file '" + path + "': " + why);
+    }
     try
       {
-        created = create_directories(d.directory);
-      }
-    catch (const std::runtime_error &e)
-      {
-        throw OutputError("cannot write results file '" + path + "': " + e.what());
-      }
-    try
-      {
-        if (::access(d.directory.c_str(), W_OK) != 0)
-          throw OutputError("cannot write results file '" + path + "': the directory '" +
-                            d.directory + "' is not writable");
-        std::string why;
-        if (!d.lock.acquire(path, why))
-          throw OutputError("cannot write results file '" + path + "': " + why);
-        if (DirectoryIdentity::of(path).valid)
-          throw OutputError("cannot write results file '" + path + "': it is a directory");
         if (file_exists(journal_of(path)))
           {
             try

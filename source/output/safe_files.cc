@@ -147,6 +147,32 @@ namespace cdea
     fd = -1;
   }
 
+  bool claim_output(const std::string &path, OutputLock &lock, std::string &why,
+                    std::vector<std::string> *created_out)
+  {
+    std::vector<std::string> created;
+    try
+      {
+        const std::string directory = parent_directory(path);
+        created                     = create_directories(directory);
+        if (::access(directory.c_str(), W_OK) != 0)
+          why = "the directory '" + directory + "' is not writable";
+        else if (DirectoryIdentity::of(path).valid)
+          why = "it is a directory";
+        else
+          lock.acquire(path, why);
+      }
+    catch (const std::exception &e)
+      {
+        why = e.what();
+      }
+    if (!lock.held())
+      remove_created_directories(created);
+    else if (created_out)
+      *created_out = created;
+    return lock.held();
+  }
+
   std::vector<std::string> create_directories(const std::string &directory)
   {
     namespace fs = std::filesystem;

@@ -60,6 +60,13 @@ namespace cdea
     std::string lock_path;
   };
 
+  /// Makes @p path ours: creates its directory if missing (removed again on
+  /// failure), checks that it is writable and takes @p lock. False, with
+  /// @p why, if any of it fails. On success @p created (if given) lists the
+  /// directories it made, for remove_created_directories().
+  bool claim_output(const std::string &path, OutputLock &lock, std::string &why,
+                    std::vector<std::string> *created = nullptr);
+
   /// Creates @p directory and its missing parents; returns those it created,
   /// innermost last. Throws std::runtime_error naming the directory.
   std::vector<std::string> create_directories(const std::string &directory);
