@@ -8,11 +8,13 @@ Two writers append one step after another until killed at a random moment:
   swmr    HDF5's single-writer/multiple-reader mode: fixed datasets created
           first (SWMR allows no new groups or datasets afterwards), then rows
           appended and flushed per step.
+With a cdea executable of the former writer (commit bdeb671, which flushed
+after every step) as third argument, its own 5007-step run is killed as well.
 After each kill the file is checked with h5dump and h5py (as is, and for SWMR
 also after `h5clear -s`, which clears the "open for writing" flag). Prints the
 count of unreadable files and of files missing the last flushed step.
 
-    /usr/bin/python3 scripts/hdf5_kill_study.py [KILLS] [SEED]
+    /usr/bin/python3 scripts/hdf5_kill_study.py [KILLS] [SEED] [OLD_CDEA]
 """
 import os
 import random
@@ -24,6 +26,7 @@ import time
 
 kills = int(sys.argv[1]) if len(sys.argv) > 1 else 40
 seed = int(sys.argv[2]) if len(sys.argv) > 2 else 1
+old_cdea = sys.argv[3] if len(sys.argv) > 3 else None
 rng = random.Random(seed)
 
 WRITER = r'''
@@ -75,6 +78,24 @@ def rows(path, mode):
 work = tempfile.mkdtemp(prefix="hdf5-kill-")
 writer = os.path.join(work, "writer.py")
 open(writer, "w").write(WRITER)
+if old_cdea:
+    src = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
+    text = open(os.path.join(src, "prm", "default.prm")).read()
+    text = text.replace("set Directory           = results", "set Directory           = " + work)
+    open(os.path.join(work, "long.prm"), "w").write(
+        text + "\nsubsection Solver\n  set Voltage increment (kV) = 0.001\nend\n")
+    unreadable = 0
+    for k in range(kills):
+        with open(os.path.join(work, "log"), "w") as log:
+            p = subprocess.Popen([old_cdea, "run", os.path.join(work, "long.prm")], stdout=log)
+            time.sleep(rng.uniform(1.0, 3.5))
+            p.send_signal(signal.SIGKILL)
+            p.wait()
+        path = os.path.join(work, "default.h5")
+        unreadable += os.path.exists(path) and rows(path, "flush") is None
+        if os.path.exists(path):
+            os.remove(path)
+    print(f"cdea (flush after every step): {kills} SIGKILLs, {unreadable} files unreadable")
 for mode in ("flush", "swmr"):
     unreadable = unreadable_cleared = short = 0
     for k in range(kills):

@@ -6,8 +6,8 @@ swapped or cut, bytes inserted, a separator added), and runs `cdea run` (or
 now and then `cdea shoot`) on it in a directory of its own, for at most
 LIMIT seconds; a run still going then gets SIGINT and must stop within GRACE
 seconds at its next step. A case fails on
-  - a crash (exit by a signal, but for our SIGINT before the first step) or
-    an exit code other than 0, 1, 2;
+  - a crash (exit by a signal, but for our SIGINT before the first step or
+    after the results file was written) or an exit code other than 0, 1, 2;
   - a hang: no exit GRACE seconds after SIGINT, or the last 20 printed steps
     all at the same load (no progress);
   - a deal.II stack trace or an uncaught exception on stderr, or more than
@@ -16,6 +16,7 @@ seconds at its next step. A case fails on
   - after exit 0 or 2: no readable results file, or a journal, lock or
     checkpoint left behind.
 Usage: fuzz_prm.py CDEA_EXECUTABLE SOURCE_DIR CASES SEED [WORKERS] [LIMIT]
+(CASES: a count, or case numbers separated by ',' to rerun those)
 Failing inputs are kept in ./fuzz-failures/.
 """
 import concurrent.futures
@@ -33,7 +34,10 @@ import time
 import h5py
 
 exe, src = sys.argv[1], sys.argv[2]
-cases, seed = int(sys.argv[3]), int(sys.argv[4])
+seed = int(sys.argv[4])
+# CASES is a count, or a comma-separated list of case numbers (to rerun some).
+selected = [int(c) for c in sys.argv[3].split(",")] if "," in sys.argv[3] else None
+cases = len(selected) if selected else int(sys.argv[3])
 workers = int(sys.argv[5]) if len(sys.argv) > 5 else 2
 limit = float(sys.argv[6]) if len(sys.argv) > 6 else 2.0
 grace = 20.0
@@ -49,6 +53,7 @@ BAD_STACKS = re.compile(rb"[Ss]tacktrace|-{20}|An error occurred in line|termina
                         rb"Segmentation fault|Aborted|what\(\):")
 STEP = re.compile(rb"^\s*\d+\s+(pre-stretch|dead load|voltage)\s+(\S+)\s+(\S+)", re.M)
 WRITING = re.compile(rb"writing (\S+\.h5)\s*$", re.M)
+RESULTS = re.compile(rb"^results: \d+ steps in ", re.M)
 
 
 def mutate(rng, data):
@@ -125,8 +130,9 @@ def run_case(index):
     stdout = open(os.path.join(work, "out.log"), "rb").read()
     stderr = open(os.path.join(work, "err.log"), "rb").read()
     steps = STEP.findall(stdout)
-    if rc == -signal.SIGINT and outcome and not steps:
-        pass  # our SIGINT came before the run had started: nothing to keep
+    finished = RESULTS.search(stdout) is not None
+    if rc == -signal.SIGINT and outcome and (not steps or finished):
+        pass  # our SIGINT came before the run started or after its file was written
     elif rc < 0:
         problems.append(f"crash: killed by {signal.Signals(-rc).name}")
     elif rc not in (0, 1, 2):
@@ -143,8 +149,8 @@ def run_case(index):
     if rc in (0, 2):
         m = WRITING.search(stdout)
         if m:
-            path = os.path.join(work, m.group(1).decode(errors="replace"))
-            for extra in (".journal", ".lock"):
+            path = os.path.join(os.fsencode(work), m.group(1))  # names may be any bytes
+            for extra in (b".journal", b".lock"):
                 if os.path.exists(path + extra):
                     problems.append(f"{extra} left behind")
             if steps and os.path.exists(path):
@@ -169,14 +175,14 @@ def run_case(index):
 counts, failed, slowest = {}, [], 0.0
 t0 = time.monotonic()
 with concurrent.futures.ThreadPoolExecutor(max_workers=workers) as pool:
-    for index, name, command, what, outcome, seconds, problems in pool.map(run_case, range(cases)):
+    for index, name, command, what, outcome, seconds, problems in pool.map(run_case, selected or range(cases)):
         counts[outcome] = counts.get(outcome, 0) + 1
         slowest = max(slowest, seconds)
         if problems:
             failed.append(index)
             print(f"FAIL case {index} ({command} {name}, {'+'.join(what)}): {'; '.join(problems)}",
                   flush=True)
-        if (index + 1) % 500 == 0 and index + 1 < cases:
+        if not selected and (index + 1) % 500 == 0 and index + 1 < cases:
             print(f"  {index + 1} cases, {len(failed)} failing, {time.monotonic() - t0:.0f} s",
                   flush=True)
 print(f"{cases} cases from {len(texts)} files, seed {seed}, {workers} workers, "
