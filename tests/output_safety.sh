@@ -57,22 +57,27 @@ took=$(echo "$(date +%s.%N) - $start" | bc)
 if [ $rc -eq 1 ] && grep -q "another cdea process (pid $first) is writing out/long.h5" b.err; then
   ok "second writer refused with exit 1 in $took s: $(cat b.err)"
 else fail "second writer: exit $rc, $(cat b.err)"; fi
-kill -INT $first; wait $first; rc=$?
-[ $rc -eq 2 ] && grep -q interrupted a.err && h5check out/long.h5 "$(steps_printed a.out)" 280 > /dev/null \
-  && ok "the first run, interrupted, has its own $(steps_printed a.out) steps (mass 280 g)" \
-  || fail "first run after the refused second: exit $rc, $(cat a.err)"
+# (On a busy machine the first may have ended meanwhile: exit 0.)
+kill -INT $first 2> /dev/null; wait $first; rc=$?
+if { [ $rc -eq 0 ] || { [ $rc -eq 2 ] && grep -q interrupted a.err; }; } &&
+   h5check out/long.h5 "$(steps_printed a.out)" 280 > /dev/null; then
+  ok "the first run (exit $rc) has its own $(steps_printed a.out) steps (mass 280 g)"
+else fail "first run after the refused second: exit $rc, $(cat a.err)"; fi
 # Two started together: exactly one runs, and the file holds its steps alone.
 rm -rf out
 "$exe" run long.prm > c1.out 2> c1.err & p1=$!
 "$exe" run other.prm > c2.out 2> c2.err & p2=$!
 wait $p1; r1=$?; wait $p2; r2=$?
+# (On a busy machine one may start only after the other ended: both exit 0,
+# and the file is the later one's.)
 case "$r1$r2" in
   01) mass=280 ;;
   10) mass=281 ;;
+  00) mass=$(h5check out/long.h5 1600 280 > /dev/null 2>&1 && echo 280 || echo 281) ;;
   *) mass=none ;;
 esac
 if [ $mass != none ] && h5check out/long.h5 1600 $mass > /dev/null; then
-  ok "two runs started together: exits $r1 and $r2, the file of the one that ran"
+  ok "two runs started together: exits $r1 and $r2, the file of one run alone (mass $mass g)"
 else fail "two runs started together: exits $r1 and $r2: $(cat c1.err c2.err)"; fi
 
 # 2. A re-run killed early leaves the older results; the next run saves the
