@@ -40,6 +40,7 @@
 //
 //   build/benchmarks/bench_failure_modes [DIR]
 
+#include <cdea/numerics/bracketed_root.h>
 #include <cdea/app/mpi_session.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/shooting/meridian.h>
@@ -330,44 +331,32 @@ namespace
     };
     const double g_tol = 1e-12 * scene.material.shear_modulus;
 
-    const auto root = [&](const Target &g, double lo, std::vector<double> state_lo,
-                          double g_lo, double hi, double g_hi) {
-      LinePoint p;
-      int       side = 0;
-      for (int k = 0; k < 200 && hi - lo > 1e-6; ++k)
-        {
-          double V = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
-          if (!(V > lo && V < hi))
-            V = 0.5 * (lo + hi);
-          model.set_state(state_lo);
-          if (!model.solve(at(V)).converged)
-            {
-              hi = V;
-              continue;
-            }
-          const StepSummary s  = model.summary();
-          const double      gv = g(s, lines);
-          p                    = {true, V, s.displacement, s.s2_ring_inner};
-          if (std::abs(gv) < g_tol)
-            break;
-          if ((gv > 0.) == (g_lo > 0.))
-            {
-              lo       = V;
-              g_lo     = gv;
-              state_lo = model.state();
-              if (side == -1)
-                g_hi *= 0.5;
-              side = -1;
-            }
-          else
-            {
-              hi   = V;
-              g_hi = gv;
-              if (side == 1)
-                g_lo *= 0.5;
-              side = 1;
-            }
-        }
+    // Root of a line function by the project's bracketed root finder; each
+    // solve starts from the nearest converged state on the starting side.
+    const auto root = [&](const Target &g, double lo, ModelState state_lo, double g_lo,
+                          double hi, double g_hi) {
+      LinePoint  p;
+      double     best = std::numeric_limits<double>::infinity();
+      const auto f    = [&](const double V) {
+        model.set_state(state_lo);
+        if (!model.solve(at(V)).converged)
+          return std::numeric_limits<double>::quiet_NaN();
+        const StepSummary s  = model.summary();
+        const double      gv = g(s, lines);
+        if (std::abs(gv) < best)
+          {
+            best = std::abs(gv);
+            p    = {true, V, s.displacement, s.s2_ring_inner};
+          }
+        if ((gv > 0.) == (g_lo > 0.))
+          state_lo = model.state();
+        return gv;
+      };
+      BracketedRootSettings settings;
+      settings.x_tolerance     = 1e-6;
+      settings.f_tolerance     = g_tol;
+      settings.max_evaluations = 200;
+      find_bracketed_root(f, lo, g_lo, hi, g_hi, settings);
       return p;
     };
 
@@ -378,7 +367,7 @@ namespace
       return true;
     };
     double              Vo = Vi, dV = 50.;
-    std::vector<double> state = model.state();
+    ModelState          state = model.state();
     StepSummary         prev  = model.summary();
     while (Vo < Vo_max && !all_found())
       {
@@ -397,7 +386,7 @@ namespace
             continue;
           }
         const StepSummary         s    = model.summary();
-        const std::vector<double> next = model.state();
+        const ModelState next = model.state();
         for (std::size_t i = 0; i < targets.size(); ++i)
           {
             const double g0 = targets[i](prev, lines), g1 = targets[i](s, lines);

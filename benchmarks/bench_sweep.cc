@@ -253,7 +253,7 @@ int main(int argc, char **argv)
       },
       11);
     const double t_summary = time([&] { (void)model.summary(); }, 501);
-    const std::vector<double> x = model.state();
+    const ModelState x = model.state();
     const double t_state = time([&] { model.set_state(model.state()); }, 501);
     // One Newton iteration: solve from a slightly perturbed converged state.
     LoadState load;
@@ -263,7 +263,7 @@ int main(int argc, char **argv)
     load.force    = scene.dead_load();
     load.voltages = {settings.inner_voltage, settings.inner_voltage + 50.};
     model.solve(load);
-    const std::vector<double> converged = model.state();
+    const ModelState converged = model.state();
     unsigned int              its       = 0;
     const double t_solve = time(
       [&] {

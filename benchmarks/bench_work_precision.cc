@@ -196,11 +196,13 @@ namespace
       timed("solve", [&] { r = inner.solve(load); });
       return r;
     }
-    StepSummary summary() const override
+    const LoadState &load() const override { return inner.load(); }
+    double           displacement() const override { return inner.displacement(); }
+    HoopStresses     hoop_stresses() const override
     {
-      StepSummary s;
-      timed("summary", [&] { s = inner.summary(); });
-      return s;
+      HoopStresses h;
+      timed("summary", [&] { h = inner.hoop_stresses(); });
+      return h;
     }
     StepFields fields() const override
     {
@@ -208,17 +210,17 @@ namespace
       timed("fields", [&] { f = inner.fields(); });
       return f;
     }
-    void predict(const std::vector<double> &older, double factor) override
+    void predict(const ModelState &older, double factor) override
     {
       timed("predict", [&] { inner.predict(older, factor); });
     }
-    std::vector<double> state() const override
+    ModelState state() const override
     {
-      std::vector<double> s;
+      ModelState s;
       timed("state", [&] { s = inner.state(); });
       return s;
     }
-    void set_state(const std::vector<double> &s) override
+    void set_state(const ModelState &s) override
     {
       timed("set_state", [&] { inner.set_state(s); });
     }

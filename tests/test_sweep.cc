@@ -138,7 +138,7 @@ namespace
       return f(model.summary());
     };
     double              lo = inner, f_lo = f(model.summary());
-    std::vector<double> state_lo = model.state();
+    ModelState          state_lo = model.state();
     double              hi       = lo;
     for (;;)
       {

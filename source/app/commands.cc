@@ -2,6 +2,7 @@
 #include <cdea/app/parameters.h>
 #include <cdea/app/pump.h>
 #include <cdea/app/run_control.h>
+#include <cdea/format.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/output/results_file.h>
 #include <cdea/output/safe_files.h>
@@ -54,7 +55,7 @@ namespace cdea
     s.min_voltage_increment = p.solver.min_voltage_increment_kV * 1e3;
     s.max_cutbacks          = p.solver.max_cutbacks;
     s.onset_tolerance       = p.wrinkling.onset_tolerance_V;
-    s.arc_length            = p.solver.continuation == "arc length";
+    s.arc_length            = p.solver.continuation == Continuation::arc_length;
     s.max_arc_length_steps  = p.solver.max_arc_length_steps;
     s.max_displacement      = p.solver.max_displacement_mm * 1e-3;
     s.stability_check       = p.solver.stability_check;
@@ -87,48 +88,40 @@ namespace cdea
   std::unique_ptr<MembraneModel> make_fe_model(const Parameters &p, const Scene &scene)
   {
     auto model = std::make_unique<MembraneModel>(scene, fe_discretization(p), newton_settings(p));
-    model->set_linear_solver(p.solver.linear_solver == "Trilinos KLU" ?
-                               LinearSolver::trilinos_klu :
-                               LinearSolver::banded_lu);
-    model->set_relaxed(p.wrinkling.model == "relaxed");
+    model->set_linear_solver(p.solver.linear_solver);
+    model->set_relaxed(p.wrinkling.model == WrinklingModel::relaxed);
     model->set_water_load(water_load(p));
     return model;
   }
 
   namespace
   {
-    /// Prints one table row per converged step and writes it to the file,
-    /// with the enclosed volume, its change from the end of the load stage
-    /// (like the stroke) and the pump's level drop in a tube of @p tube_area.
+    /// A postprocessor column of a summary (NaN if absent).
+    double column(const StepSummary &s, const std::string &name)
+    {
+      for (const auto &[key, value] : s.columns)
+        if (key == name)
+          return value;
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+
+    /// "-" for NaN, else fixed-point with @p decimals.
+    std::string fixed_or_dash(const double value, const int decimals)
+    {
+      return std::isnan(value) ? std::string("-") : format_fixed(value, decimals);
+    }
+
+    /// Prints one table row per converged step and writes it to the file.
     class StepRecorder
     {
     public:
-      StepRecorder(ResultsFile &file, const EquilibriumModel &model, const Scene &scene,
-                   const double tube_area)
+      StepRecorder(ResultsFile &file, LoadStepper &stepper, const Scene &scene)
         : file(file)
-        , model(model)
+        , stepper(stepper)
         , scene(scene)
-        , tube_area(tube_area)
       {
-        file.describe_column("volume_mm3", "mm^3",
-                             "volume enclosed between the frame plane and the deformed "
-                             "membrane with the disk, pi int r^2 dz");
-        file.describe_column("volume_change_mm3", "mm^3",
-                             "enclosed volume minus its value at the end of the load stage "
-                             "(NaN before)");
-        file.describe_column("level_drop_mm", "mm",
-                             "volume change / cross-section of the Reservoir level tube");
-        file.describe_column("min_eigenvalue", "N/m",
-                             "smallest eigenvalue of the tangent with dead load and voltages "
-                             "held (NaN: Solver/Stability check off)");
-        file.describe_column("stable", "0/1", "min_eigenvalue > 0");
-        file.describe_column("wrinkled_zone_inner_mm", "mm",
-                             "pre-stretched flat radius lam_pre R where the relaxed law's "
-                             "wrinkled zone starts (NaN: none, or Wrinkling/Model = check)");
-        file.describe_column("wrinkled_zone_outer_mm", "mm",
-                             "pre-stretched flat radius where the wrinkled zone ends");
-        file.describe_column("max_field_MV_per_m", "MV/m",
-                             "largest true electric field (NaN: breakdown check off)");
+        for (const SummaryColumn &c : stepper.columns())
+          file.describe_column(c.name, c.unit, c.description);
       }
 
       void header() const
@@ -142,68 +135,33 @@ namespace cdea
 
       void step(const StepSummary &s)
       {
-        volume = model.enclosed_volume();
-        if (s.stage == Stage::dead_load && s.load_factor == 1.)
-          reference_volume = volume;
-        volume_change = volume - reference_volume; // NaN before the reference
-        level_drop    = volume_change / tube_area;
-        const double lam = scene.prestretch;
-        file.append(s, model.fields(),
-                    {{"volume_mm3", volume * 1e9},
-                     {"volume_change_mm3", volume_change * 1e9},
-                     {"level_drop_mm", level_drop * 1e3},
-                     {"min_eigenvalue", s.min_eigenvalue},
-                     {"stable", std::isnan(s.min_eigenvalue) ? s.min_eigenvalue :
-                                                               double(s.min_eigenvalue > 0.)},
-                     {"wrinkled_zone_inner_mm", lam * s.wrinkled_zone_inner * 1e3},
-                     {"wrinkled_zone_outer_mm", lam * s.wrinkled_zone_outer * 1e3},
-                     {"max_field_MV_per_m", s.max_field * 1e-6}});
+        file.append(s, stepper.step_fields(), s.columns);
         last = s;
         std::ostringstream v;
         for (const double x : s.voltages)
-          v << ' ' << std::setw(6) << std::fixed << std::setprecision(3) << x * 1e-3;
+          v << ' ' << std::setw(6) << format_fixed(x * 1e-3, 3);
+        // Fixed-point from the first row on, for the rows and the lines after them.
+        // Every column keeps a blank before it, also for t >= 1000 or s2 < -1000 mu.
+        std::cout << std::fixed;
         std::cout << std::setw(5) << file.n_steps() - 1 << std::setw(13) << stage_name(s.stage)
-                  << ' ' << std::setw(9) << std::fixed << std::setprecision(5) << s.load_factor
-                  << "  " << v.str() << ' ' << std::setw(11) << std::setprecision(6)
-                  << s.displacement * 1e3 << ' ' << std::setw(11)
-                  << (std::isnan(s.stroke) ? std::string("-") : [&] {
-                       std::ostringstream o;
-                       o << std::fixed << std::setprecision(6) << s.stroke * 1e3;
-                       return o.str();
-                     }())
-                  << ' ' << std::setw(11)
-                  << (std::isnan(volume_change) ? std::string("-") : [&] {
-                       std::ostringstream o;
-                       o << std::fixed << std::setprecision(3) << volume_change * 1e9;
-                       return o.str();
-                     }())
-                  << ' ' << std::setw(11) << std::setprecision(6)
-                  << s.s2_min / scene.material.shear_modulus << std::setw(6)
+                  << ' ' << std::setw(9) << format_fixed(s.load_factor, 5) << "  " << v.str()
+                  << ' ' << std::setw(11) << format_fixed(s.displacement * 1e3, 6) << ' '
+                  << std::setw(11) << fixed_or_dash(s.stroke * 1e3, 6) << ' ' << std::setw(11)
+                  << fixed_or_dash(column(s, "volume_change_mm3"), 3) << ' ' << std::setw(11)
+                  << format_fixed(s.s2_min / scene.material.shear_modulus, 6) << std::setw(6)
                   << (s.wrinkled ? "yes" : "no") << std::setw(7)
                   << (std::isnan(s.min_eigenvalue) ? "-" : s.min_eigenvalue > 0. ? "yes" : "NO")
                   << std::setw(6) << s.newton_iterations << std::endl;
       }
 
       StepSummary last;
-      double      volume        = 0.; ///< m^3, of the last step
-      double      volume_change = std::numeric_limits<double>::quiet_NaN();
-      double      level_drop    = std::numeric_limits<double>::quiet_NaN(); ///< m
 
     private:
-      ResultsFile            &file;
-      const EquilibriumModel &model;
-      const Scene            &scene;
-      const double            tube_area;
-      double                  reference_volume = std::numeric_limits<double>::quiet_NaN();
+      ResultsFile       &file;
+      LoadStepper       &stepper;
+      const Scene       &scene;
     };
 
-    std::string kv_list(const std::vector<double> &volts)
-    {
-      std::ostringstream o;
-      for (std::size_t i = 0; i < volts.size(); ++i)
-        o << (i ? ", " : "") << std::setprecision(6) << volts[i] * 1e-3;
-      return o.str() + " kV";
-    }
 
     /// Drive @p model through the stages of @p scene, recording into @p path.
     int record_run(EquilibriumModel &model, const Parameters &p, const Scene &scene,
@@ -228,16 +186,17 @@ namespace cdea
         std::cerr << "cdea: " << note << '\n';
       file->write_onset(OnsetRecord());
 
-      StepRecorder recorder(*file, model, scene, tube_area(p));
-      LoadStepper  stepper(scene, model, stepping_settings(p));
-      stepper.on_step  = [&](const StepSummary &s) {
+      LoadStepper stepper(scene, model, stepping_settings(p));
+      stepper.add_postprocessor(std::make_unique<EnclosedVolume>(tube_area(p)));
+      StepRecorder recorder(*file, stepper, scene);
+      stepper.on_step = [&](const StepSummary &s) {
         recorder.step(s);
         if (StopOnSignals::requested() != 0) // stop at this step boundary
           throw RunInterrupted(StopOnSignals::requested());
       };
       stepper.on_onset = [&](const OnsetRecord &onset) {
         file->write_onset(onset);
-        std::cout << "      loss of tension (s2 = 0) at " << kv_list(onset.voltages)
+        std::cout << "      loss of tension (s2 = 0) at " << format_kV(onset.voltages)
                   << ", radius r = " << std::setprecision(6) << onset.radius * 1e3
                   << " mm (r/a = " << onset.radius / scene.disk_radius << ")" << std::endl;
       };
@@ -255,7 +214,7 @@ namespace cdea
           limit_kV.push_back(v * 1e-3);
         limit_mm.push_back(limit.displacement * 1e3);
         write_limit_points();
-        std::cout << "      limit point (fold) at " << kv_list(limit.voltages)
+        std::cout << "      limit point (fold) at " << format_kV(limit.voltages)
                   << ", displacement " << std::setprecision(7) << limit.displacement * 1e3
                   << " mm" << std::endl;
       };
@@ -268,7 +227,7 @@ namespace cdea
         }());
         file->set_summary_attribute("breakdown_radius_mm", {breakdown.radius * 1e3});
         std::cout << "      breakdown field " << p.solver.breakdown_field_MV_per_m
-                  << " MV/m reached at " << kv_list(breakdown.voltages) << ", r = "
+                  << " MV/m reached at " << format_kV(breakdown.voltages) << ", r = "
                   << std::setprecision(6) << breakdown.radius * 1e3 << " mm" << std::endl;
       };
 
@@ -305,18 +264,19 @@ namespace cdea
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
       const StepSummary &s = recorder.last;
-      std::cout << "\nFinal state: voltages " << kv_list(s.voltages) << ", displacement "
+      std::cout << "\nFinal state: voltages " << format_kV(s.voltages) << ", displacement "
                 << std::setprecision(7) << s.displacement * 1e3 << " mm, stroke "
                 << s.stroke * 1e3 << " mm\n";
       {
+        const double       volume_mm3 = column(s, "volume_mm3");
         std::ostringstream o;
-        o << std::setprecision(7) << "  enclosed volume " << recorder.volume * 1e9
-          << " mm^3, change " << recorder.volume_change * 1e9 << " mm^3, level drop "
-          << recorder.level_drop * 1e3 << " mm (tube " << p.reservoir.width_mm << " mm x "
+        o << std::setprecision(7) << "  enclosed volume " << volume_mm3 << " mm^3, change "
+          << column(s, "volume_change_mm3") << " mm^3, level drop "
+          << column(s, "level_drop_mm") << " mm (tube " << p.reservoir.width_mm << " mm x "
           << p.reservoir.depth_mm << " mm)\n";
         if (p.reservoir.water_load)
           o << "  water: free surface "
-            << (p.reservoir.water_volume_ml * 1e-6 - recorder.volume) / tube_area(p) * 1e3
+            << (p.reservoir.water_volume_ml * 1e-6 - volume_mm3 * 1e-9) / tube_area(p) * 1e3
             << " mm above the frame plane\n";
         std::cout << o.str();
       }
@@ -325,17 +285,17 @@ namespace cdea
         std::cout << ' ' << std::setprecision(6) << x / scene.material.shear_modulus;
       std::cout << '\n';
       if (result.onset.found)
-        std::cout << "Wrinkling onset (loss of tension): " << kv_list(result.onset.voltages)
+        std::cout << "Wrinkling onset (loss of tension): " << format_kV(result.onset.voltages)
                   << " at r = " << result.onset.radius * 1e3 << " mm\n";
       else
         std::cout << "Wrinkling onset: none along the path (s2 > 0 everywhere)\n";
       for (const LimitPoint &limit : result.limit_points)
-        std::cout << "Limit point (fold): " << kv_list(limit.voltages) << ", displacement "
+        std::cout << "Limit point (fold): " << format_kV(limit.voltages) << ", displacement "
                   << std::setprecision(7) << limit.displacement * 1e3 << " mm\n";
       if (p.solver.breakdown_field_MV_per_m > 0.)
         std::cout << "Breakdown field " << p.solver.breakdown_field_MV_per_m << " MV/m: "
                   << (result.breakdown.found ?
-                        "first reached at " + kv_list(result.breakdown.voltages) :
+                        "first reached at " + format_kV(result.breakdown.voltages) :
                         std::string("not reached"))
                   << '\n';
       if (!result.end.empty())
@@ -352,7 +312,7 @@ namespace cdea
       std::cout << "results: " << done.steps_written << " steps in "
                 << (done.written ? done.file : std::string("no file")) << " ("
                 << file->checkpoints() << " checkpoints, " << std::setprecision(3)
-                << file->checkpoint_seconds() << " s)\n";
+                << file->checkpoint_seconds() << " s)" << std::endl;
       if (!result.completed)
         std::cerr << "cdea: the run stopped early: " << result.message << '\n';
       for (const std::string &message : done.messages)
@@ -412,7 +372,7 @@ namespace cdea
                     << command << "'\n";
           return false;
         }
-      if (p.wrinkling.model == "relaxed")
+      if (p.wrinkling.model == WrinklingModel::relaxed)
         {
           std::cerr << "cdea: Wrinkling/Model = relaxed is implemented in the FE model only: "
                        "use 'cdea run', or set it to check for 'cdea "
@@ -426,12 +386,13 @@ namespace cdea
     Parameters with_load_stepping(const Parameters &p, const std::string &command)
     {
       Parameters q = p;
-      if (q.solver.continuation != "load stepping")
+      if (q.solver.continuation != Continuation::load_stepping)
         {
-          std::cout << "cdea " << command << ": Solver/Continuation = " << q.solver.continuation
+          std::cout << "cdea " << command << ": Solver/Continuation = "
+                    << to_string(q.solver.continuation)
                     << " applies to the FE model of 'cdea run'; both solvers follow the path "
                        "by load stepping here\n";
-          q.solver.continuation = "load stepping";
+          q.solver.continuation = Continuation::load_stepping;
         }
       return q;
     }
@@ -514,7 +475,7 @@ namespace cdea
         std::cout << (r == &a ? "FE" : "shooting") << " run stopped early: "
                   << r->result.message << '\n';
     std::cout << "state compared: the last converged step of each run, voltages FE "
-              << kv_list(a.last.voltages) << ", shooting " << kv_list(b.last.voltages) << "\n\n";
+              << format_kV(a.last.voltages) << ", shooting " << format_kV(b.last.voltages) << "\n\n";
 
     const auto row = [](const std::string &what, const double x, const double y,
                         const std::string &unit) {

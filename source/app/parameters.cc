@@ -191,8 +191,10 @@ namespace cdea
       voltage_increment_kV     = prm.get_double("Voltage increment (kV)");
       min_voltage_increment_kV = prm.get_double("Min voltage increment (kV)");
       max_cutbacks             = prm.get_integer("Max cutbacks");
-      continuation             = prm.get("Continuation");
-      linear_solver            = prm.get("Linear solver");
+      continuation = prm.get("Continuation") == "arc length" ? Continuation::arc_length :
+                                                               Continuation::load_stepping;
+      linear_solver = prm.get("Linear solver") == "Trilinos KLU" ? LinearSolver::trilinos_klu :
+                                                                   LinearSolver::banded_lu;
       max_arc_length_steps     = prm.get_integer("Max arc-length steps");
       max_displacement_mm      = prm.get_double("Max displacement (mm)");
       stability_check          = prm.get_bool("Stability check");
@@ -219,7 +221,7 @@ namespace cdea
     {
       prm.enter_subsection("Wrinkling");
       onset_tolerance_V = prm.get_double("Onset tolerance (V)");
-      model             = prm.get("Model");
+      model = prm.get("Model") == "relaxed" ? WrinklingModel::relaxed : WrinklingModel::check;
       prm.leave_subsection();
     }
 
@@ -346,6 +348,16 @@ namespace cdea
     sweep.parse(prm);
     reservoir.parse(prm);
     output.parse(prm);
+  }
+
+  std::string to_string(const Continuation choice)
+  {
+    return choice == Continuation::arc_length ? "arc length" : "load stepping";
+  }
+
+  std::string to_string(const WrinklingModel choice)
+  {
+    return choice == WrinklingModel::relaxed ? "relaxed" : "check";
   }
 
   double parse_number(const std::string &token, const std::string &name, const std::string &text)

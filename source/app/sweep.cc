@@ -119,8 +119,8 @@ namespace cdea
   {
     // The lines are defined by the sign of the plain law's hoop stress, and
     // the map is of the actuator under its dead load alone.
-    if (p.wrinkling.model != "check")
-      throw InputError("Wrinkling/Model = " + p.wrinkling.model +
+    if (p.wrinkling.model != WrinklingModel::check)
+      throw InputError("Wrinkling/Model = " + to_string(p.wrinkling.model) +
                        " is not supported by cdea sweep: the red and blue lines are defined "
                        "by the hoop stress of the plain membrane law (use check)");
     if (p.reservoir.water_load)

@@ -1,8 +1,10 @@
 // One row of a design map (one r_v/a): the state with both rings at the inner
 // voltage, continuation along the outer voltage in both directions, and the
-// red and blue lines by Brent's root finding between converged states.
+// red and blue lines by bracketed root finding between converged states.
 
 #include <cdea/app/sweep.h>
+#include <cdea/format.h>
+#include <cdea/numerics/bracketed_root.h>
 
 #include <algorithm>
 #include <chrono>
@@ -32,19 +34,12 @@ namespace cdea
       return s.s2_ring_inner[0] - s.s2_ring_inner[1];
     }
 
-    std::string kv(const double volts)
-    {
-      std::ostringstream o;
-      o.precision(7);
-      o << volts / 1e3 << " kV";
-      return o.str();
-    }
 
     /// A converged state on the continuation path.
     struct PathPoint
     {
       double              voltage = nan; ///< outer ring (V)
-      std::vector<double> state;
+      ModelState          state;
       StepSummary         summary;
     };
 
@@ -101,7 +96,7 @@ namespace cdea
       /// y_k = x_k, y_j = x_j + f_j (x_j - y_{j+1}), guess y_0; its weights are
       /// w_j = P_j (1 + f_j) with P_0 = 1, P_{j+1} = -P_j f_j (and w_k = P_k).
       void predict(const PathPoint &current,
-                   const std::vector<std::pair<double, std::vector<double>>> &history,
+                   const std::vector<std::pair<double, ModelState>> &history,
                    const double next)
       {
         std::vector<double> nodes{current.voltage};
@@ -125,7 +120,7 @@ namespace cdea
               }
             if (!ok)
               continue;
-            std::vector<double> y = history[k - 1].second; // y_k = x_k
+            ModelState y = history[k - 1].second; // y_k = x_k
             for (std::size_t j = k - 1; j >= 1; --j)
               {
                 model.set_state(history[j - 1].second); // x_j
@@ -150,7 +145,7 @@ namespace cdea
         model.set_state(base.state);
         PathPoint current = base;
         // Up to predictor_order earlier converged states of this branch, newest first.
-        std::vector<std::pair<double, std::vector<double>>> history;
+        std::vector<std::pair<double, ModelState>> history;
         const double h_max = stepping.voltage_increment;
         // Near a fold the increment is halved until a step this small fails;
         // finer than the line tolerance is of no use for the map.
@@ -187,7 +182,7 @@ namespace cdea
                       {
                         std::ostringstream m;
                         m << "outer voltage " << (direction > 0 ? "raised" : "lowered")
-                          << ": no equilibrium found beyond " << kv(current.voltage)
+                          << ": no equilibrium found beyond " << format_kV(current.voltage, 7)
                           << " (a step of " << std::abs(next - current.voltage)
                           << " V failed: " << report.message
                           << "); typically a fold of the voltage-displacement curve";
@@ -228,9 +223,9 @@ namespace cdea
         return true;
       }
 
-      /// Brent's method (as in Brent 1973, "zeroin") for the root of @p f on
-      /// the bracket's voltages; every evaluation is an equilibrium solve from
-      /// the linear interpolation of the bracket's end states.
+      /// The root of @p f on the bracket's voltages by the project's bracketed
+      /// root finder; every evaluation is an equilibrium solve from the linear
+      /// interpolation of the bracket's end states.
       SweepLine locate(const Bracket &bracket, double (*f)(const StepSummary &))
       {
         SweepLine line;
@@ -239,7 +234,6 @@ namespace cdea
         const double va = bracket.a.voltage, vb = bracket.b.voltage;
         std::vector<std::pair<double, StepSummary>> evaluated{{va, bracket.a.summary},
                                                                {vb, bracket.b.summary}};
-        bool failed = false;
         auto evaluate = [&](const double v) -> double {
           // x = x_a + s (x_b - x_a) = x_b + (s - 1) (x_b - x_a)
           const double s = (v - va) / (vb - va);
@@ -253,94 +247,25 @@ namespace cdea
             }
           ++line.evaluations;
           if (!report.converged)
-            {
-              failed = true;
-              return nan;
-            }
+            return nan;
           const StepSummary summary = model.summary();
           evaluated.emplace_back(v, summary);
           return f(summary);
         };
 
-        const double tol = settings.line_tolerance;
-        const double eps = std::numeric_limits<double>::epsilon();
-        double a = va, b = vb, fa = f(bracket.a.summary), fb = f(bracket.b.summary);
-        double c = b, fc = fb, d = b - a, e = d;
-        for (unsigned int iteration = 0; iteration < 100; ++iteration)
-          {
-            if ((fb > 0. && fc > 0.) || (fb < 0. && fc < 0.))
-              {
-                c  = a;
-                fc = fa;
-                e = d = b - a;
-              }
-            if (std::abs(fc) < std::abs(fb))
-              {
-                a  = b;
-                b  = c;
-                c  = a;
-                fa = fb;
-                fb = fc;
-                fc = fa;
-              }
-            const double tol1 = 2. * eps * std::abs(b) + 0.5 * tol;
-            const double xm   = 0.5 * (c - b);
-            if (std::abs(xm) <= tol1 || fb == 0.)
-              break;
-            if (std::abs(e) >= tol1 && std::abs(fa) > std::abs(fb))
-              {
-                // Inverse quadratic interpolation, or secant if a == c.
-                const double s = fb / fa;
-                double       p, q;
-                if (a == c)
-                  {
-                    p = 2. * xm * s;
-                    q = 1. - s;
-                  }
-                else
-                  {
-                    const double qq = fa / fc, r = fb / fc;
-                    p = s * (2. * xm * qq * (qq - r) - (b - a) * (r - 1.));
-                    q = (qq - 1.) * (r - 1.) * (s - 1.);
-                  }
-                if (p > 0.)
-                  q = -q;
-                p = std::abs(p);
-                if (2. * p < std::min(3. * xm * q - std::abs(tol1 * q), std::abs(e * q)))
-                  {
-                    e = d;
-                    d = p / q;
-                  }
-                else
-                  {
-                    d = xm;
-                    e = d;
-                  }
-              }
-            else
-              {
-                d = xm;
-                e = d;
-              }
-            a  = b;
-            fa = fb;
-            b += std::abs(d) > tol1 ? d : (xm > 0. ? tol1 : -tol1);
-            fb = evaluate(b);
-            if (failed)
-              break;
-          }
-
-        // The estimate is b, the end of the final bracket [b, c] with the
-        // smaller |f|; if a solve failed, the best converged evaluation.
-        double best = b;
-        if (failed)
-          {
-            best = a; // the last converged estimate
-            row.message += std::string(row.message.empty() ? "" : "; ") +
-                           "a root search stopped at a failed solve near " + kv(b);
-          }
+        BracketedRootSettings root_settings;
+        root_settings.x_tolerance     = settings.line_tolerance;
+        root_settings.stop_on_failure = true;
+        const BracketedRoot root =
+          find_bracketed_root(evaluate, va, f(bracket.a.summary), vb, f(bracket.b.summary),
+                              root_settings);
+        if (root.failed_evaluation)
+          row.message += std::string(row.message.empty() ? "" : "; ") +
+                         "a root search stopped at a failed solve near " +
+                         format_kV(root.hi, 7);
+        // The estimate is the evaluated state with the smallest |f|.
         for (const auto &[v, summary] : evaluated)
-          if (v == best)
+          if (v == root.x)
             {
               line.outer_voltage = v;
               line.displacement  = summary.displacement;
@@ -348,7 +273,7 @@ namespace cdea
               line.s2_inner[1]   = summary.s2_ring_inner[1];
               break;
             }
-        line.bracket_width = failed ? std::abs(vb - va) : std::abs(c - b);
+        line.bracket_width = root.failed_evaluation ? std::abs(vb - va) : root.hi - root.lo;
         return line;
       }
 

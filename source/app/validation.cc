@@ -56,7 +56,7 @@ namespace cdea
     double estimated_steps(const Parameters &p, const Scene &scene)
     {
       double steps = p.solver.prestretch_steps + std::ceil(1. / p.solver.load_increment);
-      if (p.solver.continuation == "arc length")
+      if (p.solver.continuation == Continuation::arc_length)
         return steps + p.solver.max_arc_length_steps;
       std::vector<double> previous(scene.n_rings(), 0.);
       const double        increment = p.solver.voltage_increment_kV * 1e3;
@@ -153,7 +153,7 @@ namespace cdea
                        " samples per step are too many; at most " + format(max_samples));
     const double steps = estimated_steps(p, scene);
     const std::string step_entries =
-      p.solver.continuation == "arc length" ?
+      p.solver.continuation == Continuation::arc_length ?
         "Solver/Max arc-length steps, Load increment or Prestretch steps" :
         "Solver/Voltage increment (kV), Load increment or Prestretch steps";
     if (steps > max_steps)

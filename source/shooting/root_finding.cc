@@ -1,3 +1,4 @@
+#include <cdea/numerics/bracketed_root.h>
 #include <cdea/shooting/root_finding.h>
 
 #include <cmath>
@@ -85,38 +86,34 @@ namespace cdea::shooting
         return x;
       }
 
-      // Illinois: a is the retained end point; its value is halved each time
-      // it is retained twice in a row, which keeps superlinear convergence.
-      RootResult illinois(Point a, Point b)
+      // A sign change between a and b: the project's bracketed root finder.
+      RootResult bracketed(const Point a, const Point b)
       {
-        const double eps = std::numeric_limits<double>::epsilon();
-        while (true)
+        if (res.evaluations >= opt.max_evaluations)
           {
-            if (std::abs(b.x - a.x) <= 4. * eps * (std::abs(a.x) + std::abs(b.x)))
-              {
-                const Point &p = std::abs(a.f) < std::abs(b.f) ? a : b;
-                if (std::abs(p.f) <= opt.collapse_tolerance)
-                  return done(p);
-                return fail("the residual changes sign without vanishing "
-                            "(discontinuity)");
-              }
-            double c = (a.f * b.x - b.f * a.x) / (a.f - b.f);
-            const double lo = std::min(a.x, b.x), hi = std::max(a.x, b.x);
-            if (!(c > lo && c < hi))
-              c = 0.5 * (a.x + b.x);
-            auto pc = eval(c);
-            if (!pc && !budget_exhausted)
-              pc = eval(0.5 * (a.x + b.x));
-            if (!pc)
-              return fail("the integration fails inside the bracket");
-            if (small(*pc))
-              return done(*pc);
-            if (pc->f * b.f < 0.)
-              a = b;
-            else
-              a.f *= 0.5;
-            b = *pc;
+            budget_exhausted = true;
+            return fail("no convergence");
           }
+        BracketedRootSettings settings;
+        settings.f_tolerance     = opt.residual_tolerance;
+        settings.max_evaluations = opt.max_evaluations - res.evaluations;
+        settings.stop_on_failure = true;
+        const auto f = [&](const double x) {
+          const auto p = eval(x);
+          return p ? p->f : std::numeric_limits<double>::quiet_NaN();
+        };
+        const BracketedRoot r = find_bracketed_root(f, a.x, a.f, b.x, b.f, settings);
+        const Point         p{r.x, r.f};
+        if (small(p))
+          return done(p);
+        if (budget_exhausted || (!r.converged && !r.failed_evaluation))
+          return fail("no convergence");
+        if (r.failed_evaluation)
+          return fail("the integration fails inside the bracket");
+        // The bracket collapsed to rounding level.
+        if (std::abs(p.f) <= opt.collapse_tolerance)
+          return done(p);
+        return fail("the residual changes sign without vanishing (discontinuity)");
       }
 
       RootResult run(const double x0)
@@ -140,7 +137,7 @@ namespace cdea::shooting
                     if (small(b))
                       return done(b);
                     if (a.f * b.f < 0.)
-                      return illinois(a, b);
+                      return bracketed(a, b);
                     const double slope = (b.f - a.f) / (b.x - a.x);
                     if (!(std::abs(slope) > 0.) || !std::isfinite(slope))
                       break;
@@ -161,7 +158,7 @@ namespace cdea::shooting
                 if (small(b))
                   return done(b);
                 if (a.f * b.f < 0.)
-                  return illinois(a, b);
+                  return bracketed(a, b);
               }
           }
         if (budget_exhausted)
@@ -188,7 +185,7 @@ namespace cdea::shooting
               if (small(*p))
                 return done(*p);
               if (near[side] && near[side]->f * p->f < 0.)
-                return illinois(*near[side], *p);
+                return bracketed(*near[side], *p);
               near[side] = p;
             }
         return fail("no sign change of the residual near the guess");

@@ -117,19 +117,15 @@ namespace cdea::shooting
     return report;
   }
 
-  StepSummary ShootingModel::summary() const
+  double ShootingModel::displacement() const { return current.profile.displacement; }
+
+  HoopStresses ShootingModel::hoop_stresses() const
   {
-    StepSummary s;
-    s.stage             = current.load.stage;
-    s.load_factor       = current.load.load_factor;
-    s.voltages          = current.load.voltages;
-    s.mass              = current.load.mass;
-    s.displacement      = current.profile.displacement;
-    s.s2_min            = current.profile.s2_min;
-    s.s2_min_radius     = current.profile.s2_min_radius;
-    s.s2_ring_inner     = current.profile.s2_ring_inner;
-    s.newton_iterations = current.iterations;
-    return s;
+    HoopStresses h;
+    h.s2_min        = current.profile.s2_min;
+    h.s2_min_radius = current.profile.s2_min_radius;
+    h.s2_ring_inner = current.profile.s2_ring_inner;
+    return h;
   }
 
   StepFields ShootingModel::fields() const
@@ -171,49 +167,35 @@ namespace cdea::shooting
     return v;
   }
 
-  // State layout (see state()): [1] kind, [7] theta0, [8] lambda1 at the disk edge.
-  void ShootingModel::predict(const std::vector<double> &older, const double factor)
+  ShootingModel::Kind ShootingModel::kind_of(const LoadState &load)
   {
-    if (older.size() != 11 + sc.n_rings() || current.kind != Kind::cone ||
-        static_cast<Kind>(static_cast<int>(older[1])) != Kind::cone)
+    if (load.force != 0.)
+      return Kind::cone;
+    return uniform(load.voltages) ? Kind::homogeneous : Kind::flat;
+  }
+
+  void ShootingModel::predict(const ModelState &older, const double factor)
+  {
+    if (older.unknowns.size() != 2 || current.kind != Kind::cone ||
+        kind_of(older.load) != Kind::cone)
       return;
-    current.profile.theta0 += factor * (current.profile.theta0 - older[7]);
-    current.profile.lambda1_start += factor * (current.profile.lambda1_start - older[8]);
+    current.profile.theta0 += factor * (current.profile.theta0 - older.unknowns[0]);
+    current.profile.lambda1_start += factor * (current.profile.lambda1_start - older.unknowns[1]);
   }
 
-  std::vector<double> ShootingModel::state() const
+  ModelState ShootingModel::state() const
   {
-    const LoadState    &l = current.load;
-    std::vector<double> s{1.,
-                          static_cast<double>(current.kind),
-                          static_cast<double>(l.stage),
-                          l.load_factor,
-                          l.stretch,
-                          l.force,
-                          l.mass,
-                          current.profile.theta0,
-                          current.profile.lambda1_start,
-                          static_cast<double>(current.iterations),
-                          static_cast<double>(l.voltages.size())};
-    s.insert(s.end(), l.voltages.begin(), l.voltages.end());
-    return s;
+    return {current.load, {current.profile.theta0, current.profile.lambda1_start}, {}};
   }
 
-  void ShootingModel::set_state(const std::vector<double> &s)
+  void ShootingModel::set_state(const ModelState &s)
   {
-    if (s.size() < 11 || s[0] != 1. || s[10] != sc.n_rings() ||
-        s.size() != 11 + sc.n_rings())
+    if (s.unknowns.size() != 2 || s.load.voltages.size() != sc.n_rings())
       throw std::invalid_argument("ShootingModel::set_state: not a state of this model");
     Current c;
-    c.kind             = static_cast<Kind>(static_cast<int>(s[1]));
-    c.load.stage       = static_cast<Stage>(static_cast<int>(s[2]));
-    c.load.load_factor = s[3];
-    c.load.stretch     = s[4];
-    c.load.force       = s[5];
-    c.load.mass        = s[6];
-    c.iterations       = static_cast<unsigned int>(s[9]);
-    c.load.voltages.assign(s.begin() + 11, s.end());
-    c.profile = rebuild(c.kind, c.load, s[7], s[8]);
+    c.load    = s.load;
+    c.kind    = kind_of(s.load);
+    c.profile = rebuild(c.kind, c.load, s.unknowns[0], s.unknowns[1]);
     if (!c.profile.ok)
       throw std::runtime_error("ShootingModel::set_state: " + c.profile.message);
     current = std::move(c);

@@ -1,3 +1,5 @@
+#include <cdea/format.h>
+#include <cdea/numerics/bracketed_root.h>
 #include <cdea/solver/arc_length.h>
 #include <cdea/solver/load_stepper.h>
 
@@ -22,24 +24,39 @@ namespace cdea
     return "unknown";
   }
 
-  namespace
-  {
-    std::string kv(const std::vector<double> &volts)
-    {
-      std::ostringstream o;
-      o.precision(8);
-      for (std::size_t i = 0; i < volts.size(); ++i)
-        o << (i ? ", " : "") << volts[i] * 1e-3;
-      return o.str() + " kV";
-    }
-  } // namespace
-
   LoadStepper::LoadStepper(const Scene &scene, EquilibriumModel &model,
                            const SteppingSettings &settings)
     : scene(scene)
     , model(model)
     , settings(settings)
-  {}
+    , postprocessors(standard_postprocessors(scene.prestretch, settings.stability_check,
+                                             settings.breakdown_field > 0.))
+  {
+    crossings.push_back({[](const StepSummary &s) { return s.s2_min; },
+                         [](const StepSummary &s) { return s.s2_min_radius; }, &result.onset,
+                         &on_onset});
+    if (settings.breakdown_field > 0.)
+      {
+        const double E_b = settings.breakdown_field;
+        crossings.push_back({[E_b](const StepSummary &s) { return E_b - s.max_field; },
+                             [](const StepSummary &s) { return s.max_field_radius; },
+                             &result.breakdown, &on_breakdown});
+      }
+  }
+
+  void LoadStepper::add_postprocessor(std::unique_ptr<Postprocessor> postprocessor)
+  {
+    postprocessors.push_back(std::move(postprocessor));
+  }
+
+  std::vector<SummaryColumn> LoadStepper::columns() const
+  {
+    std::vector<SummaryColumn> all;
+    for (const auto &p : postprocessors)
+      for (const auto &c : p->columns())
+        all.push_back(c);
+    return all;
+  }
 
   LoadState LoadStepper::load(const Stage stage, const double t) const
   {
@@ -94,220 +111,191 @@ namespace cdea
     return rate > 0. ? settings.onset_tolerance / rate : 1e-10;
   }
 
-  StepSummary LoadStepper::current_summary() const
+  SolveReport LoadStepper::solve(const LoadState &target)
   {
-    StepSummary s = model.summary();
-    if (settings.stability_check)
-      s.min_eigenvalue = model.min_tangent_eigenvalue();
-    if (settings.breakdown_field > 0.)
-      {
-        const StepFields f = model.fields();
-        s.max_field        = 0.;
-        for (std::size_t i = 0; i < f.E.size(); ++i)
-          if (f.E[i] > s.max_field)
-            {
-              s.max_field        = f.E[i];
-              s.max_field_radius = f.R[i];
-            }
-      }
-    return s;
+    const SolveReport report = model.solve(target);
+    ++result.solves;
+    result.newton_iterations += report.iterations;
+    return report;
   }
 
-  void LoadStepper::report(const StepSummary &s, const Stage stage, const double t,
-                           const unsigned int iterations)
+  LoadStepper::Evaluated LoadStepper::evaluate(const Stage stage, const double t)
   {
-    StepSummary summary       = s;
-    summary.stage             = stage;
-    summary.load_factor       = t;
+    StepContext context(model, stage, t);
+    Evaluated   e;
+    for (const auto &p : postprocessors)
+      p->evaluate(context, e.summary);
+    e.fields = context.computed_fields();
+    return e;
+  }
+
+  void LoadStepper::report(const Evaluated &state, const unsigned int iterations)
+  {
+    StepSummary summary       = state.summary;
     summary.newton_iterations = iterations;
-    summary.wrinkled          = stage != Stage::prestretch && summary.s2_min < 0.;
-    if (stage == Stage::dead_load && t == 1.)
-      {
-        reference_displacement = summary.displacement;
-        have_reference         = true;
-      }
-    summary.stroke = have_reference ? summary.displacement - reference_displacement
-                                    : std::numeric_limits<double>::quiet_NaN();
+    reported_fields           = state.fields;
     ++result.steps;
     if (on_step)
       on_step(summary);
+    reported_fields.reset();
   }
 
-  double LoadStepper::locate_root(const Stage stage, double lo, std::vector<double> state_lo,
-                                  double f_lo, double hi, double f_hi,
+  const StepFields &LoadStepper::step_fields()
+  {
+    if (!reported_fields)
+      reported_fields = std::make_shared<const StepFields>(model.fields());
+    return *reported_fields;
+  }
+
+  double LoadStepper::locate_root(const Stage stage, const double t0, const ModelState &state0,
+                                  const double f0, const double t1, const double f1,
                                   const std::function<double(const StepSummary &)> &f,
-                                  StepSummary &at_root, unsigned int &iterations)
+                                  Evaluated &at_root, unsigned int &iterations)
   {
-    const double t_tol  = voltage_tolerance_in_t(stage, lo);
-    int          side   = 0;
-    double       t_root = hi;
-    bool         at_last = false; // the model holds the last converged evaluation
-    for (unsigned int k = 0; k < 100 && hi - lo > t_tol; ++k)
+    // Every evaluation starts from the converged state on the f >= 0 side
+    // nearest to the root (t1 may lie below t0 on a branch followed backwards
+    // by arc length); the evaluation with the smallest |f| is reported.
+    ModelState   start  = state0;
+    double       t_start = t0;
+    double       best_t = t1, best_f = std::numeric_limits<double>::infinity();
+    ModelState   best_state;
+    const auto   margin = [&](const double t) {
+      model.set_state(start);
+      const SolveReport s = solve(load(stage, t));
+      if (!s.converged)
+        return std::numeric_limits<double>::quiet_NaN();
+      const Evaluated e  = evaluate(stage, t);
+      const double    ft = f(e.summary);
+      if (std::abs(ft) < std::abs(best_f))
+        {
+          best_t     = t;
+          best_f     = ft;
+          best_state = model.state();
+          at_root    = e;
+          iterations = s.iterations;
+        }
+      if (ft >= 0. && std::abs(t - t0) > std::abs(t_start - t0))
+        {
+          start   = model.state();
+          t_start = t;
+        }
+      return ft;
+    };
+    BracketedRootSettings root_settings;
+    root_settings.x_tolerance = voltage_tolerance_in_t(stage, t0);
+    find_bracketed_root(margin, t0, f0, t1, f1, root_settings);
+    if (best_state.unknowns.empty())
       {
-        double t = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
-        if (!(t > lo && t < hi))
-          t = 0.5 * (lo + hi);
-        model.set_state(state_lo);
-        const SolveReport solve = model.solve(load(stage, t));
-        ++result.solves;
-        result.newton_iterations += solve.iterations;
-        at_last = solve.converged;
-        if (!solve.converged)
-          {
-            // Shrink towards the converged side and try again.
-            hi   = t;
-            side = 0;
-            continue;
-          }
-        const StepSummary s  = current_summary();
-        const double      fs = f(s);
-        iterations           = solve.iterations;
-        t_root               = t;
-        at_root              = s;
-        if (fs == 0.)
-          break;
-        if (fs > 0.)
-          {
-            lo       = t;
-            f_lo     = fs;
-            state_lo = model.state();
-            if (side == -1)
-              f_hi *= 0.5; // Illinois: halve the stale end
-            side = -1;
-          }
-        else
-          {
-            hi   = t;
-            f_hi = fs;
-            if (side == 1)
-              f_lo *= 0.5;
-            side = 1;
-          }
+        // No evaluation converged: the far end is the estimate.
+        model.set_state(start);
+        solve(load(stage, best_t));
+        at_root = evaluate(stage, best_t);
+        return best_t;
       }
-    if (!at_last)
-      {
-        model.set_state(state_lo);
-        model.solve(load(stage, t_root));
-        at_root = current_summary();
-      }
-    return t_root;
+    model.set_state(best_state);
+    return best_t;
   }
 
-  bool LoadStepper::check_crossings(const Stage stage, const double t0,
-                                    const std::vector<double> &state0,
-                                    const StepSummary &summary0, const double t1,
-                                    const StepSummary &summary1)
+  bool LoadStepper::check_crossings(const Stage stage, const double t0, const ModelState &state0,
+                                    const Evaluated &e0, const double t1, const Evaluated &e1)
   {
-    const std::vector<double> state1 = model.state();
-
-    if (stage != Stage::prestretch && !result.onset.found && summary0.s2_min >= 0. &&
-        summary1.s2_min < 0.)
+    const ModelState state1 = model.state();
+    for (const Crossing &c : crossings)
       {
-        StepSummary  at_root;
+        const double m0 = c.margin(e0.summary), m1 = c.margin(e1.summary);
+        if (stage == Stage::prestretch || c.record->found || !(m0 >= 0.) || !(m1 < 0.))
+          continue;
+        Evaluated    at_root;
         unsigned int iterations = 0;
-        const double t =
-          locate_root(stage, t0, state0, summary0.s2_min, t1, summary1.s2_min,
-                      [](const StepSummary &s) { return s.s2_min; }, at_root, iterations);
-        result.onset = {true, load(stage, t).voltages, scene.prestretch * at_root.s2_min_radius,
-                        t};
-        if (on_onset)
-          on_onset(result.onset);
-        report(at_root, stage, t, iterations);
+        const double t = locate_root(stage, t0, state0, m0, t1, m1, c.margin, at_root, iterations);
+        *c.record      = {true, load(stage, t).voltages, scene.prestretch * c.radius(at_root.summary),
+                          t};
+        if (*c.callback)
+          (*c.callback)(*c.record);
+        report(at_root, iterations);
         model.set_state(state1);
       }
 
-    const double E_b = settings.breakdown_field;
-    if (E_b > 0. && !result.breakdown.found && summary0.max_field < E_b &&
-        summary1.max_field >= E_b)
-      {
-        StepSummary  at_root;
-        unsigned int iterations = 0;
-        const auto   margin     = [E_b](const StepSummary &s) { return E_b - s.max_field; };
-        const double t = locate_root(stage, t0, state0, margin(summary0), t1, margin(summary1),
-                                     margin, at_root, iterations);
-        result.breakdown = {true, load(stage, t).voltages,
-                            scene.prestretch * at_root.max_field_radius, t};
-        if (on_breakdown)
-          on_breakdown(result.breakdown);
-        report(at_root, stage, t, iterations);
-        model.set_state(state1);
-      }
     // Then a state outside the model's validity: bisect for the boundary, report
     // it and end the run there.
-    if (!summary1.validity_limit.empty())
+    if (!e1.summary.validity_limit.empty())
       {
-        double              lo = t0, hi = t1;
-        std::vector<double> state_lo = state0;
-        StepSummary         last_valid = summary0, first_invalid = summary1;
-        const double        t_tol      = voltage_tolerance_in_t(stage, t0);
+        double       lo = t0, hi = t1;
+        ModelState   state_lo   = state0;
+        Evaluated    last_valid = e0;
+        std::string  why        = e1.summary.validity_limit;
+        const double t_tol      = voltage_tolerance_in_t(stage, t0);
         while (hi - lo > t_tol)
           {
             const double t = 0.5 * (lo + hi);
             model.set_state(state_lo);
-            const SolveReport solve = model.solve(load(stage, t));
-            ++result.solves;
-            result.newton_iterations += solve.iterations;
-            const StepSummary s = solve.converged ? current_summary() : StepSummary();
-            if (solve.converged && s.validity_limit.empty())
+            const SolveReport s = solve(load(stage, t));
+            const Evaluated   e = s.converged ? evaluate(stage, t) : Evaluated();
+            if (s.converged && e.summary.validity_limit.empty())
               {
                 lo         = t;
                 state_lo   = model.state();
-                last_valid = s;
+                last_valid = e;
               }
             else
               {
                 hi = t;
-                if (solve.converged)
-                  first_invalid = s;
+                if (s.converged)
+                  why = e.summary.validity_limit;
               }
           }
         model.set_state(state_lo);
         if (lo > t0)
-          report(last_valid, stage, lo, 0);
-        std::ostringstream m;
-        m << "stage '" << stage_name(stage) << "': the model's validity ends between "
-          << kv(load(stage, lo).voltages) << " (last valid state, reported) and "
-          << kv(load(stage, hi).voltages) << ": " << first_invalid.validity_limit;
-        result.message = m.str();
+          report(last_valid, 0);
+        result.message = "stage '" + stage_name(stage) + "': the model's validity ends between " +
+                         format_kV(load(stage, lo).voltages, 8) +
+                         " (last valid state, reported) and " +
+                         format_kV(load(stage, hi).voltages, 8) + ": " + why;
         return false;
       }
-
     return true;
   }
 
   bool LoadStepper::run_stage(const Stage stage, const double t_end)
   {
-    double              t        = 0.;
-    double              dt       = std::min(step_limit(stage, 0.), t_end);
-    unsigned int        cutbacks = 0;
-    std::vector<double> previous_state;
-    double              previous_t = 0.;
-    StepSummary         summary0   = current_summary();
+    double       t        = 0.;
+    double       dt       = std::min(step_limit(stage, 0.), t_end);
+    unsigned int cutbacks = 0;
+    ModelState   previous_state;
+    double       previous_t = 0.;
+    Evaluated    e0         = evaluate(stage, 0.);
 
     while (t < t_end * (1. - 1e-14))
       {
         // Land exactly on segment ends (waypoints) and on the stage end.
         const double segment_end = std::min(t_end, std::floor(t + 1e-12) + 1.);
         const double t_next      = std::min(t + dt, segment_end);
-        const std::vector<double> state0 = model.state();
+        if (!(t_next > t))
+          {
+            result.message = "stage '" + stage_name(stage) +
+                             "': the load parameter cannot advance beyond t = " +
+                             format_number(t, 17) +
+                             " (the step is below the resolution of t; is the voltage path "
+                             "too steep or are two waypoints too close?)";
+            return false;
+          }
+        const ModelState state0 = model.state();
 
         // Linear predictor from the last two converged states of this stage.
-        if (settings.extrapolate && !previous_state.empty() && t > previous_t)
+        const bool predicted =
+          settings.extrapolate && !previous_state.unknowns.empty() && t > previous_t;
+        if (predicted)
           model.predict(previous_state, (t_next - t) / (t - previous_t));
         const LoadState target = load(stage, t_next);
-        SolveReport     solve  = model.solve(target);
-        ++result.solves;
-        result.newton_iterations += solve.iterations;
-        if (!solve.converged && settings.extrapolate && !previous_state.empty())
+        SolveReport     report1 = solve(target);
+        if (!report1.converged && settings.extrapolate && !previous_state.unknowns.empty())
           {
             // The predictor can overshoot near a limit point: retry from the
             // converged state before cutting the increment.
             model.set_state(state0);
-            solve = model.solve(target);
-            ++result.solves;
-            result.newton_iterations += solve.iterations;
+            report1 = solve(target);
           }
-        if (!solve.converged)
+        if (!report1.converged)
           {
             model.set_state(state0);
             dt *= 0.5;
@@ -321,9 +309,9 @@ namespace cdea
                 m << "stage '" << stage_name(stage) << "': no equilibrium found beyond load "
                   << "parameter t = " << t;
                 if (stage == Stage::voltage)
-                  m << " (voltages " << kv(load(stage, t).voltages) << ")";
+                  m << " (voltages " << format_kV(load(stage, t).voltages, 8) << ")";
                 m << " after " << cutbacks << " cut-backs of the increment; last attempt at t = "
-                  << t_next << ": " << solve.message;
+                  << t_next << ": " << report1.message;
                 if (stage == Stage::voltage)
                   m << ". This is typically a limit point (fold) of the voltage-displacement "
                        "curve, which load stepping cannot pass (Solver/Continuation = arc "
@@ -334,24 +322,26 @@ namespace cdea
             continue;
           }
 
-        const StepSummary summary1 = current_summary();
-        if (!check_crossings(stage, t, state0, summary0, t_next, summary1))
+        const Evaluated e1 = evaluate(stage, t_next);
+        if (!check_crossings(stage, t, state0, e0, t_next, e1))
           return false;
         previous_state = state0;
         previous_t     = t;
         t              = t_next;
-        summary0       = summary1;
-        report(summary0, stage, t, solve.iterations);
+        e0             = e1;
+        report(e0, report1.iterations);
         cutbacks = 0;
-        if (solve.iterations <= 4)
+        if (report1.iterations <= 4)
           dt = std::min(2. * dt, step_limit(stage, t));
       }
     return true;
   }
 
   // The voltage stage by pseudo-arclength continuation in (unknowns, t). Ends
-  // at the end of the path, when t falls below 0, after the maximum number of
-  // steps, or beyond the displacement limit; result.end says which.
+  // at the end of the path, when t falls below 0, or beyond the displacement
+  // limit (complete: the curve has been followed as far as asked); after the
+  // maximum number of steps, or with the dead load alone past the
+  // displacement limit, the run is incomplete. result.end says which.
   bool LoadStepper::run_arc_length(const double t_end)
   {
     const Stage          stage = Stage::voltage;
@@ -372,8 +362,17 @@ namespace cdea
     p.t = 0.;
     problem->set_current(p.x, p.t);
     arc.tangent(p);
-    std::vector<double> state_p   = model.state();
-    StepSummary         summary_p = current_summary();
+    ModelState state_p = model.state();
+    Evaluated  e_p     = evaluate(stage, 0.);
+
+    const auto stop = [&](const std::string &why) {
+      result.end     = why;
+      result.message = "arc length: " + why + " at t = " + format_number(p.t, 8) +
+                       " (voltages " + format_kV(load(stage, p.t).voltages, 8) + ")";
+      return false;
+    };
+    if (settings.max_displacement > 0. && e_p.summary.displacement > settings.max_displacement)
+      return stop("the displacement passed Solver/Max displacement before any voltage");
 
     const double ds_max = step_limit(stage, 0.);
     const double ds_min = settings.min_voltage_increment /
@@ -390,8 +389,8 @@ namespace cdea
               {
                 problem->set_current(p.x, p.t);
                 result.message = "arc length: no equilibrium found beyond load parameter t = " +
-                                 std::to_string(p.t) + " (voltages " +
-                                 kv(load(stage, p.t).voltages) + "): " + why;
+                                 format_number(p.t, 6) + " (voltages " +
+                                 format_kV(load(stage, p.t).voltages, 8) + "): " + why;
                 return false;
               }
             continue;
@@ -401,19 +400,16 @@ namespace cdea
         if (q.t > t_end && q.t_dot > 0.)
           {
             model.set_state(state_p);
-            const SolveReport solve = model.solve(load(stage, t_end));
-            ++result.solves;
-            result.newton_iterations += solve.iterations;
-            if (!solve.converged)
+            const SolveReport s = solve(load(stage, t_end));
+            if (!s.converged)
               {
                 ds *= 0.5;
                 continue;
               }
-            const StepSummary summary_end = current_summary();
-            if (p.t_dot > 0. &&
-                !check_crossings(stage, p.t, state_p, summary_p, t_end, summary_end))
+            const Evaluated e_end = evaluate(stage, t_end);
+            if (p.t_dot > 0. && !check_crossings(stage, p.t, state_p, e_p, t_end, e_end))
               return false;
-            report(summary_end, stage, t_end, solve.iterations);
+            report(e_end, s.iterations);
             result.end = "reached the end of the voltage path";
             return true;
           }
@@ -421,7 +417,7 @@ namespace cdea
         ++result.solves;
         problem->set_current(q.x, q.t);
 
-        const StepSummary summary_q = current_summary();
+        const Evaluated e_q = evaluate(stage, q.t);
         // A limit point between p and q: t' changed sign.
         if ((q.t_dot > 0.) != (p.t_dot > 0.))
           {
@@ -429,25 +425,25 @@ namespace cdea
             if (arc.locate_limit_point(p, ds, q.t_dot, limit))
               {
                 problem->set_current(limit.x, limit.t);
-                const StepSummary s = current_summary();
+                const Evaluated e = evaluate(stage, limit.t);
                 result.limit_points.push_back(
-                  {limit.t, load(stage, limit.t).voltages, s.displacement});
+                  {limit.t, load(stage, limit.t).voltages, e.summary.displacement});
                 if (on_limit_point)
                   on_limit_point(result.limit_points.back());
-                report(s, stage, limit.t, limit.iterations);
+                report(e, limit.iterations);
                 problem->set_current(q.x, q.t);
               }
           }
-        else if (!check_crossings(stage, p.t, state_p, summary_p, q.t, summary_q))
+        else if (!check_crossings(stage, p.t, state_p, e_p, q.t, e_q))
           return false;
 
-        summary_p = summary_q;
-        if (!summary_p.validity_limit.empty())
+        e_p = e_q;
+        if (!e_p.summary.validity_limit.empty())
           {
-            result.message = "arc length: " + summary_p.validity_limit;
+            result.message = "arc length: " + e_p.summary.validity_limit;
             return false;
           }
-        report(summary_p, stage, q.t, q.iterations);
+        report(e_p, q.iterations);
         state_p = model.state();
         p       = q;
         if (q.t < 0.)
@@ -455,7 +451,7 @@ namespace cdea
             result.end = "the path parameter fell below 0 (voltages back to zero)";
             return true;
           }
-        if (settings.max_displacement > 0. && summary_p.displacement > settings.max_displacement)
+        if (settings.max_displacement > 0. && e_p.summary.displacement > settings.max_displacement)
           {
             result.end = "the displacement passed Solver/Max displacement";
             return true;
@@ -463,16 +459,14 @@ namespace cdea
         if (q.iterations <= 4)
           ds = std::min(1.5 * ds, ds_max);
       }
-    result.end = "Solver/Max arc-length steps reached";
-    return true;
+    return stop("Solver/Max arc-length steps reached");
   }
 
   RunResult LoadStepper::run()
   {
-    result         = RunResult();
-    have_reference = false;
+    result = RunResult();
     model.set_reference_state();
-    report(current_summary(), Stage::prestretch, 0., 0);
+    report(evaluate(Stage::prestretch, 0.), 0);
     if (!run_stage(Stage::prestretch, 1.))
       return result;
     if (!run_stage(Stage::dead_load, 1.))

@@ -5,6 +5,7 @@
 // Scene and rejects bad input with an InputError that names the parameter.
 
 #include <cdea/scene.h>
+#include <cdea/solver/tangent_solver.h>
 
 #include <stdexcept>
 #include <string>
@@ -24,6 +25,24 @@ namespace cdea
     /// Long values in @p message are shortened (clip_long_values()).
     explicit InputError(const std::string &message);
   };
+
+  /// How the voltage path is followed (Solver/Continuation).
+  enum class Continuation
+  {
+    load_stepping,
+    arc_length
+  };
+
+  /// Wrinkling/Model: the plain law with s2 < 0 flagged, or the relaxed law.
+  enum class WrinklingModel
+  {
+    check,
+    relaxed
+  };
+
+  /// The prm spelling of each choice, for messages.
+  std::string to_string(Continuation choice);
+  std::string to_string(WrinklingModel choice);
 
   namespace parameters
   {
@@ -83,8 +102,8 @@ namespace cdea
       double       voltage_increment_kV;
       double       min_voltage_increment_kV;
       unsigned int max_cutbacks;
-      std::string  continuation; ///< "load stepping" or "arc length"
-      std::string  linear_solver; ///< "banded LU" or "Trilinos KLU"
+      Continuation continuation;
+      LinearSolver linear_solver;
       unsigned int max_arc_length_steps;
       double       max_displacement_mm;
       bool         stability_check;
@@ -96,7 +115,7 @@ namespace cdea
     struct Wrinkling
     {
       double      onset_tolerance_V;
-      std::string model; ///< "check" or "relaxed"
+      WrinklingModel model;
       static void declare(dealii::ParameterHandler &prm);
       void        parse(dealii::ParameterHandler &prm);
     };

@@ -1,65 +1,35 @@
 #pragma once
 // Axisymmetric nonlinear membrane FE model of the cone actuator.
 //
-// Unknowns r(R) and z(R) on the undeformed radius R in [A, B], an FESystem of
-// two FE_Q of degree p; element boundaries lie on every ring edge and each
-// element carries the voltage of its ring. The total potential
+// Unknowns r(R) and z(R) on the undeformed radius R in [A, B] (Discretization:
+// two FE_Q of degree p, element boundaries on every ring edge, each element at
+// the voltage of its ring). The total potential
 //
 //   Pi[r, z] = 2 pi H int_A^B W(l1, l2; Phi) R dR  -  F z(A)  [+ E_w, see WaterLoad],
-//   l1 = sqrt(r'^2 + z'^2),  l2 = r / R,
 //
-// is stationary at equilibrium; its first and second variations give the
-// residual and the exact tangent (see doc/theory.md). Boundary conditions:
+// is stationary at equilibrium; the cell kernel (cell_kernel.h) evaluates it,
+// its residual and its exact tangent from the registered terms (membrane
+// energy and dead load, enclosed volume and water load). Boundary conditions:
 // r(A) = s A and r(B) = s B with s the current pre-stretch (s = lam_pre after
 // stage 0), z(B) = 0; z(A) is free and carries the dead load.
 //
-// The deal.II machinery stays in the source file (pimpl) so that including
-// this header is cheap.
+// Newton evaluates the residual and the tangent together at every trial
+// state, so the tangent of a converged state is at hand for the stability
+// eigenvalue, the arc-length tangent and sensitivities without assembling
+// again.
 
+#include <cdea/fe/discretization.h>
+#include <cdea/fe/water_term.h>
 #include <cdea/scene.h>
 #include <cdea/solver/equilibrium_model.h>
 #include <cdea/solver/newton.h>
+#include <cdea/solver/tangent_solver.h>
 
 #include <memory>
 
 namespace cdea
 {
-  /// How the tangent systems are solved: LAPACK's banded LU (factored once
-  /// per assembly, cheap for the banded 1D tangent) or Trilinos' sparse
-  /// direct solver KLU (through deal.II's wrappers).
-  enum class LinearSolver
-  {
-    banded_lu,
-    trilinos_klu
-  };
-
-  struct FeDiscretization
-  {
-    unsigned int degree              = 4;
-    unsigned int elements_per_ring   = 4;
-    double       grading             = 4.;
-    unsigned int refinements         = 0;
-    unsigned int samples_per_element = 4;
-  };
-
-  /// Hydrostatic load of the pump module's water (doc/pump.md). The water
-  /// fills the cone above the membrane and the disk (z > 0 is down) and rises
-  /// in a level tube of cross-section tube_area above the frame plane, to the
-  /// free-surface height h = (water_volume - V) / tube_area with V the
-  /// enclosed volume. The pressure rho g (h + z) acts normal to the deformed
-  /// membrane and on the disk. It is conservative, with the potential
-  ///   E_w = rho g [(water_volume - V)^2 / (2 tube_area) - pi int r^2 z (-z') dR],
-  /// added to Pi (residual and exact tangent; the tangent has a dense rank-one
-  /// part from h(V), solved by Sherman-Morrison). Gravity ramps with the load
-  /// stage: off in stage 0, times the load factor in stage 1, full in stage 2.
-  struct WaterLoad
-  {
-    bool   enabled      = false;
-    double density      = 1000.;  ///< kg/m^3
-    double gravity      = 9.81;   ///< m/s^2
-    double water_volume = 150e-6; ///< m^3, in the cone and the tube together
-    double tube_area    = 400e-6; ///< m^2, cross-section of the level tube
-  };
+  struct AssembledSystem;
 
   class MembraneModel : public EquilibriumModel
   {
@@ -68,15 +38,18 @@ namespace cdea
                   const NewtonSettings &newton);
     ~MembraneModel() override;
 
-    void                set_reference_state() override;
-    SolveReport         solve(const LoadState &load) override;
-    StepSummary         summary() const override;
-    StepFields          fields() const override;
-    std::vector<double> state() const override;
-    void                set_state(const std::vector<double> &state) override;
-    void predict(const std::vector<double> &older_state, double factor) override;
+    void             set_reference_state() override;
+    SolveReport      solve(const LoadState &load) override;
+    const LoadState &load() const override;
+    double           displacement() const override;
+    HoopStresses     hoop_stresses() const override;
+    StepFields       fields() const override;
+    ModelState       state() const override;
+    void             set_state(const ModelState &state) override;
+    void             predict(const ModelState &older, double factor) override;
     ContinuationProblem *continuation(const std::function<LoadState(double)> &path) override;
-    double               min_tangent_eigenvalue() const override;
+    /// With the tangent of the current state when it is at hand (after a solve).
+    double min_tangent_eigenvalue() override;
 
     /// Tension-field relaxation where the hoop stress would be negative
     /// (Wrinkling/Model = relaxed); off: the plain law everywhere.
@@ -96,15 +69,19 @@ namespace cdea
 
     unsigned int n_dofs() const;
     unsigned int n_elements() const;
+    const Discretization &discretization() const;
 
     /// Total potential Pi at the current state and load (J).
     double energy() const;
 
-    /// Residual and tangent at the current state and load, in natural dof
-    /// order with no boundary condition applied (for tests against finite
-    /// differences and automatic differentiation).
+    /// Residual and tangent at the current state and load, in dof order with
+    /// no boundary condition applied (for tests against finite differences).
     std::vector<double>              residual_vector() const;
     std::vector<std::vector<double>> tangent_matrix() const;
+
+    /// The system of the current state as @p flags (AssemblyFlag) ask, no
+    /// boundary condition applied; false outside the material's range.
+    bool assemble(unsigned int flags, AssembledSystem &system) const;
 
     /// Unknown vector of the current state and its replacement (dof order).
     std::vector<double> solution() const;
@@ -123,7 +100,7 @@ namespace cdea
   private:
     class Impl;
     class Continuation;
-    std::unique_ptr<Impl>         impl;
-    std::unique_ptr<Continuation> continuation_problem;
+    std::unique_ptr<Impl>                impl;
+    std::unique_ptr<ContinuationProblem> continuation_problem;
   };
 } // namespace cdea

@@ -1,6 +1,5 @@
 #pragma once
-// Tension-field (relaxed) membrane law wrapped around any law that provides
-// energy(), stress() and tangent() in the principal stretches (l1, l2).
+// Tension-field (relaxed) membrane law wrapped around any elastic MembraneLaw.
 //
 // Radial wrinkles let the film take a material hoop stretch larger than the
 // kinematic one l2 = r/R: the wrinkles absorb the excess circumference. The
@@ -18,119 +17,41 @@
 //
 // and the other second derivatives vanish. Two ways the relaxed law can fail,
 // both reported rather than crossed: the natural width has no root below the
-// Gent limit, and ds1_rel/dl1 <= 0 (the relaxed law loses monotonicity in l1:
-// loss of strong ellipticity, the onset of pull-in).
+// base law's hoop limit (TensionState::failed, evaluate() returns false), and
+// ds1_rel/dl1 <= 0 (loss of monotonicity in l1, i.e. of strong ellipticity:
+// the onset of pull-in), flagged in LawResponse::loses_ellipticity.
 
-#include <cdea/material/gent_dielectric.h>
+#include <cdea/material/membrane_law.h>
 
-#include <cmath>
+#include <memory>
 
 namespace cdea
 {
-  enum class TensionState : int
-  {
-    taut     = 0,
-    wrinkled = 1,
-    failed   = 2 ///< no natural width below the Gent limit
-  };
-
-  struct RelaxedEvaluation
-  {
-    TensionState  state         = TensionState::taut;
-    double        natural_width = 0.; ///< w* (equals l2 when taut)
-    double        energy        = 0.;
-    NominalStress stress{0., 0.};
-    StressTangent tangent{0., 0., 0.};
-    /// Wrinkled and ds1_rel/dl1 <= 0: the relaxed law is not elliptic here.
-    bool loses_ellipticity = false;
-  };
-
-  template <typename Law>
-  class TensionFieldRelaxation
+  class TensionField final : public MembraneLaw
   {
   public:
-    explicit TensionFieldRelaxation(const Law &law)
-      : law(law)
-    {}
+    /// @p base must be elastic (no internal variables).
+    explicit TensionField(std::shared_ptr<const MembraneLaw> base);
 
-    const Law &base() const { return law; }
+    const MembraneLaw &base() const { return *law; }
 
-    RelaxedEvaluation evaluate(const double l1, const double l2) const
-    {
-      RelaxedEvaluation e;
-      const NominalStress s = law.stress(l1, l2);
-      if (s.s2 >= 0.)
-        {
-          e.natural_width = l2;
-          e.energy        = law.energy(l1, l2);
-          e.stress        = s;
-          e.tangent       = law.tangent(l1, l2);
-          return e;
-        }
-      // March up in w until s2 changes sign, inside the Gent range, then
-      // bisect-secant (Illinois) to full precision.
-      const double w_max = gent_hoop_limit(l1);
-      double       lo = l2, f_lo = s.s2, hi = l2, f_hi = s.s2;
-      double       step = 1e-3 * l2;
-      while (f_hi < 0.)
-        {
-          lo   = hi;
-          f_lo = f_hi;
-          hi   = std::min(hi + step, lo + 0.5 * (w_max - lo));
-          if (!(hi > lo) || w_max - hi < 1e-14 * w_max)
-            {
-              e.state = TensionState::failed;
-              return e;
-            }
-          f_hi = law.stress(l1, hi).s2;
-          step *= 2.;
-        }
-      int side = 0;
-      for (int k = 0; k < 200 && hi - lo > 1e-15 * hi; ++k)
-        {
-          const double w = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
-          const double f = law.stress(l1, w).s2;
-          if (f == 0.)
-            lo = hi = w;
-          else if (f < 0.)
-            {
-              lo   = w;
-              f_lo = f;
-              if (side == -1)
-                f_hi *= 0.5;
-              side = -1;
-            }
-          else
-            {
-              hi   = w;
-              f_hi = f;
-              if (side == 1)
-                f_lo *= 0.5;
-              side = 1;
-            }
-        }
-      const double        w  = 0.5 * (lo + hi);
-      const StressTangent t  = law.tangent(l1, w);
-      e.state                = TensionState::wrinkled;
-      e.natural_width        = w;
-      e.energy               = law.energy(l1, w);
-      e.stress               = {law.stress(l1, w).s1, 0.};
-      e.tangent              = {t.s11 - t.s12 * t.s12 / t.s22, 0., 0.};
-      e.loses_ellipticity    = !(e.tangent.s11 > 0.);
-      return e;
-    }
+    /// The relaxed response; false where the natural width does not exist
+    /// (response.tension is then TensionState::failed) or the base law fails.
+    bool evaluate(const LawInput &input, const InternalStep &step, unsigned int request,
+                  LawResponse &response) const override;
 
-    /// Largest hoop stretch inside the Gent limit at meridian stretch l1:
-    /// l1^2 + w^2 + l1^-2 w^-2 - 3 < Jlim, solved for the larger root in w^2.
-    double gent_hoop_limit(const double l1) const
-    {
-      const double c = law.constants().jlim + 3. - l1 * l1; // w^2 + q/w^2 = c, q = l1^-2
-      const double q = 1. / (l1 * l1);
-      const double d = c * c - 4. * q;
-      return d > 0. ? std::sqrt(0.5 * (c + std::sqrt(d))) : 0.;
-    }
+    /// Wrinkled points: d s1_rel/dp = ds1/dp + s12 dw*/dp, dw*/dp = -(ds2/dp) / s22.
+    bool parameter_derivative(const LawInput &input, const InternalStep &step,
+                              LawParameter parameter, double &d_energy,
+                              NominalStress &d_stress) const override;
+
+    double max_hoop_stretch(double l1) const override { return law->max_hoop_stretch(l1); }
+
+    /// The relaxed response at (l1, l2) with every quantity (energy, stress,
+    /// tangent, state, natural width), whatever the outcome.
+    LawResponse relax(const LawInput &input) const;
 
   private:
-    Law law;
+    std::shared_ptr<const MembraneLaw> law;
   };
 } // namespace cdea

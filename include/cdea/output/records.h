@@ -4,6 +4,7 @@
 
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cdea
@@ -43,6 +44,9 @@ namespace cdea
     /// not (e.g. the relaxed law loses ellipticity at some radius).
     std::string validity_limit;
     unsigned int        newton_iterations = 0;
+    /// Further /summary columns of the postprocessors: name (with its unit)
+    /// and value, in the order they were registered.
+    std::vector<std::pair<std::string, double>> columns;
   };
 
   /// Fields along the meridian, one entry per sample point (SI; theta in rad).

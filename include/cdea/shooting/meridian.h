@@ -25,6 +25,7 @@
 #include <cdea/scene.h>
 #include <cdea/shooting/options.h>
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -75,16 +76,19 @@ namespace cdea::shooting
   public:
     ShootingLaw(const GentDielectric &law, const bool relaxed)
       : plain(law)
-      , relaxation(law)
       , relaxed(relaxed)
-    {}
+    {
+      if (relaxed)
+        relaxation = std::make_shared<const TensionField>(
+          std::make_shared<const GentDielectricLaw>(law.constants()));
+    }
     NominalStress stress(const double l1, const double l2) const
     {
-      return relaxed ? relaxation.evaluate(l1, l2).stress : plain.stress(l1, l2);
+      return relaxed ? relax(l1, l2).stress : plain.stress(l1, l2);
     }
     StressTangent tangent(const double l1, const double l2) const
     {
-      return relaxed ? relaxation.evaluate(l1, l2).tangent : plain.tangent(l1, l2);
+      return relaxed ? relax(l1, l2).tangent : plain.tangent(l1, l2);
     }
     NominalStress plain_stress(const double l1, const double l2) const
     {
@@ -102,9 +106,14 @@ namespace cdea::shooting
     const MaterialConstants &constants() const { return plain.constants(); }
 
   private:
-    GentDielectric                         plain;
-    TensionFieldRelaxation<GentDielectric> relaxation;
-    bool                                   relaxed;
+    GentDielectric                      plain;
+    std::shared_ptr<const TensionField> relaxation;
+    bool                                relaxed;
+
+    LawResponse relax(const double l1, const double l2) const
+    {
+      return relaxation->relax({l1, l2, plain.voltage()});
+    }
   };
 
   std::optional<double> solve_lambda1(const ShootingLaw &law, double lambda2, double target,

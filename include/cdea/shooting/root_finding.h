@@ -3,10 +3,10 @@
 //
 // The equilibrium branch is followed by continuation, so the root is sought
 // near a guess only: secant steps of bounded size from the guess; as soon as
-// two iterates bracket a sign change, the Illinois variant of regula falsi
-// takes over. If the secant phase stalls, a bracket is grown symmetrically
-// around the guess (half-width doubling up to a limit) and then closed by
-// Illinois. There is deliberately no global scan: a far root may belong to a
+// two iterates bracket a sign change, the project's bracketed root finder
+// (numerics/bracketed_root.h) takes over. If the secant phase stalls, a
+// bracket is grown symmetrically around the guess (half-width doubling up to a
+// limit) and then closed the same way. There is deliberately no global scan: a far root may belong to a
 // non-physical branch.
 
 #include <functional>

@@ -38,21 +38,22 @@ namespace cdea::shooting
   public:
     explicit ShootingModel(const Scene &scene, const ShootingOptions &options = {});
 
-    void        set_reference_state() override;
-    SolveReport solve(const LoadState &load) override;
-    StepSummary summary() const override;
-    StepFields  fields() const override;
+    void         set_reference_state() override;
+    SolveReport  solve(const LoadState &load) override;
+    double       displacement() const override;
+    HoopStresses hoop_stresses() const override;
+    StepFields   fields() const override;
     /// pi int r^2 (-z') dR over the profile's samples: cubic Hermite
     /// interpolation of r and z (slopes l1 cos(theta), -l1 sin(theta)) between
     /// neighbouring samples, integrated exactly; error O(h^4) in the sample spacing.
     double      enclosed_volume() const override;
 
-    /// Layout: {1 (format), kind, stage, load_factor, stretch, force, mass,
-    /// theta0, l1(A), root iterations, n_rings, voltages...}.
-    std::vector<double> state() const override;
-    void                set_state(const std::vector<double> &state) override;
+    /// Unknowns: the shooting angle theta0 and the disk-edge stretch l1(A);
+    /// the kind of state (homogeneous, flat, cone) follows from the load.
+    ModelState state() const override;
+    void       set_state(const ModelState &state) override;
     /// Extrapolates the shooting angle and the disk-edge stretch (cone states only).
-    void predict(const std::vector<double> &older_state, double factor) override;
+    void predict(const ModelState &older, double factor) override;
 
     void                   set_options(const ShootingOptions &options);
     const ShootingOptions &options() const { return integrator.options(); }
@@ -61,7 +62,7 @@ namespace cdea::shooting
     /// The current equilibrium: profile (with samples), shooting angle, load.
     const Profile   &profile() const { return current.profile; }
     double           shooting_angle() const { return current.profile.theta0; }
-    const LoadState &load() const { return current.load; }
+    const LoadState &load() const override { return current.load; }
 
   private:
     enum class Kind : int
@@ -87,5 +88,7 @@ namespace cdea::shooting
     /// Integrate once from stored start values (exactly reproducible).
     Profile rebuild(Kind kind, const LoadState &load, double theta0,
                     double lambda1_start) const;
+    /// The kind of state solve() reaches for @p load.
+    static Kind kind_of(const LoadState &load);
   };
 } // namespace cdea::shooting

@@ -12,13 +12,16 @@
 // The tangent at the new point solves K b = dr/dt, t' = 1 / (t0' - <x0', b>_w),
 // x' = -t' b, then normalised: the bordered row keeps the direction of travel
 // through a limit point, where t' changes sign. A limit point between two
-// points is located by a secant (Illinois) search for t' = 0 over the step
+// points is located by a bracketed root search for t' = 0 over the step
 // length from the first point.
+
+#include <cdea/numerics/bracketed_root.h>
 
 #include <Eigen/Dense>
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <string>
 
 namespace cdea
@@ -128,40 +131,26 @@ namespace cdea
     }
 
     /// Between @p from (t' > 0, say) and a later point with t' of the other
-    /// sign reached with step @p ds: the point with t' = 0 (a limit point).
+    /// sign reached with step @p ds: the point with t' = 0 (a limit point),
+    /// found by the project's bracketed root finder over the step length.
     bool locate_limit_point(const Point &from, const double ds, const double t_dot_end,
                             Point &limit, const double tolerance = 1e-12)
     {
-      double lo = 0., f_lo = from.t_dot, hi = ds, f_hi = t_dot_end;
-      int    side  = 0;
-      bool   found = false;
-      for (int k = 0; k < 100; ++k)
-        {
-          const double s = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
-          Point        p;
-          if (!step(from, s, p))
-            break;
+      bool found = false;
+      const auto t_dot = [&](const double s) {
+        Point p;
+        if (!step(from, s, p))
+          return std::numeric_limits<double>::quiet_NaN();
+        if (!found || std::abs(p.t_dot) < std::abs(limit.t_dot))
           limit = p;
-          found = true;
-          if (std::abs(p.t_dot) < tolerance || hi - lo < tolerance * ds)
-            break;
-          if ((p.t_dot > 0.) == (f_lo > 0.))
-            {
-              lo   = s;
-              f_lo = p.t_dot;
-              if (side == -1)
-                f_hi *= 0.5;
-              side = -1;
-            }
-          else
-            {
-              hi   = s;
-              f_hi = p.t_dot;
-              if (side == 1)
-                f_lo *= 0.5;
-              side = 1;
-            }
-        }
+        found = true;
+        return p.t_dot;
+      };
+      BracketedRootSettings settings;
+      settings.x_tolerance     = tolerance * ds;
+      settings.f_tolerance     = tolerance;
+      settings.stop_on_failure = true;
+      find_bracketed_root(t_dot, 0., from.t_dot, ds, t_dot_end, settings);
       return found;
     }
 

@@ -7,17 +7,21 @@
 // the last converged state), a fast one lets it grow back to its maximum. The
 // voltage stage can instead be followed by pseudo-arclength continuation
 // (through folds, every limit point located) when the model offers it.
-// After every converged step of stages 1 and 2:
-//  - the first load where the hoop stress reaches zero anywhere is located by
-//    regula falsi (Illinois) on the stage parameter: the wrinkling onset;
-//  - likewise the first load where the true field reaches the breakdown field;
+// After every converged step of stages 1 and 2 the registered postprocessors
+// (postprocessors.h) fill its summary, and
+//  - the first load where a crossing's margin changes sign is located by the
+//    bracketed root finder on the stage parameter: the wrinkling onset
+//    (s2_min = 0), and the breakdown field (E_max = E_b) when that check is on;
 //  - a state outside the model's validity (StepSummary::validity_limit) ends
 //    the run, after the boundary has been located by bisection.
+// Every loop advances the stage parameter or stops with a message.
 
 #include <cdea/scene.h>
 #include <cdea/solver/equilibrium_model.h>
+#include <cdea/solver/postprocessors.h>
 
 #include <functional>
+#include <memory>
 #include <string>
 
 namespace cdea
@@ -56,10 +60,16 @@ namespace cdea
   class LoadStepper
   {
   public:
+    /// Registers the standard postprocessors (postprocessors.h) for @p settings.
     LoadStepper(const Scene &scene, EquilibriumModel &model, const SteppingSettings &settings);
 
+    /// Register a further postprocessor, called after the standard ones.
+    void add_postprocessor(std::unique_ptr<Postprocessor> postprocessor);
+    /// The extra /summary columns of every registered postprocessor.
+    std::vector<SummaryColumn> columns() const;
+
     /// Called after each converged step, with the model in that state. The
-    /// summary is complete (stage, load factor, stroke, wrinkled filled in).
+    /// summary is complete (every postprocessor's part and the iterations).
     std::function<void(const StepSummary &)> on_step;
     /// Called once when the wrinkling onset has been located (before the
     /// on_step call that reports the onset state itself).
@@ -68,41 +78,62 @@ namespace cdea
     std::function<void(const OnsetRecord &)> on_breakdown;
     std::function<void(const LimitPoint &)>  on_limit_point;
 
+    /// Fields of the step being reported (valid during on_step; computed
+    /// once per step and shared with the postprocessors).
+    const StepFields &step_fields();
+
     RunResult run();
 
     /// The load at parameter t of a stage.
     LoadState load(Stage stage, double t) const;
 
   private:
-    const Scene        scene;
-    EquilibriumModel  &model;
-    SteppingSettings   settings;
+    /// A converged state with its summary and, if computed, its fields.
+    struct Evaluated
+    {
+      StepSummary                       summary;
+      std::shared_ptr<const StepFields> fields;
+    };
 
-    RunResult result;
-    double    reference_displacement = 0.; ///< at the end of the dead-load stage
-    bool      have_reference         = false;
+    /// A quantity whose first sign change along the path is located.
+    struct Crossing
+    {
+      std::function<double(const StepSummary &)> margin; ///< >= 0 before, < 0 after
+      std::function<double(const StepSummary &)> radius; ///< where (reference R)
+      OnsetRecord                               *record;
+      std::function<void(const OnsetRecord &)>  *callback;
+    };
 
-    bool run_stage(Stage stage, double t_end);
-    bool run_arc_length(double t_end);
-    void report(const StepSummary &summary_without_driver_fields, Stage stage, double t,
-                unsigned int iterations);
-    /// The model's summary with the driver's checks added (stability, field).
-    StepSummary current_summary() const;
+    const Scene                                 scene;
+    EquilibriumModel                           &model;
+    SteppingSettings                            settings;
+    std::vector<std::unique_ptr<Postprocessor>> postprocessors;
+    std::vector<Crossing>                       crossings;
 
-    /// After a converged step from (t0, state0, summary0) to t1 (the model's
-    /// current state, summary1): locate the onset, breakdown and validity limit if they lie in
+    RunResult                         result;
+    std::shared_ptr<const StepFields> reported_fields;
+
+    bool      run_stage(Stage stage, double t_end);
+    bool      run_arc_length(double t_end);
+    Evaluated evaluate(Stage stage, double t);
+    void      report(const Evaluated &state, unsigned int iterations);
+
+    /// After a converged step from (t0, state0, e0) to t1 (the model's current
+    /// state, e1): locate the crossings and the validity limit if they lie in
     /// between, report them, and leave the model at t1 again. Returns false if
     /// the run must end (a validity limit was met).
-    bool check_crossings(Stage stage, double t0, const std::vector<double> &state0,
-                         const StepSummary &summary0, double t1, const StepSummary &summary1);
-    /// Root of f(summary) on [t0, t1] with f(t0) >= 0 > f(t1), by Illinois
-    /// steps each solved from the converged side; leaves the model at the
-    /// root and returns its t.
-    double locate_root(Stage stage, double t0, std::vector<double> state0, double f0,
-                       double t1, double f1, const std::function<double(const StepSummary &)> &f,
-                       StepSummary &at_root, unsigned int &iterations);
+    bool check_crossings(Stage stage, double t0, const ModelState &state0, const Evaluated &e0,
+                         double t1, const Evaluated &e1);
+    /// Root of f(summary) on [t0, t1] with f(t0) >= 0 > f(t1); every evaluation
+    /// is a solve from the nearest converged state on the f >= 0 side. Leaves
+    /// the model at the root and returns its t.
+    double locate_root(Stage stage, double t0, const ModelState &state0, double f0, double t1,
+                       double f1, const std::function<double(const StepSummary &)> &f,
+                       Evaluated &at_root, unsigned int &iterations);
     double step_limit(Stage stage, double t) const;
     double voltage_tolerance_in_t(Stage stage, double t) const;
+    /// Count a solve in the result.
+    SolveReport solve(const LoadState &load);
   };
 
   /// Human-readable name of a stage ("pre-stretch", "dead load", "voltage").

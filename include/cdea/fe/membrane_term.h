@@ -1,0 +1,74 @@
+#pragma once
+// The membrane's share of the total potential, cell by cell:
+//
+//   Pi_m = 2 pi H int_A^B W(l1, l2; Phi_ring) R dR,   l1 = sqrt(r'^2 + z'^2), l2 = r / R,
+//
+// with W the material law (plain or relaxed, any MembraneLaw) at the voltage
+// of the cell's ring, at the p + 1 Gauss points of each cell. First variations
+// dl1 = (r' dr' + z' dz') / l1 and dl2 = dr / R give the residual
+// w (s1 dl1 + s2 dl2); the tangent adds the second variation of l1,
+// (dr' Dr' + dz' Dz' - dl1 Dl1) / l1, times s1 (doc/theory.md).
+//
+// Internal variables of the law live here, per quadrature point, for the last
+// accepted time ("old") and the current iterate ("current").
+
+#include <cdea/fe/cell_kernel.h>
+#include <cdea/material/membrane_law.h>
+
+#include <memory>
+#include <vector>
+
+namespace cdea
+{
+  class MembraneTerm final : public CellTerm
+  {
+  public:
+    MembraneTerm(const Scene &scene, const Discretization &mesh,
+                 std::shared_ptr<const MembraneLaw> law);
+
+    void               set_law(std::shared_ptr<const MembraneLaw> law);
+    const MembraneLaw &law() const { return *law_; }
+
+    /// The voltage of each ring (V).
+    void set_voltages(const std::vector<double> &voltages);
+    /// The time step of the internal variables (0: they stay as they are).
+    void set_time_step(double dt, TimeScheme scheme);
+
+    bool add_cell(const CellInput &cell, unsigned int flags, CellScratch &scratch,
+                  CellContribution &contribution) override;
+
+    /// Internal variables: n_internal() per quadrature point, cell by cell.
+    unsigned int        n_internal() const { return law_->n_internal_variables(); }
+    std::vector<double> internal_old, internal_current;
+    /// Make the current internal variables the accepted ones.
+    void accept_internal() { internal_old = internal_current; }
+
+    /// The law's input at a point of @p ring.
+    LawInput law_input(const PointKinematics &p, unsigned int ring) const
+    {
+      return {p.l1, p.l2, voltages[ring]};
+    }
+    /// The internal-variable step of quadrature point @p q of cell @p c.
+    InternalStep internal_step(unsigned int c, unsigned int q);
+
+  private:
+    const Discretization              &mesh;
+    const double                       two_pi_H;
+    std::shared_ptr<const MembraneLaw> law_;
+    std::vector<double>                voltages;
+    double                             dt     = 0.;
+    TimeScheme                         scheme = TimeScheme::backward_euler;
+  };
+
+  /// The dead load F on the disk: Pi_F = -F z(A), on the first cell.
+  class DeadLoadTerm final : public CellTerm
+  {
+  public:
+    void set_force(const double f) { force = f; }
+    bool add_cell(const CellInput &cell, unsigned int flags, CellScratch &scratch,
+                  CellContribution &contribution) override;
+
+  private:
+    double force = 0.;
+  };
+} // namespace cdea

@@ -1,0 +1,60 @@
+#pragma once
+// The enclosed volume and the pump's water load as cell terms.
+//
+// Enclosed volume V = pi int_A^B r^2 (-z') dR (between the frame plane and the
+// deformed membrane with the disk), with its gradient and Hessian, at the 2p
+// Gauss points of each cell (exact for the FE solution).
+//
+// Water load (doc/pump.md): the water fills the cone above the membrane and
+// the disk (z > 0 is down) and rises in a level tube of cross-section
+// tube_area above the frame plane, to the free-surface height
+// h = (water_volume - V) / tube_area. The pressure rho g (h + z) acts normal
+// to the deformed membrane and on the disk. It is conservative:
+//
+//   E_w = c [(water_volume - V)^2 / (2 tube_area) + pi int r^2 z z' dR],  c = rho g,
+//
+// with gravity ramped by the load stage (off in stage 0, times the load factor
+// in stage 1, full in stage 2). On each cell the term adds its part at h = 0;
+// finish() adds the head's part once V is known: residual -c h dV/dx, tangent
+// -c h d2V/dx2 and the dense rank-one (c / tube_area) dV/dx dV/dx^T, which the
+// linear solver handles by Sherman-Morrison.
+
+#include <cdea/fe/cell_kernel.h>
+
+namespace cdea
+{
+  struct WaterLoad
+  {
+    bool   enabled      = false;
+    double density      = 1000.;  ///< kg/m^3
+    double gravity      = 9.81;   ///< m/s^2
+    double water_volume = 150e-6; ///< m^3, in the cone and the tube together
+    double tube_area    = 400e-6; ///< m^2, cross-section of the level tube
+  };
+
+  class EnclosedVolumeTerm final : public CellTerm
+  {
+  public:
+    bool add_cell(const CellInput &cell, unsigned int flags, CellScratch &scratch,
+                  CellContribution &contribution) override;
+  };
+
+  class WaterTerm final : public CellTerm
+  {
+  public:
+    void             set_water(const WaterLoad &water) { settings = water; }
+    const WaterLoad &water() const { return settings; }
+    /// rho g times the stage's share of gravity.
+    void   set_gravity_share(double share) { weight = settings.enabled ? share * settings.density * settings.gravity : 0.; }
+    double water_weight() const { return weight; }
+
+    unsigned int extra_flags(unsigned int flags) const override;
+    bool         add_cell(const CellInput &cell, unsigned int flags, CellScratch &scratch,
+                          CellContribution &contribution) override;
+    void         finish(unsigned int flags, AssembledSystem &system) const override;
+
+  private:
+    WaterLoad settings;
+    double    weight = 0.;
+  };
+} // namespace cdea

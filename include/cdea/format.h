@@ -1,0 +1,17 @@
+#pragma once
+// The project's one formatting of voltages and numbers for messages and tables.
+
+#include <string>
+#include <vector>
+
+namespace cdea
+{
+  /// "5, 6.5 kV" from volts, @p digits significant digits.
+  std::string format_kV(const std::vector<double> &volts, int digits = 6);
+  /// "6.5 kV" from volts.
+  std::string format_kV(double volts, int digits = 6);
+  /// A number with @p digits significant digits ("%g" style).
+  std::string format_number(double value, int digits = 6);
+  /// A number with @p decimals digits after the point, right-aligned in @p width.
+  std::string format_fixed(double value, int decimals, int width = 0);
+} // namespace cdea

@@ -1,0 +1,16 @@
+#pragma once
+// The smallest eigenvalue of a band tangent: the stability check of a state
+// (negative: unstable with the loads held).
+
+#include <cdea/solver/band_matrix.h>
+
+#include <vector>
+
+namespace cdea
+{
+  /// Smallest eigenvalue of the symmetric part (A + A^T) / 2 of @p A without
+  /// the rows and columns listed in @p excluded (LAPACK dsbevx on the band);
+  /// NaN if LAPACK fails.
+  double smallest_symmetric_eigenvalue(const BandMatrix                &A,
+                                       const std::vector<unsigned int> &excluded);
+} // namespace cdea

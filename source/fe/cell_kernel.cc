@@ -1,0 +1,109 @@
+#include <cdea/fe/cell_kernel.h>
+
+#include <limits>
+
+namespace cdea
+{
+  CellKernel::CellKernel(const Discretization &mesh_in, const unsigned int n_rings)
+    : mesh(mesh_in)
+  {
+    layout.n_rings     = n_rings;
+    const unsigned int n = mesh.dofs_per_cell();
+    for (auto *v : {&scratch.value, &scratch.gradient, &scratch.dl1, &scratch.dl2, &local_x,
+                    &local.residual, &local.volume_gradient})
+      v->resize(n);
+    local.tangent.resize(n * n);
+    local.volume_hessian.resize(n * n);
+    local.parameter_residual.resize(layout.size() * n);
+  }
+
+  bool CellKernel::assemble(const Eigen::VectorXd &x, unsigned int flags,
+                            AssembledSystem &system)
+  {
+    for (const auto &term : terms)
+      flags |= term->extra_flags(flags);
+    const unsigned int n = mesh.dofs_per_cell(), N = mesh.n_dofs(), bw = mesh.bandwidth();
+    system.flags             = flags;
+    system.energy            = 0.;
+    system.volume            = 0.;
+    system.rank_one_coupling = 0.;
+    if (flags & assemble_residual)
+      system.residual.setZero(N);
+    if (flags & assemble_tangent)
+      {
+        if (system.tangent.size() != N || system.tangent.bandwidth() != bw)
+          system.tangent.reinit(N, bw);
+        else
+          system.tangent.set_zero();
+      }
+    if (flags & assemble_parameter_derivatives)
+      system.parameter_residual.assign(layout.size(), Eigen::VectorXd::Zero(N));
+    if (flags & assemble_volume)
+      {
+        system.volume_gradient.setZero(N);
+        if (flags & assemble_tangent)
+          {
+            if (system.volume_hessian.size() != N)
+              system.volume_hessian.reinit(N, bw);
+            else
+              system.volume_hessian.set_zero();
+          }
+      }
+
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        const unsigned int *dofs = mesh.dofs_of(c);
+        for (unsigned int i = 0; i < n; ++i)
+          local_x[i] = x[dofs[i]];
+        local.energy = 0.;
+        local.volume = 0.;
+        std::fill(local.residual.begin(), local.residual.end(), 0.);
+        if (flags & assemble_tangent)
+          std::fill(local.tangent.begin(), local.tangent.end(), 0.);
+        if (flags & assemble_parameter_derivatives)
+          std::fill(local.parameter_residual.begin(), local.parameter_residual.end(), 0.);
+        if (flags & assemble_volume)
+          {
+            std::fill(local.volume_gradient.begin(), local.volume_gradient.end(), 0.);
+            if (flags & assemble_tangent)
+              std::fill(local.volume_hessian.begin(), local.volume_hessian.end(), 0.);
+          }
+
+        const CellInput input{c, &mesh.cells[c], local_x.data(), &mesh};
+        for (const auto &term : terms)
+          if (!term->add_cell(input, flags, scratch, local))
+            {
+              // Outside a term's range: a non-finite residual tells the line
+              // search or the corrector to step back.
+              system.energy = std::numeric_limits<double>::quiet_NaN();
+              if (flags & assemble_residual)
+                system.residual.setConstant(std::numeric_limits<double>::quiet_NaN());
+              return false;
+            }
+
+        system.energy += local.energy;
+        system.volume += local.volume;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            if (flags & assemble_residual)
+              system.residual[dofs[i]] += local.residual[i];
+            if (flags & assemble_tangent)
+              for (unsigned int j = 0; j < n; ++j)
+                system.tangent(dofs[i], dofs[j]) += local.tangent[i * n + j];
+            if (flags & assemble_parameter_derivatives)
+              for (unsigned int p = 0; p < layout.size(); ++p)
+                system.parameter_residual[p][dofs[i]] += local.parameter_residual[p * n + i];
+            if (flags & assemble_volume)
+              {
+                system.volume_gradient[dofs[i]] += local.volume_gradient[i];
+                if (flags & assemble_tangent)
+                  for (unsigned int j = 0; j < n; ++j)
+                    system.volume_hessian(dofs[i], dofs[j]) += local.volume_hessian[i * n + j];
+              }
+          }
+      }
+    for (const auto &term : terms)
+      term->finish(flags, system);
+    return true;
+  }
+} // namespace cdea

@@ -1,0 +1,216 @@
+// What MembraneModel reports of its current state: displacement, hoop
+// stresses (with the relaxed law's wrinkled zone and validity), the fields
+// along the meridian and profiles at given radii.
+
+#include "membrane_model_impl.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace cdea
+{
+  namespace
+  {
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+    /// The law's plain response at a point of the current state. Internal
+    /// variables are those of the state (at point @p q of the cell's energy
+    /// rule, the nearest one for other points), held fixed.
+    struct PointEvaluator
+    {
+      const Discretization &mesh;
+      const MembraneTerm   &membrane;
+      const MembraneLaw    &plain_law, &relaxed_law;
+      std::vector<double>   scratch;
+
+      PointEvaluator(const Discretization &mesh, const MembraneTerm &membrane,
+                     const MembraneLaw &plain_law, const MembraneLaw &relaxed_law)
+        : mesh(mesh)
+        , membrane(membrane)
+        , plain_law(plain_law)
+        , relaxed_law(relaxed_law)
+        , scratch(membrane.n_internal())
+      {}
+
+      InternalStep step(const unsigned int cell, const unsigned int q)
+      {
+        const unsigned int m = membrane.n_internal();
+        if (m == 0)
+          return {};
+        const std::size_t k = (std::size_t(cell) * mesh.energy_rule.size() + q) * m;
+        return {membrane.internal_current.data() + k, scratch.data(), 0.,
+                TimeScheme::backward_euler};
+      }
+
+      LawResponse plain(const PointKinematics &p, const unsigned int cell, const unsigned int q)
+      {
+        LawResponse r;
+        plain_law.evaluate(membrane.law_input(p, mesh.cells[cell].ring), step(cell, q),
+                           law_stress, r);
+        return r;
+      }
+
+      LawResponse relaxed(const PointKinematics &p, const unsigned int cell, const unsigned int q)
+      {
+        LawResponse r;
+        relaxed_law.evaluate(membrane.law_input(p, mesh.cells[cell].ring), step(cell, q),
+                             law_stress | law_tangent, r);
+        return r;
+      }
+    };
+
+    /// Local dof values of cell @p c.
+    void gather(const Discretization &mesh, const Eigen::VectorXd &x, const unsigned int c,
+                std::vector<double> &local)
+    {
+      local.resize(mesh.dofs_per_cell());
+      const unsigned int *dofs = mesh.dofs_of(c);
+      for (unsigned int i = 0; i < local.size(); ++i)
+        local[i] = x[dofs[i]];
+    }
+  } // namespace
+
+  double MembraneModel::displacement() const
+  {
+    return std::abs(impl->solution[impl->mesh.z_inner] - impl->solution[impl->mesh.z_outer]);
+  }
+
+  HoopStresses MembraneModel::hoop_stresses() const
+  {
+    const Impl           &m    = *impl;
+    const Discretization &mesh = m.mesh;
+    HoopStresses          h;
+    h.s2_ring_inner.assign(m.scene.n_rings(), nan);
+    h.s2_min = std::numeric_limits<double>::infinity();
+    PointEvaluator      at(mesh, m.membrane, *m.plain_law, *m.relaxed_law);
+    std::vector<double> local;
+
+    // Where the plain hoop stress is negative the relaxed law is wrinkled:
+    // record the zone, and whether the relaxed law is still admissible there
+    // (elliptic, natural width found).
+    const auto note = [&](const PointKinematics &p, const double s2, const unsigned int c,
+                          const unsigned int q) {
+      if (s2 < h.s2_min)
+        {
+          h.s2_min        = s2;
+          h.s2_min_radius = p.R;
+        }
+      if (!m.relaxed || !(s2 < 0.))
+        return;
+      const LawResponse e = at.relaxed(p, c, q);
+      h.wrinkled_zone_inner = std::isnan(h.wrinkled_zone_inner) ? p.R :
+                                                                  std::min(h.wrinkled_zone_inner, p.R);
+      h.wrinkled_zone_outer = std::isnan(h.wrinkled_zone_outer) ? p.R :
+                                                                  std::max(h.wrinkled_zone_outer, p.R);
+      if (h.validity_limit.empty() && (e.tension == TensionState::failed || e.loses_ellipticity))
+        {
+          std::ostringstream o;
+          o << "the relaxed (tension-field) law "
+            << (e.tension == TensionState::failed ?
+                  "has no natural width below the Gent limit" :
+                  "loses ellipticity, ds1/dlambda1 <= 0 (pull-in)")
+            << " at r = " << m.scene.prestretch * p.R * 1e3
+            << " mm (r/a = " << m.scene.prestretch * p.R / m.scene.disk_radius
+            << ", lambda1 = " << p.l1 << ", lambda2 = " << p.l2 << ", natural width "
+            << e.natural_width << ")";
+          h.validity_limit = o.str();
+        }
+    };
+
+    int previous_ring = -1;
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        gather(mesh, m.solution, c, local);
+        const MeshCell &cell = mesh.cells[c];
+        for (unsigned int q = 0; q < mesh.energy_rule.size(); ++q)
+          {
+            const PointKinematics p = kinematics(mesh, mesh.energy_rule, q, cell, local.data());
+            note(p, at.plain(p, c, q).stress.s2, c, q);
+          }
+        // Each ring's inner edge, on that ring's side (its first element).
+        if (int(cell.ring) != previous_ring)
+          {
+            const PointKinematics p  = kinematics(mesh, mesh.left_end, 0, cell, local.data());
+            const double          s2 = at.plain(p, c, 0).stress.s2;
+            h.s2_ring_inner[cell.ring] = s2;
+            note(p, s2, c, 0);
+            previous_ring = cell.ring;
+          }
+      }
+    return h;
+  }
+
+  StepFields MembraneModel::fields() const
+  {
+    const Impl           &m    = *impl;
+    const Discretization &mesh = m.mesh;
+    const ShapeTable     &t    = mesh.samples;
+    const double          H    = m.scene.material.thickness;
+    StepFields            f;
+    PointEvaluator        at(mesh, m.membrane, *m.plain_law, *m.relaxed_law);
+    std::vector<double>   local;
+    int                   previous_ring = -1;
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        gather(mesh, m.solution, c, local);
+        const MeshCell &cell = mesh.cells[c];
+        const double    Phi  = m.load.voltages[cell.ring];
+        // The left end is written only where a ring starts, so that the jump
+        // of lambda1 at a ring edge shows as two samples at one radius.
+        for (unsigned int k = (int(cell.ring) != previous_ring ? 0 : 1); k < t.size(); ++k)
+          {
+            const PointKinematics p = kinematics(mesh, t, k, cell, local.data());
+            // The nearest quadrature point holds the internal variables.
+            const unsigned int q =
+              std::min<unsigned int>(mesh.energy_rule.size() - 1,
+                                     std::lround(t.points[k] * (mesh.energy_rule.size() - 1)));
+            NominalStress s = at.plain(p, c, q).stress;
+            if (m.relaxed && s.s2 < 0.)
+              {
+                const LawResponse e = at.relaxed(p, c, q);
+                if (e.tension == TensionState::wrinkled)
+                  s = e.stress;
+              }
+            f.R.push_back(p.R);
+            f.r.push_back(p.r);
+            f.z.push_back(p.z);
+            f.theta.push_back(std::atan2(-p.dz, p.dr));
+            f.lambda1.push_back(p.l1);
+            f.lambda2.push_back(p.l2);
+            f.s1.push_back(s.s1);
+            f.s2.push_back(s.s2);
+            f.Phi.push_back(Phi);
+            f.E.push_back(Phi * p.l1 * p.l2 / H);
+            f.ring.push_back(cell.ring);
+          }
+        previous_ring = cell.ring;
+      }
+    return f;
+  }
+
+  void MembraneModel::profile_at(const std::vector<double> &R, std::vector<double> &r,
+                                 std::vector<double> &z) const
+  {
+    const Discretization &mesh = impl->mesh;
+    r.assign(R.size(), 0.);
+    z.assign(R.size(), 0.);
+    std::vector<double> value, derivative;
+    // Cells are sorted by radius: walk them once for sorted input, restart
+    // the walk for a radius behind the current cell.
+    unsigned int c = 0;
+    for (unsigned int k = 0; k < R.size(); ++k)
+      {
+        if (R[k] < mesh.cells[c].x0)
+          c = 0;
+        while (R[k] > mesh.cells[c].x0 + mesh.cells[c].h && c + 1 < mesh.n_cells())
+          ++c;
+        const MeshCell &cell = mesh.cells[c];
+        mesh.shape_at(std::clamp((R[k] - cell.x0) / cell.h, 0., 1.), value, derivative);
+        const unsigned int *dofs = mesh.dofs_of(c);
+        for (unsigned int i = 0; i < value.size(); ++i)
+          (mesh.component[i] == 0 ? r[k] : z[k]) += value[i] * impl->solution[dofs[i]];
+      }
+  }
+} // namespace cdea

@@ -1,0 +1,61 @@
+#pragma once
+// The inside of MembraneModel, shared by its source files (model, fields,
+// continuation); not installed with the public headers.
+
+#include <cdea/fe/cell_kernel.h>
+#include <cdea/fe/membrane_model.h>
+#include <cdea/fe/membrane_term.h>
+#include <cdea/fe/trilinos_solver.h>
+#include <cdea/fe/water_term.h>
+#include <cdea/material/tension_field.h>
+#include <cdea/solver/sherman_morrison.h>
+
+namespace cdea
+{
+  class MembraneModel::Impl : public NonlinearProblem
+  {
+  public:
+    Impl(const Scene &scene, const FeDiscretization &disc, const NewtonSettings &newton);
+
+    const Scene          scene;
+    const NewtonSettings newton_settings;
+    const Discretization mesh;
+    CellKernel           kernel;
+    MembraneTerm        &membrane;
+    DeadLoadTerm        &dead_load;
+    EnclosedVolumeTerm  &volume_term;
+    WaterTerm           &water;
+
+    std::shared_ptr<const MembraneLaw> plain_law, relaxed_law;
+    bool                               relaxed = false;
+
+    LoadState       load;
+    Eigen::VectorXd solution;
+
+    /// The last assembly with its tangent, and whether that is the tangent of
+    /// the current state (solution and load).
+    AssembledSystem system;
+    bool            tangent_is_current = false;
+    LinearSolver                   linear_solver = LinearSolver::banded_lu;
+    std::unique_ptr<TangentSolver> solver;
+    ShermanMorrison                free_surface;
+    bool                           factorized = false;
+
+    void set_load(const LoadState &new_load);
+    void apply_boundary_values(Eigen::VectorXd &x) const;
+
+    /// The kernel at @p x with the boundary conditions applied (constrained
+    /// residual entries zero, rows and columns of the tangent decoupled).
+    bool assemble_constrained(const Eigen::VectorXd &x, unsigned int flags);
+    /// Factor the tangent of the last assembly (once); false if singular.
+    bool factorize();
+    /// u = K^-1 b with the last tangent (NaN if singular), constrained entries zero.
+    void solve_tangent(const Eigen::VectorXd &b, Eigen::VectorXd &u);
+
+    void evaluate(const Eigen::VectorXd &x, Eigen::VectorXd &r) override;
+    void solve_linearized(const Eigen::VectorXd &r, Eigen::VectorXd &dx) override;
+
+    /// Residual scale of Newton and the corrector (N).
+    double residual_scale() const;
+  };
+} // namespace cdea

@@ -1,0 +1,36 @@
+#include <cdea/format.h>
+
+#include <iomanip>
+#include <sstream>
+
+namespace cdea
+{
+  std::string format_kV(const std::vector<double> &volts, const int digits)
+  {
+    std::ostringstream o;
+    o.precision(digits);
+    for (std::size_t i = 0; i < volts.size(); ++i)
+      o << (i ? ", " : "") << volts[i] * 1e-3;
+    return o.str() + " kV";
+  }
+
+  std::string format_kV(const double volts, const int digits)
+  {
+    return format_kV(std::vector<double>{volts}, digits);
+  }
+
+  std::string format_number(const double value, const int digits)
+  {
+    std::ostringstream o;
+    o.precision(digits);
+    o << value;
+    return o.str();
+  }
+
+  std::string format_fixed(const double value, const int decimals, const int width)
+  {
+    std::ostringstream o;
+    o << std::fixed << std::setprecision(decimals) << std::setw(width) << value;
+    return o.str();
+  }
+} // namespace cdea
