@@ -4,6 +4,7 @@
 
 #include <cdea/app/commands.h>
 #include <cdea/app/parameters.h>
+#include <cdea/app/run_control.h>
 #include <cdea/app/sweep.h>
 #include <cdea/output/safe_files.h>
 
@@ -455,7 +456,7 @@ namespace cdea
             for (auto *v : {&row.displacement, &row.stroke, &row.stroke_increase,
                             &row.s2_inner_ring1, &row.s2_inner_ring2})
               v->assign(m, nan);
-            row.message = std::string("error: ") + e.what();
+            row.message = "error: " + one_line_message(e);
             if (reported < m)
               points_done(m - reported);
           }
@@ -718,7 +719,7 @@ namespace cdea
       }
     catch (const std::exception &e)
       {
-        std::cerr << "cdea: sweep failed: " << e.what() << '\n';
+        std::cerr << "cdea: sweep failed: " << one_line_message(e) << '\n';
         return exit_input_error;
       }
     progress.finish();
