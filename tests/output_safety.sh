@@ -24,6 +24,7 @@ prm() {
 prm short.prm 0.25
 prm long.prm 0.003
 prm other.prm 0.003 281
+prm verylong.prm 0.0002 # 25,000 steps: still running when the second run starts
 steps_printed() { grep -cE '^ +[0-9]+ +(pre-stretch|dead load|voltage) ' "$1"; }
 wait_for_steps() { # FILE N: until N step lines are printed (at most 20 s)
   for _ in $(seq 200); do [ "$(steps_printed "$1")" -ge "$2" ] && return 0; sleep 0.1; done
@@ -47,7 +48,7 @@ PY
 }
 
 # 1. A second run onto the same file fails at once; the first goes on.
-"$exe" run long.prm > a.out 2> a.err &
+"$exe" run verylong.prm > a.out 2> a.err &
 first=$!
 wait_for_steps a.out 5
 start=$(date +%s.%N)
