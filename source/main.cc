@@ -5,6 +5,7 @@
 #include <cdea/app/mpi_session.h>
 #include <cdea/app/sweep.h>
 #include <cdea/app/parameters.h>
+#include <cdea/app/run_control.h>
 
 #include <iostream>
 #include <string>
@@ -15,7 +16,8 @@ namespace
   /// rank would run all of it into the same file.
   bool is_serial_job(const std::string &command)
   {
-    return command == "run" || command == "shoot" || command == "compare";
+    return command == "run" || command == "shoot" || command == "compare" ||
+           command == "recover";
   }
 } // namespace
 
@@ -25,6 +27,7 @@ int main(int argc, char **argv)
   const std::vector<std::string> args(argv + 1, argv + argc);
   // Under an MPI launcher only rank 0 speaks (and, but for sweep, works).
   const bool root = cdea::mpi::rank() == 0;
+  cdea::ignore_output_signals();
   try
     {
       if (args.empty())
@@ -74,6 +77,8 @@ int main(int argc, char **argv)
         return cdea::run_shooting(args[1]);
       if (command == "compare" && args.size() == 2)
         return cdea::compare(args[1]);
+      if (command == "recover" && args.size() == 2)
+        return cdea::recover(args[1]);
       std::cerr << "cdea: unknown command or wrong number of arguments: '" << command
                 << "'\n\n"
                 << cdea::usage();
@@ -81,7 +86,7 @@ int main(int argc, char **argv)
     }
   catch (const std::exception &e)
     {
-      std::cerr << "cdea: error: " << e.what() << '\n';
+      std::cerr << "cdea: error: " << cdea::one_line_message(e) << '\n';
       return cdea::exit_input_error;
     }
 }

@@ -1,11 +1,16 @@
 // ResultsFile: writes a 3-step, 2-ring file, reads it back with the plain HDF5
 // C API and checks names, shapes, types, units, unit conversions, values and
-// attributes; checks that a process killed right after an append leaves a
-// complete file, and that bad paths and bad input are reported.
+// attributes; checks that the journal of a process killed right after an
+// append rebuilds a complete file (also with a torn or corrupted last
+// record), that an older file stays untouched until finish(), that a second
+// writer is refused, that a file size limit leaves the steps that fit, and
+// that bad paths and bad input are reported.
 
 #include <cdea/output/results_file.h>
+#include <cdea/output/safe_files.h>
 
 #include <hdf5.h>
+#include <sys/resource.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -104,6 +109,9 @@ namespace
     file.set_summary_attribute("limit_point_kV", {6.5, 7.25}); // overwrite, new length
     if (with_onset)
       file.write_onset(demo_onset());
+    const auto done = file.finish("complete");
+    check(done.written && done.file == path && done.steps_written == n_steps,
+          "finish() writes every step to the path");
   }
 
   // ---------------------------------------------------------------- reading
@@ -459,24 +467,143 @@ int main()
   check_demo_file(path, 3, true);
 
   // 2. A process killed (SIGKILL, no destructor, no atexit) right after its
-  //    second append leaves a complete, readable file with both steps.
+  //    second append leaves a journal that rebuilds a complete file with
+  //    both steps; the path itself is not written before finish().
   const std::string killed_path = (base / "killed.h5").string();
-  std::cout.flush();
-  const pid_t child = fork();
-  if (child == 0)
+  const auto        killed_child = [&](const std::string &target, const unsigned int steps) {
+    std::cout.flush();
+    const pid_t child = fork();
+    if (child == 0)
+      {
+        cdea::ResultsFile file(target, parameters_text, 2, demo_root_attributes);
+        file.describe_column("volume_mm3", "mm3", "enclosed volume");
+        for (unsigned int i = 0; i < steps; ++i)
+          file.append(demo_summary(i), demo_fields(i), demo_extra(i));
+        file.set_summary_attribute("limit_point_kV", {6.5, 7.25});
+        std::raise(SIGKILL);
+        _exit(0); // not reached
+      }
+    int status = 0;
+    waitpid(child, &status, 0);
+    return WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL;
+  };
+  check(killed_child(killed_path, 2), "child was killed by SIGKILL");
+  check(!fs::exists(killed_path) && fs::exists(killed_path + ".journal"),
+        "a killed run leaves its journal and no file at the path");
+  {
+    const cdea::Recovery r = cdea::recover_results(killed_path, true);
+    check(r.found && r.file == killed_path && r.steps == 2, "recovery: 2 steps into the path");
+    check(!fs::exists(killed_path + ".journal"), "recovery removes the journal");
+    check_demo_file(killed_path, 2, false);
+  }
+
+  // 2b. A torn last record (the kill cut the write) and a corrupted one are
+  //     dropped: the steps before them are rebuilt.
+  for (const bool tear : {true, false})
     {
-      cdea::ResultsFile file(killed_path, parameters_text, 2, demo_root_attributes);
-      file.describe_column("volume_mm3", "mm3", "enclosed volume");
-      for (unsigned int i = 0; i < 2; ++i)
-        file.append(demo_summary(i), demo_fields(i), demo_extra(i));
-      file.set_summary_attribute("limit_point_kV", {6.5, 7.25});
-      std::raise(SIGKILL);
-      _exit(0); // not reached
+      const std::string torn = (base / (tear ? "torn.h5" : "corrupt.h5")).string();
+      check(killed_child(torn, 3), "child with 3 steps killed");
+      const std::string journal = torn + ".journal";
+      // The last record is the limit_point_kV attribute; the one before it
+      // is step 2. Cut or flip a byte inside step 2's record.
+      const auto size = fs::file_size(journal);
+      if (tear)
+        fs::resize_file(journal, size - 200);
+      else
+        {
+          std::fstream f(journal, std::ios::in | std::ios::out | std::ios::binary);
+          f.seekp(std::streamoff(size - 200));
+          f.put('\x5a');
+        }
+      const cdea::Recovery r = cdea::recover_results(torn, true);
+      check(r.steps == 2, std::string(tear ? "torn" : "corrupted") +
+                            " step record dropped: 2 steps recovered (" + r.message + ")");
+      const hid_t file = H5Fopen(torn.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+      check(file >= 0 && read_dataset(file, "/summary/stage").dims == std::vector<hsize_t>{2} &&
+              H5Lexists(file, "/steps/000001", H5P_DEFAULT) > 0 &&
+              H5Lexists(file, "/steps/000002", H5P_DEFAULT) == 0,
+            "the rebuilt file has steps 0 and 1 only");
+      if (file >= 0)
+        H5Fclose(file);
     }
-  int status = 0;
-  waitpid(child, &status, 0);
-  check(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL, "child was killed by SIGKILL");
-  check_demo_file(killed_path, 2, false);
+
+  // 2c. An older file stays byte for byte until the new run's finish(); a
+  //     second writer of the same path is refused; the next run saves a
+  //     killed run's journal beside the path.
+  {
+    const std::string older = (base / "older.h5").string();
+    write_demo(older, 3, true);
+    const auto read_bytes = [](const std::string &p) {
+      std::ifstream in(p, std::ios::binary);
+      return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    };
+    const std::string before = read_bytes(older);
+    check(killed_child(older, 1), "a re-run killed after one step");
+    check(read_bytes(older) == before, "the killed re-run left the older file byte for byte");
+    {
+      cdea::ResultsFile rerun(older, parameters_text, 2, demo_root_attributes);
+      check(rerun.notes().size() == 1 && fs::exists((base / "older.recovered.h5").string()),
+            "the next run saved the killed run's step in older.recovered.h5");
+      rerun.append(demo_summary(0), demo_fields(0));
+      bool refused = false;
+      try
+        {
+          cdea::ResultsFile second(older, parameters_text, 2);
+        }
+      catch (const cdea::OutputError &e)
+        {
+          refused = std::string(e.what()).find("another cdea process") != std::string::npos;
+          std::cout << "  (message: " << e.what() << ")\n";
+        }
+      check(refused, "a second writer of the same file is refused, naming the other process");
+      check(read_bytes(older) == before, "the older file is unchanged while the re-run writes");
+      rerun.finish("complete");
+    }
+    check(read_bytes(older) != before && !fs::exists(older + ".lock") &&
+            !fs::exists(older + ".journal"),
+          "finish() replaced the older file and removed the lock and journal");
+  }
+
+  // 2d. A file size limit (a full disk): a step whose checkpoint does not
+  //     fit raises OutputError; finish() writes the leading steps that fit.
+  {
+    const std::string limited = (base / "limited.h5").string();
+    std::cout.flush();
+    const pid_t child = fork();
+    if (child == 0)
+      {
+        std::signal(SIGXFSZ, SIG_IGN);
+        setenv("CDEA_CHECKPOINT_SECONDS", "0", 1);
+        const rlimit limit = {60000, 60000};
+        setrlimit(RLIMIT_FSIZE, &limit);
+        cdea::ResultsFile file(limited, parameters_text, 2, demo_root_attributes);
+        unsigned int      appended = 0;
+        try
+          {
+            for (; appended < 40; ++appended)
+              file.append(demo_summary(appended % 3), demo_fields(appended % 3));
+          }
+        catch (const cdea::OutputError &)
+          {
+          }
+        const auto done = file.finish("stopped");
+        // Exit code: steps in the file, or 100 + steps appended if none.
+        // (Whether a checkpoint hits the limit during the appends depends on
+        // timing; the final file does, as 40 steps need about 100 kB.)
+        _exit(done.written && done.steps_written > 0 && done.steps_written < appended ?
+                int(done.steps_written) :
+                100 + int(appended));
+      }
+    int status = 0;
+    waitpid(child, &status, 0);
+    const int steps = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    check(steps > 0 && steps < 40, "60 kB file size limit: finish() wrote " +
+                                     std::to_string(steps) + " steps that fit, no crash");
+    const hid_t f = H5Fopen(limited.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    check(f >= 0 && fs::file_size(limited) <= 60000, "that file opens and is within the limit");
+    if (f >= 0)
+      H5Fclose(f);
+  }
 
   // 3. Unwritable paths: a directory under a regular file, and a path that is
   //    a directory.
@@ -542,19 +669,25 @@ int main()
     check(zero_rings_thrown, "n_rings = 0 throws std::invalid_argument");
   }
 
-  // 5. Move construction keeps the file usable; another process can read the
-  //    file while the writer holds it open (the writer takes no HDF5 file
-  //    lock; the reader is told not to take one either).
+  // 5. Move construction keeps the file usable; with checkpoints due at
+  //    every step another process can read the checkpoint while the writer
+  //    is open.
   {
+    setenv("CDEA_CHECKPOINT_SECONDS", "0", 1);
     const std::string moved_path = (base / "moved.h5").string();
     cdea::ResultsFile a(moved_path, parameters_text, 2);
     cdea::ResultsFile b(std::move(a));
     b.append(demo_summary(0), demo_fields(0));
     check(b.n_steps() == 1 && b.n_rings() == 2, "moved-to ResultsFile appends");
+    check(b.checkpoint_path() == (base / "moved.partial.h5").string() &&
+            fs::exists(b.checkpoint_path()),
+          "checkpoint moved.partial.h5 written");
     if (fs::exists("/usr/bin/h5dump"))
-      check(std::system(("HDF5_USE_FILE_LOCKING=FALSE /usr/bin/h5dump -H " + moved_path + " > " + (base / "h5dump.log").string() + " 2>&1").c_str()) ==
-              0,
-            "h5dump reads the file while the writer is open");
+      check(std::system(("/usr/bin/h5dump -H " + b.checkpoint_path() + " > " +
+                         (base / "h5dump.log").string() + " 2>&1")
+                          .c_str()) == 0,
+            "h5dump reads the checkpoint while the writer is open");
+    unsetenv("CDEA_CHECKPOINT_SECONDS");
   }
 
   return finish();

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The sample output in doc/usage.md is what the program prints: the indented
 # block after "<!-- sample output of: cdea run prm/default.prm -->" must equal
-# the output of that command line by line, but for the run time on its last
-# line ("..., 0.013 s").
+# the output of that command line by line, but for the times on its last two
+# lines ("..., 0.013 s", "(0 checkpoints, 0.000 s)").
 source "$(dirname "$0")/script_helpers.bash"
 "$exe" run "$src/prm/default.prm" > printed.txt || { echo "FAIL cdea run exited with $?"; exit 1; }
 "$PYTHON" - "$src/doc/usage.md" printed.txt <<'PY'
@@ -20,9 +20,9 @@ for line in doc[doc.index(marker) + 1:]:
 while sample and sample[-1] == "":
     sample.pop()
 printed = open(sys.argv[2]).read().rstrip("\n").split("\n")
-time = re.compile(r"(Newton iterations), [0-9.e+-]+ s$")
-sample = [time.sub(r"\1, <time> s", l) for l in sample]
-printed = [time.sub(r"\1, <time> s", l) for l in printed]
+time = re.compile(r"(Newton iterations|checkpoints), [0-9.e+-]+ s(\)?)$")
+sample = [time.sub(r"\1, <time> s\2", l) for l in sample]
+printed = [time.sub(r"\1, <time> s\2", l) for l in printed]
 bad = [(k + 1, a, b) for k, (a, b) in enumerate(zip(sample, printed)) if a != b]
 if len(sample) != len(printed) or bad:
     print(f"FAIL doc/usage.md shows {len(sample)} lines, the program prints {len(printed)}")

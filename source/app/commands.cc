@@ -1,10 +1,12 @@
 #include <cdea/app/commands.h>
 #include <cdea/app/parameters.h>
 #include <cdea/app/pump.h>
+#include <cdea/app/run_control.h>
 #include <cdea/format.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/output/paraview_writer.h>
 #include <cdea/output/results_file.h>
+#include <cdea/output/safe_files.h>
 #include <cdea/output/state_check.h>
 #include <cdea/shooting/shooting_model.h>
 #include <cdea/solver/load_stepper.h>
@@ -34,11 +36,15 @@ namespace cdea
            "  cdea sweep FILE.prm        design map over two-ring layouts and outer voltages\n"
            "                             (subsection Sweep), <Base name>_map.h5; runs under\n"
            "                             mpirun -np N as well\n"
+           "  cdea recover FILE.h5       rebuild the results of a killed run from its\n"
+           "                             journal FILE.h5.journal\n"
            "  cdea print-parameters      print a complete, documented parameter file\n"
            "  cdea --help                this text\n"
            "\n"
-           "Exit codes: 0 success; 1 bad input or output not writable; 2 the run stopped\n"
-           "before the end of its voltage path (converged steps stay in the results file).\n"
+           "Exit codes: 0 success; 1 bad input or output not writable (nothing written);\n"
+           "2 the run stopped before the end of its voltage path, was interrupted\n"
+           "(SIGINT, SIGTERM) or could not write all its steps (the messages say where\n"
+           "the converged steps are).\n"
            "See doc/usage.md for every parameter and the output layout.\n";
   }
 
@@ -135,14 +141,15 @@ namespace cdea
         last = s;
         std::ostringstream v;
         for (const double x : s.voltages)
-          v << std::setw(7) << format_fixed(x * 1e-3, 3);
+          v << ' ' << std::setw(6) << format_fixed(x * 1e-3, 3);
         // Fixed-point from the first row on, for the rows and the lines after them.
+        // Every column keeps a blank before it, also for t >= 1000 or s2 < -1000 mu.
         std::cout << std::fixed;
         std::cout << std::setw(5) << file.n_steps() - 1 << std::setw(13) << stage_name(s.stage)
-                  << std::setw(10) << format_fixed(s.load_factor, 5) << "  " << v.str()
-                  << std::setw(12) << format_fixed(s.displacement * 1e3, 6) << std::setw(12)
-                  << fixed_or_dash(s.stroke * 1e3, 6) << std::setw(12)
-                  << fixed_or_dash(column(s, "volume_change_mm3"), 3) << std::setw(12)
+                  << ' ' << std::setw(9) << format_fixed(s.load_factor, 5) << "  " << v.str()
+                  << ' ' << std::setw(11) << format_fixed(s.displacement * 1e3, 6) << ' '
+                  << std::setw(11) << fixed_or_dash(s.stroke * 1e3, 6) << ' ' << std::setw(11)
+                  << fixed_or_dash(column(s, "volume_change_mm3"), 3) << ' ' << std::setw(11)
                   << format_fixed(s.s2_min / scene.material.shear_modulus, 6) << std::setw(6)
                   << (s.wrinkled ? "yes" : "no") << std::setw(7)
                   << (std::isnan(s.min_eigenvalue) ? "-" : s.min_eigenvalue > 0. ? "yes" : "NO")
@@ -163,6 +170,8 @@ namespace cdea
                    const std::string &prm_text, const std::string &path,
                    const std::string &method)
     {
+      // ---- results file: start (exit 1 if it cannot be ours) ----
+      const StopOnSignals          stop_on_signals;
       std::unique_ptr<ResultsFile> file;
       try
         {
@@ -172,9 +181,11 @@ namespace cdea
         }
       catch (const std::exception &e)
         {
-          std::cerr << "cdea: cannot write results: " << e.what() << '\n';
+          std::cerr << "cdea: " << one_line_message(e) << '\n';
           return exit_input_error;
         }
+      for (const std::string &note : file->notes())
+        std::cerr << "cdea: " << note << '\n';
       file->write_onset(OnsetRecord());
 
       LoadStepper stepper(scene, model, stepping_settings(p));
@@ -190,6 +201,8 @@ namespace cdea
         recorder.step(s);
         if (paraview)
           paraview->write_step(s, stepper.step_fields());
+        if (StopOnSignals::requested() != 0) // stop at this step boundary
+          throw RunInterrupted(StopOnSignals::requested());
       };
       stepper.on_onset = [&](const OnsetRecord &onset) {
         file->write_onset(onset);
@@ -231,9 +244,33 @@ namespace cdea
       std::cout << "cdea " << CDEA_VERSION << " (" << method << "): " << scene.n_rings()
                 << " ring(s), writing " << path << '\n';
       recorder.header();
-      const auto      start  = std::chrono::steady_clock::now();
-      const RunResult result = stepper.run();
-      const double    seconds =
+      const auto start = std::chrono::steady_clock::now();
+      // ---- the run: a signal, an output failure or an error stops it ----
+      RunResult   result;
+      std::string stopped; // why the run was cut short, "" if it was not
+      try
+        {
+          result = stepper.run();
+        }
+      catch (const RunInterrupted &e)
+        {
+          stopped = e.what();
+        }
+      catch (const OutputError &e)
+        {
+          stopped = std::string("the results cannot be written: ") + e.what();
+        }
+      catch (const std::exception &e)
+        {
+          stopped = "error: " + one_line_message(e);
+        }
+      if (!stopped.empty())
+        {
+          result.completed = false;
+          result.message   = stopped;
+          result.steps     = file->n_steps();
+        }
+      const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
       if (paraview)
@@ -282,14 +319,26 @@ namespace cdea
         std::cout << "Arc-length continuation ended: " << result.end << '\n';
       std::cout << result.steps << " steps, " << result.newton_iterations
                 << " Newton iterations, " << std::setprecision(3) << seconds << " s\n";
+      // ---- results file: finish (written whole, then renamed into place) ----
+      const std::string status = result.completed ?
+                                   std::string("complete") :
+                                   "stopped after step " +
+                                     std::to_string(int(file->n_steps()) - 1) + ": " +
+                                     result.message;
+      const ResultsFile::Finish done = file->finish(status);
+      std::cout << "results: " << done.steps_written << " steps in "
+                << (done.written ? done.file : std::string("no file")) << " ("
+                << file->checkpoints() << " checkpoints, " << std::setprecision(3)
+                << file->checkpoint_seconds() << " s)" << std::endl;
       if (!result.completed)
-        {
-          std::cerr << "cdea: the run stopped early: " << result.message << "\n"
-                    << "cdea: the " << file->n_steps() << " converged steps are in " << path
-                    << '\n';
-          return exit_not_complete;
-        }
-      return exit_success;
+        std::cerr << "cdea: the run stopped early: " << result.message << '\n';
+      for (const std::string &message : done.messages)
+        std::cerr << "cdea: " << message << '\n';
+      if (!result.completed && done.written)
+        std::cerr << "cdea: the " << done.steps_written << " converged steps are in "
+                  << done.file << '\n';
+      const bool all_written = done.written && done.steps_written == file->n_steps();
+      return result.completed && all_written ? exit_success : exit_not_complete;
     }
   } // namespace
 
@@ -317,6 +366,8 @@ namespace cdea
         {
           Input in;
           in.parameters = read_parameters(prm_file, &in.text);
+          for (const std::string &warning : in.parameters.input_warnings)
+            std::cerr << "cdea: warning: " << warning << '\n';
           in.scene      = in.parameters.scene();
           validate_reservoir(in.parameters);
           return in;

@@ -1,6 +1,8 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <cdea/app/parameters.h>
+#include <cdea/app/run_control.h>
+#include <cdea/app/validation.h>
 
 #include <cmath>
 #include <filesystem>
@@ -401,6 +403,9 @@ namespace cdea
       }
     if (values.empty())
       throw InputError(name + ": no value given (expected numbers separated by ',')");
+    if (text.find_last_not_of(" \t") != std::string::npos &&
+        text[text.find_last_not_of(" \t")] == ',')
+      throw InputError(name + ": empty entry at the end of '" + text + "'");
     return values;
   }
 
@@ -419,22 +424,6 @@ namespace cdea
         throw InputError(name + " must be positive, got " + format(value));
     }
 
-    /// deal.II's messages span several indented lines: fold them into one.
-    std::string one_line(const std::string &text)
-    {
-      std::string out;
-      for (const char c : text)
-        if (c == '\n' || c == ' ' || c == '\t')
-          {
-            if (!out.empty() && out.back() != ' ')
-              out += ' ';
-          }
-        else
-          out += c;
-      while (!out.empty() && out.back() == ' ')
-        out.pop_back();
-      return out;
-    }
   } // namespace
 
   Scene Parameters::scene() const
@@ -517,6 +506,10 @@ namespace cdea
       }
     if (waypoints.empty())
       throw InputError(path_name + ": no waypoint given");
+    const auto last = electrodes.voltage_path_text.find_last_not_of(" \t");
+    if (last != std::string::npos && electrodes.voltage_path_text[last] == ';')
+      throw InputError(path_name + ": empty waypoint at the end of '" +
+                       electrodes.voltage_path_text + "'");
     scene.path = VoltagePath(waypoints);
 
     if (output.base_name.empty() || output.base_name.find('/') != std::string::npos)
@@ -553,11 +546,26 @@ namespace cdea
       {
         std::ostringstream message;
         e.print_info(message);
-        throw InputError("in parameter file '" + filename + "': " + one_line(message.str()));
+        throw InputError("in parameter file '" + filename + "': " + fold_whitespace(message.str()));
       }
     Parameters parameters;
-    parameters.parse(prm);
-    parameters.scene(); // validate now, before anything is written
+    try
+      {
+        parameters.parse(prm);
+      }
+    catch (const dealii::ExceptionBase &e)
+      {
+        std::ostringstream message;
+        e.print_info(message);
+        throw InputError("in parameter file '" + filename + "': " + fold_whitespace(message.str()));
+      }
+    validate_ranges(parameters, parameters.scene()); // now, before anything is written
+    {
+      std::ifstream      in(filename);
+      std::ostringstream content;
+      content << in.rdbuf();
+      parameters.input_warnings = duplicate_entry_warnings(content.str(), filename);
+    }
     if (text)
       {
         std::ostringstream out;

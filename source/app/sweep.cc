@@ -5,7 +5,9 @@
 #include <cdea/app/commands.h>
 #include <cdea/app/mpi_session.h>
 #include <cdea/app/parameters.h>
+#include <cdea/app/run_control.h>
 #include <cdea/app/sweep.h>
+#include <cdea/output/safe_files.h>
 
 #include <mpi.h>
 #include <unistd.h>
@@ -18,11 +20,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <deque>
-#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
-#include <system_error>
 
 namespace cdea
 {
@@ -444,7 +444,7 @@ namespace cdea
             for (auto *v : {&row.displacement, &row.stroke, &row.stroke_increase,
                             &row.s2_inner_ring1, &row.s2_inner_ring2})
               v->assign(m, nan);
-            row.message = std::string("error: ") + e.what();
+            row.message = "error: " + one_line_message(e);
             if (reported < m)
               points_done(m - reported);
           }
@@ -659,6 +659,9 @@ namespace cdea
         p        = read_parameters(prm_file, &text);
         base     = p.scene();
         settings = sweep_settings(p, base);
+        for (const std::string &warning : p.input_warnings)
+          if (root)
+            std::cerr << "cdea: warning: " << warning << '\n';
       }
     catch (const InputError &e)
       {
@@ -668,21 +671,15 @@ namespace cdea
       }
     const std::string path = p.results_path("_map");
 
-    // The output folder must be writable before hours of work start.
-    int writable = 1;
-    if (root)
+    // The output folder must be writable, and the map file ours alone,
+    // before hours of work start.
+    int        writable = 1;
+    OutputLock lock;
+    std::string why;
+    if (root && !claim_output(path, lock, why))
       {
-        std::error_code error;
-        const auto      dir = std::filesystem::path(path).parent_path();
-        if (!dir.empty())
-          std::filesystem::create_directories(dir, error);
-        if (error || access(dir.empty() ? "." : dir.c_str(), W_OK) != 0)
-          {
-            std::cerr << "cdea: cannot write '" << path << "': the directory '"
-                      << dir.string() << "' cannot be created or is not writable"
-                      << (error ? ": " + error.message() : std::string()) << '\n';
-            writable = 0;
-          }
+        std::cerr << "cdea: cannot write '" << path << "': " << why << '\n';
+        writable = 0;
       }
     if (mpi.active && mpi.size > 1)
       MPI_Bcast(&writable, 1, MPI_INT, 0, MPI_COMM_WORLD);
@@ -712,7 +709,7 @@ namespace cdea
       }
     catch (const std::exception &e)
       {
-        std::cerr << "cdea: sweep failed: " << e.what() << '\n';
+        std::cerr << "cdea: sweep failed: " << one_line_message(e) << '\n';
         return exit_input_error;
       }
     progress.finish();
@@ -721,16 +718,20 @@ namespace cdea
     if (!root)
       return exit_success;
 
+    // A map none of whose layouts reached the inner voltage is no map.
+    const bool no_row_reached =
+      std::none_of(map.rows.begin(), map.rows.end(),
+                   [](const SweepRow &r) { return r.base_reached; });
+    const std::string status =
+      no_row_reached ? "stopped: no layout reached the inner voltage" : "complete";
     try
       {
-        write_sweep_file(path, map, text);
+        write_sweep_file(path, map, text, status);
       }
     catch (const std::exception &e)
       {
-        std::cerr << "cdea: " << e.what() << '\n';
-        std::error_code ignored;
-        std::filesystem::remove(path, ignored); // no half-written map
-        return exit_input_error;
+        std::cerr << "cdea: " << e.what() << " (the map is lost; an older map stays)\n";
+        return exit_not_complete;
       }
 
     // Table: one line per layout.
@@ -768,6 +769,14 @@ namespace cdea
     std::cout << n * m << " map points, " << solves << " equilibrium solves, " << iterations
               << " Newton iterations, " << std::setprecision(3) << seconds << " s on "
               << mpi.size << (mpi.size == 1 ? " rank" : " ranks") << "\nwrote " << path << '\n';
+    if (no_row_reached)
+      {
+        std::cerr << "cdea: no layout reached the inner voltage of "
+                  << settings.inner_voltage / 1e3 << " kV (first row: "
+                  << (map.rows.empty() ? std::string("none") : map.rows.front().message)
+                  << "): the map is empty\n";
+        return exit_not_complete;
+      }
     return exit_success;
   }
 } // namespace cdea

@@ -5,13 +5,12 @@
 
 #include <cdea/app/sweep.h>
 #include <cdea/output/hdf5_support.h>
+#include <cdea/output/safe_files.h>
 
 #include <hdf5.h>
 
-#include <filesystem>
 #include <sstream>
 #include <stdexcept>
-#include <system_error>
 
 #ifndef CDEA_VERSION
 #  define CDEA_VERSION "unknown"
@@ -24,68 +23,16 @@ namespace cdea
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
     using hdf5::ErrorPrintingOff;
-    using hdf5::error_text;
 
     using hdf5::Handle;
 
-    class Writer
+    /// The map's datasets, on the shared checked writer.
+    class Writer : public hdf5::Writer
     {
     public:
       explicit Writer(const std::string &path)
-        : path(path)
+        : hdf5::Writer("cannot write '" + path + "'")
       {}
-
-      [[noreturn]] void fail(const std::string &what) const
-      {
-        throw std::runtime_error("cannot write '" + path + "': " + what + " failed: " +
-                                 error_text());
-      }
-      hid_t check(const hid_t id, const std::string &what) const
-      {
-        if (id < 0)
-          fail(what);
-        return id;
-      }
-      void check_status(const herr_t status, const std::string &what) const
-      {
-        if (status < 0)
-          fail(what);
-      }
-
-      void string_attribute(const hid_t object, const std::string &name,
-                            const std::string &value) const
-      {
-        Handle type(check(H5Tcopy(H5T_C_S1), "H5Tcopy"), H5Tclose);
-        check_status(H5Tset_size(type, H5T_VARIABLE), "H5Tset_size");
-        check_status(H5Tset_cset(type, H5T_CSET_UTF8), "H5Tset_cset");
-        Handle      space(check(H5Screate(H5S_SCALAR), "H5Screate"), H5Sclose);
-        Handle      attribute(check(H5Acreate2(object, name.c_str(), type, space, H5P_DEFAULT,
-                                               H5P_DEFAULT),
-                                    "H5Acreate2(" + name + ")"),
-                              H5Aclose);
-        const char *pointer = value.c_str();
-        check_status(H5Awrite(attribute, type, &pointer), "H5Awrite(" + name + ")");
-      }
-
-      void double_attribute(const hid_t object, const std::string &name, const double value) const
-      {
-        Handle space(check(H5Screate(H5S_SCALAR), "H5Screate"), H5Sclose);
-        Handle attribute(check(H5Acreate2(object, name.c_str(), H5T_IEEE_F64LE, space,
-                                          H5P_DEFAULT, H5P_DEFAULT),
-                               "H5Acreate2(" + name + ")"),
-                         H5Aclose);
-        check_status(H5Awrite(attribute, H5T_NATIVE_DOUBLE, &value), "H5Awrite(" + name + ")");
-      }
-
-      void int_attribute(const hid_t object, const std::string &name, const int value) const
-      {
-        Handle space(check(H5Screate(H5S_SCALAR), "H5Screate"), H5Sclose);
-        Handle attribute(check(H5Acreate2(object, name.c_str(), H5T_STD_I32LE, space,
-                                          H5P_DEFAULT, H5P_DEFAULT),
-                               "H5Acreate2(" + name + ")"),
-                         H5Aclose);
-        check_status(H5Awrite(attribute, H5T_NATIVE_INT, &value), "H5Awrite(" + name + ")");
-      }
 
       /// A dataset of doubles (row-major @p dims) with unit and description.
       void dataset(const hid_t file, const std::string &name, const std::vector<hsize_t> &dims,
@@ -105,8 +52,7 @@ namespace cdea
           check_status(H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
                                 values.data()),
                        "H5Dwrite(" + name + ")");
-        string_attribute(set, "unit", unit);
-        string_attribute(set, "description", description);
+        describe(set, unit, description);
       }
 
       void int_dataset(const hid_t file, const std::string &name, const std::vector<int> &values,
@@ -124,8 +70,7 @@ namespace cdea
           check_status(H5Dwrite(set, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT,
                                 values.data()),
                        "H5Dwrite(" + name + ")");
-        string_attribute(set, "unit", "1");
-        string_attribute(set, "description", description);
+        describe(set, "1", description);
       }
 
       void string_dataset(const hid_t file, const std::string &name,
@@ -149,12 +94,8 @@ namespace cdea
         if (!values.empty())
           check_status(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()),
                        "H5Dwrite(" + name + ")");
-        string_attribute(set, "unit", "");
-        string_attribute(set, "description", description);
+        describe(set, "", description);
       }
-
-    private:
-      std::string path;
     };
 
     std::string format(const double x)
@@ -167,43 +108,23 @@ namespace cdea
   } // namespace
 
   void write_sweep_file(const std::string &path, const SweepMap &map,
-                        const std::string &parameter_text)
+                        const std::string &parameter_text, const std::string &run_status)
   {
     const SweepSettings &s = map.settings;
     const std::size_t    n = map.rows.size(), m = s.outer_voltages.size();
 
-    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-    if (!parent.empty())
-      {
-        std::error_code error;
-        std::filesystem::create_directories(parent, error);
-        if (error)
-          throw std::runtime_error("cannot write '" + path + "': cannot create directory '" +
-                                   parent.string() + "': " + error.message());
-      }
-
     ErrorPrintingOff quiet;
     Writer           w(path);
-    Handle           fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
-#if H5_VERSION_GE(1, 10, 7)
-    if (fapl >= 0)
-      H5Pset_file_locking(fapl, false, true);
-#endif
-    // No modification times in the object headers: the same map gives the
-    // same bytes.
-    Handle fcpl(H5Pcreate(H5P_FILE_CREATE), H5Pclose);
-    if (fcpl >= 0)
-      H5Pset_obj_track_times(fcpl, false);
-    const hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl >= 0 ? hid_t(fcpl) : H5P_DEFAULT,
-                               fapl >= 0 ? hid_t(fapl) : H5P_DEFAULT);
-    if (id < 0)
-      throw std::runtime_error("cannot create '" + path + "': " + error_text());
-    Handle file(id, H5Fclose);
+    // In memory, then written whole and renamed onto the path: an older map
+    // stays until the new one is complete. No modification times in the
+    // object headers: the same map gives the same bytes.
+    Handle file = hdf5::create_memory_file(path, false);
 
     // Parameters as attributes.
     w.string_attribute(file, "parameters", parameter_text);
     w.string_attribute(file, "code_version", CDEA_VERSION);
     w.string_attribute(file, "method", "finite elements");
+    w.string_attribute(file, "run_status", run_status);
     w.double_attribute(file, "inner_voltage_kV", s.inner_voltage / 1e3);
     w.double_attribute(file, "outer_voltage_from_kV", s.outer_from / 1e3);
     w.double_attribute(file, "outer_voltage_to_kV", s.outer_to / 1e3);
@@ -321,7 +242,8 @@ namespace cdea
                        "why the continuation of the row stopped before the end of the grid "
                        "(empty if it did not)");
     }
-    if (H5Fflush(file, H5F_SCOPE_LOCAL) < 0)
-      throw std::runtime_error("cannot write '" + path + "': " + error_text());
+    const WriteOutcome out = replace_file(path, hdf5::file_image(file, w.name()), true);
+    if (!out.ok)
+      throw std::runtime_error("cannot write '" + path + "': " + out.message);
   }
 } // namespace cdea

@@ -1,5 +1,6 @@
 #include <cdea/output/hdf5_support.h>
 
+#include <stdexcept>
 #include <vector>
 
 namespace cdea::hdf5
@@ -13,6 +14,9 @@ namespace cdea::hdf5
         messages->emplace_back(err->desc);
       return 0;
     }
+
+    /// Memory grows in steps of this many bytes (the core driver's increment).
+    constexpr std::size_t memory_increment = 1 << 20;
   } // namespace
 
   ErrorPrintingOff::ErrorPrintingOff()
@@ -47,5 +51,114 @@ namespace cdea::hdf5
     if (messages.size() > 1 && messages.back() != reason)
       reason += " (HDF5: " + messages.back() + ")";
     return reason;
+  }
+
+  void Writer::fail(const std::string &what) const
+  {
+    throw std::runtime_error(context + ": " + what + " failed: " + error_text());
+  }
+
+  void Writer::write_attribute(const hid_t object, const std::string &name, const hid_t file_type,
+                               const hid_t memory_type, const hid_t space,
+                               const void *data) const
+  {
+    const htri_t exists = H5Aexists(object, name.c_str());
+    check_status(exists, "H5Aexists(" + name + ")");
+    if (exists > 0)
+      check_status(H5Adelete(object, name.c_str()), "H5Adelete(" + name + ")");
+    Handle attribute(check(H5Acreate2(object, name.c_str(), file_type, space, H5P_DEFAULT,
+                                      H5P_DEFAULT),
+                           "H5Acreate2(" + name + ")"),
+                     H5Aclose);
+    check_status(H5Awrite(attribute, memory_type, data), "H5Awrite(" + name + ")");
+  }
+
+  void Writer::string_attribute(const hid_t object, const std::string &name,
+                                const std::string &value) const
+  {
+    Handle type(check(H5Tcopy(H5T_C_S1), "H5Tcopy"), H5Tclose);
+    check_status(H5Tset_size(type, H5T_VARIABLE), "H5Tset_size");
+    check_status(H5Tset_cset(type, H5T_CSET_UTF8), "H5Tset_cset");
+    Handle      space(check(H5Screate(H5S_SCALAR), "H5Screate"), H5Sclose);
+    const char *pointer = value.c_str();
+    write_attribute(object, name, type, type, space, &pointer);
+  }
+
+  void Writer::int_attribute(const hid_t object, const std::string &name, const int value) const
+  {
+    Handle space(check(H5Screate(H5S_SCALAR), "H5Screate"), H5Sclose);
+    write_attribute(object, name, H5T_STD_I32LE, H5T_NATIVE_INT, space, &value);
+  }
+
+  void Writer::double_attribute(const hid_t object, const std::string &name,
+                                const double value) const
+  {
+    Handle space(check(H5Screate(H5S_SCALAR), "H5Screate"), H5Sclose);
+    write_attribute(object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, space, &value);
+  }
+
+  void Writer::double_array_attribute(const hid_t object, const std::string &name,
+                                      const std::vector<double> &values, const unsigned int rows,
+                                      const unsigned int columns) const
+  {
+    Handle space;
+    if (values.empty())
+      space = Handle(check(H5Screate(H5S_NULL), "H5Screate"), H5Sclose);
+    else if (rows > 0)
+      {
+        const hsize_t dims[2] = {rows, columns};
+        space = Handle(check(H5Screate_simple(2, dims, nullptr), "H5Screate_simple"), H5Sclose);
+      }
+    else
+      {
+        const hsize_t dims[1] = {values.size()};
+        space = Handle(check(H5Screate_simple(1, dims, nullptr), "H5Screate_simple"), H5Sclose);
+      }
+    // HDF5 wants a buffer even for an empty (null) dataspace.
+    static const double nothing = 0.;
+    write_attribute(object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, space,
+                    values.empty() ? &nothing : values.data());
+  }
+
+  void Writer::describe(const hid_t object, const std::string &unit,
+                        const std::string &description) const
+  {
+    string_attribute(object, "unit", unit);
+    string_attribute(object, "description", description);
+  }
+
+  Handle create_memory_file(const std::string &context, const bool track_times)
+  {
+    const Writer w(context);
+    Handle       fapl(w.check(H5Pcreate(H5P_FILE_ACCESS), "H5Pcreate"), H5Pclose);
+    w.check_status(H5Pset_fapl_core(fapl, memory_increment, false), "H5Pset_fapl_core");
+    Handle fcpl(w.check(H5Pcreate(H5P_FILE_CREATE), "H5Pcreate"), H5Pclose);
+    if (!track_times)
+      w.check_status(H5Pset_obj_track_times(fcpl, false), "H5Pset_obj_track_times");
+    // The name only identifies the file inside this process (nothing is
+    // written to it), and HDF5 refuses two open files of one name.
+    static unsigned long long count = 0;
+    const std::string name = "cdea-memory-file-" + std::to_string(++count);
+    return Handle(w.check(H5Fcreate(name.c_str(), H5F_ACC_TRUNC, fcpl, fapl), "H5Fcreate"),
+                  H5Fclose);
+  }
+
+  std::size_t file_image_size(const hid_t file, const std::string &context)
+  {
+    const Writer w(context);
+    w.check_status(H5Fflush(file, H5F_SCOPE_LOCAL), "H5Fflush");
+    const ssize_t size = H5Fget_file_image(file, nullptr, 0);
+    w.check_status(size < 0 ? -1 : 0, "H5Fget_file_image");
+    return std::size_t(size);
+  }
+
+  std::vector<char> file_image(const hid_t file, const std::string &context)
+  {
+    const Writer      w(context);
+    std::vector<char> image(file_image_size(file, context));
+    const ssize_t     got = H5Fget_file_image(file, image.data(), image.size());
+    w.check_status(got < 0 ? -1 : 0, "H5Fget_file_image");
+    image.resize(std::size_t(got));
+    return image;
   }
 } // namespace cdea::hdf5

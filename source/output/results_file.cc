@@ -1,568 +1,218 @@
-#include <cdea/output/hdf5_support.h>
+#include <cdea/output/journal.h>
+#include <cdea/output/results_document.h>
 #include <cdea/output/results_file.h>
+#include <cdea/output/safe_files.h>
 
-#include <hdf5.h>
+#include <unistd.h>
 
-#include <cstdio>
-#include <filesystem>
-#include <limits>
-#include <map>
-#include <set>
+#include <chrono>
+#include <cstdlib>
 #include <stdexcept>
-#include <system_error>
-
-#ifndef CDEA_VERSION
-#  define CDEA_VERSION "unknown"
-#endif
 
 namespace cdea
 {
   namespace
   {
-    constexpr double nan_value = std::numeric_limits<double>::quiet_NaN();
+    using Clock = std::chrono::steady_clock;
 
-    // Unit conversions from SI to the file's units.
-    constexpr double to_mm   = 1e3;
-    constexpr double to_kPa  = 1e-3;
-    constexpr double to_kV   = 1e-3;
-    constexpr double to_MV_m = 1e-6;
-    constexpr double to_g    = 1e3;
+    /// A checkpoint at most every this many seconds, and never taking more
+    /// than 1/checkpoint_cost_ratio of the run's time.
+    double checkpoint_interval_setting()
+    {
+      if (const char *env = std::getenv("CDEA_CHECKPOINT_SECONDS"))
+        {
+          char        *end = nullptr;
+          const double v   = std::strtod(env, &end);
+          if (end != env && *end == '\0' && v >= 0.)
+            return v;
+        }
+      return 1.;
+    }
+    constexpr double checkpoint_cost_ratio = 20.;
 
-    constexpr hsize_t summary_chunk_rows = 128;
+    std::string journal_of(const std::string &path) { return path + ".journal"; }
+    std::string checkpoint_of(const std::string &path) { return sibling_name(path, ".partial"); }
 
-    using hdf5::ErrorPrintingOff;
-    using hdf5::error_text;
-
-    using hdf5::Handle;
+    /// Leftovers of a run that died while writing a file whole.
+    void remove_temporaries(const std::string &path)
+    {
+      remove_file(path + ".tmp");
+      remove_file(checkpoint_of(path) + ".tmp");
+    }
   } // namespace
 
   struct ResultsFile::Impl
   {
-    std::string  file_path;
-    unsigned int rings = 0;
-    hsize_t      rows  = 0;
+    std::string                      file_path, directory;
+    std::unique_ptr<ResultsDocument> document;
+    JournalWriter                    journal;
+    OutputLock                       lock;
+    DirectoryIdentity                directory_id;
+    std::vector<std::string>         notes;
+    std::string                      failure; ///< the first OutputError of the run
+    bool                             finished = false;
+    Finish                           finish_result;
 
-    Handle file, summary, steps;
+    double            minimum_interval = 1.;
+    Clock::time_point last_checkpoint  = Clock::now();
+    double            last_duration    = 0.;
+    unsigned int      checkpoints      = 0;
+    double            checkpoint_time  = 0.;
 
-    struct Column
+    void before_change() const
     {
-      Handle       dataset;
-      unsigned int width = 1; // 1 for 1D, n_rings for 2D
-      hid_t        memory_type;
-    };
-    std::map<std::string, Column> standard_columns;
-    std::map<std::string, Column> extra_columns;
-    std::map<std::string, std::pair<std::string, std::string>> extra_descriptions;
-
-    ~Impl()
-    {
-      // Objects before the file; Handle::reset() never throws.
-      standard_columns.clear();
-      extra_columns.clear();
-      steps.reset();
-      summary.reset();
-      file.reset();
+      if (finished)
+        throw std::logic_error("ResultsFile '" + file_path + "': changed after finish()");
+      if (!failure.empty())
+        throw OutputError(failure);
     }
 
-    [[noreturn]] void fail(const std::string &what) const
+    /// Runs @p write; an OutputError is remembered (the run must stop).
+    template <typename Write>
+    void record(const Write &write)
     {
-      throw std::runtime_error("ResultsFile '" + file_path + "': " + what + " failed: " +
-                               error_text());
-    }
-    hid_t check(const hid_t id, const std::string &what) const
-    {
-      if (id < 0)
-        fail(what);
-      return id;
-    }
-    void check_status(const herr_t status, const std::string &what) const
-    {
-      if (status < 0)
-        fail(what);
-    }
-
-    void flush() const { check_status(H5Fflush(file, H5F_SCOPE_LOCAL), "H5Fflush"); }
-
-    void delete_attribute_if_present(const hid_t object, const std::string &name) const
-    {
-      const htri_t exists = H5Aexists(object, name.c_str());
-      check_status(exists, "H5Aexists(" + name + ")");
-      if (exists > 0)
-        check_status(H5Adelete(object, name.c_str()), "H5Adelete(" + name + ")");
-    }
-
-    void write_attribute(const hid_t        object,
-                         const std::string &name,
-                         const hid_t        file_type,
-                         const hid_t        memory_type,
-                         const hid_t        space,
-                         const void        *data) const
-    {
-      delete_attribute_if_present(object, name);
-      Handle attribute(check(H5Acreate2(object, name.c_str(), file_type, space,
-                                        H5P_DEFAULT, H5P_DEFAULT),
-                             "H5Acreate2(" + name + ")"),
-                       H5Aclose);
-      check_status(H5Awrite(attribute, memory_type, data), "H5Awrite(" + name + ")");
-    }
-
-    void write_string_attribute(const hid_t        object,
-                                const std::string &name,
-                                const std::string &value) const
-    {
-      // Variable-length UTF-8: h5py reads it as str, no 64 kB header limit.
-      Handle type(check(H5Tcopy(H5T_C_S1), "H5Tcopy"), H5Tclose);
-      check_status(H5Tset_size(type, H5T_VARIABLE), "H5Tset_size");
-      check_status(H5Tset_cset(type, H5T_CSET_UTF8), "H5Tset_cset");
-      Handle      space(check(H5Screate(H5S_SCALAR), "H5Screate"), H5Sclose);
-      const char *pointer = value.c_str();
-      write_attribute(object, name, type, type, space, &pointer);
-    }
-
-    void write_int_attribute(const hid_t object, const std::string &name, const int value) const
-    {
-      Handle space(check(H5Screate(H5S_SCALAR), "H5Screate"), H5Sclose);
-      write_attribute(object, name, H5T_STD_I32LE, H5T_NATIVE_INT, space, &value);
-    }
-
-    void write_double_attribute(const hid_t        object,
-                                const std::string &name,
-                                const double       value) const
-    {
-      Handle space(check(H5Screate(H5S_SCALAR), "H5Screate"), H5Sclose);
-      write_attribute(object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, space, &value);
-    }
-
-    void write_double_array_attribute(const hid_t                object,
-                                      const std::string         &name,
-                                      const std::vector<double> &values) const
-    {
-      Handle space;
-      if (values.empty())
-        space = Handle(check(H5Screate(H5S_NULL), "H5Screate"), H5Sclose);
-      else
+      try
         {
-          const hsize_t dims[1] = {values.size()};
-          space = Handle(check(H5Screate_simple(1, dims, nullptr), "H5Screate_simple"), H5Sclose);
+          write();
         }
-      // HDF5 wants a buffer even for an empty (null) dataspace.
-      static const double nothing = 0.;
-      write_attribute(object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, space,
-                      values.empty() ? &nothing : values.data());
-    }
-
-    void describe(const hid_t object, const std::string &unit, const std::string &description) const
-    {
-      write_string_attribute(object, "unit", unit);
-      write_string_attribute(object, "description", description);
-    }
-
-    /// An empty chunked, unlimited /summary dataset with @p width columns
-    /// (1D if width == 0), NaN fill for doubles.
-    Handle create_summary_dataset(const std::string &name,
-                                  const hid_t        file_type,
-                                  const unsigned int width,
-                                  const hsize_t      initial_rows) const
-    {
-      const int     rank       = width == 0 ? 1 : 2;
-      const hsize_t dims[2]    = {initial_rows, width};
-      const hsize_t maxdims[2] = {H5S_UNLIMITED, width};
-      const hsize_t chunk[2]   = {summary_chunk_rows, width};
-      Handle space(check(H5Screate_simple(rank, dims, maxdims), "H5Screate_simple"), H5Sclose);
-      Handle dcpl(check(H5Pcreate(H5P_DATASET_CREATE), "H5Pcreate"), H5Pclose);
-      check_status(H5Pset_chunk(dcpl, rank, chunk), "H5Pset_chunk");
-      if (H5Tequal(file_type, H5T_IEEE_F64LE) > 0)
-        check_status(H5Pset_fill_value(dcpl, H5T_NATIVE_DOUBLE, &nan_value),
-                     "H5Pset_fill_value");
-      else
+      catch (const OutputError &e)
         {
-          const int zero = 0;
-          check_status(H5Pset_fill_value(dcpl, H5T_NATIVE_INT, &zero), "H5Pset_fill_value");
+          failure = e.what();
+          throw;
         }
-      check_status(H5Pset_fill_time(dcpl, H5D_FILL_TIME_ALLOC), "H5Pset_fill_time");
-      return Handle(check(H5Dcreate2(summary, name.c_str(), file_type, space, H5P_DEFAULT,
-                                     dcpl, H5P_DEFAULT),
-                          "H5Dcreate2(/summary/" + name + ")"),
-                    H5Dclose);
     }
 
-    void add_standard_column(const std::string &name,
-                             const bool         is_int,
-                             const bool         per_ring,
-                             const std::string &unit,
-                             const std::string &description)
+    void check_directory()
     {
-      Column column;
-      column.width       = per_ring ? rings : 1;
-      column.memory_type = is_int ? H5T_NATIVE_INT : H5T_NATIVE_DOUBLE;
-      column.dataset     = create_summary_dataset(name, is_int ? H5T_STD_I32LE : H5T_IEEE_F64LE,
-                                                  per_ring ? rings : 0, 0);
-      describe(column.dataset, unit, description);
-      standard_columns.emplace(name, std::move(column));
+      if (!(DirectoryIdentity::of(directory) == directory_id))
+        record([&] {
+          throw OutputError("the output directory '" + directory +
+                            "' was removed or replaced during the run");
+        });
     }
 
-    /// Grows @p column to rows_after rows (new rows get the fill value).
-    void extend(const std::string &name, const Column &column, const hsize_t rows_after) const
+    void checkpoint_if_due()
     {
-      const hsize_t dims[2] = {rows_after, column.width};
-      check_status(H5Dset_extent(column.dataset, dims), "H5Dset_extent(/summary/" + name + ")");
-    }
-
-    /// Writes row @p row (already allocated) of @p column.
-    void write_row(const std::string &name,
-                   const Column      &column,
-                   const hsize_t      row,
-                   const void        *data) const
-    {
-      Handle file_space(check(H5Dget_space(column.dataset), "H5Dget_space"), H5Sclose);
-      const hsize_t start[2] = {row, 0};
-      const hsize_t count[2] = {1, column.width};
-      check_status(H5Sselect_hyperslab(file_space, H5S_SELECT_SET, start, nullptr, count, nullptr),
-                   "H5Sselect_hyperslab");
-      const hsize_t memory_dims[1] = {column.width};
-      Handle memory_space(check(H5Screate_simple(1, memory_dims, nullptr), "H5Screate_simple"),
-                          H5Sclose);
-      check_status(H5Dwrite(column.dataset, column.memory_type, memory_space, file_space,
-                            H5P_DEFAULT, data),
-                   "H5Dwrite(/summary/" + name + ")");
-    }
-
-    void write_field(const hid_t                group,
-                     const std::string         &name,
-                     const hid_t                file_type,
-                     const hid_t                memory_type,
-                     const void                *data,
-                     const std::size_t          n,
-                     const std::string         &unit,
-                     const std::string         &description) const
-    {
-      const hsize_t dims[1] = {n};
-      Handle space(check(H5Screate_simple(1, dims, nullptr), "H5Screate_simple"), H5Sclose);
-      Handle dataset(check(H5Dcreate2(group, name.c_str(), file_type, space, H5P_DEFAULT,
-                                      H5P_DEFAULT, H5P_DEFAULT),
-                           "H5Dcreate2(" + name + ")"),
-                     H5Dclose);
-      if (n > 0)
-        check_status(H5Dwrite(dataset, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data),
-                     "H5Dwrite(" + name + ")");
-      describe(dataset, unit, description);
-    }
-
-    void write_scaled_field(const hid_t                group,
-                            const std::string         &name,
-                            const std::vector<double> &values,
-                            const double               factor,
-                            const std::string         &unit,
-                            const std::string         &description) const
-    {
-      std::vector<double> scaled(values.size());
-      for (std::size_t i = 0; i < values.size(); ++i)
-        scaled[i] = values[i] * factor;
-      write_field(group, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, scaled.data(), scaled.size(),
-                  unit, description);
-    }
-
-    void write_extra_description(const std::string &name) const
-    {
-      const auto it = extra_columns.find(name);
-      if (it == extra_columns.end())
+      const Clock::time_point now = Clock::now();
+      const double since = std::chrono::duration<double>(now - last_checkpoint).count();
+      if (since < minimum_interval || since < checkpoint_cost_ratio * last_duration)
         return;
-      const auto d = extra_descriptions.find(name);
-      if (d != extra_descriptions.end())
-        describe(it->second.dataset, d->second.first, d->second.second);
-      else
-        describe(it->second.dataset, "",
-                 "extra summary column (the unit is part of the name); NaN where not written");
+      record([&] {
+        document->set_root_attribute("run_status",
+                                     "running: checkpoint after step " +
+                                       std::to_string(document->n_steps() - 1) +
+                                       " (the run had not ended)");
+        const WriteOutcome out = replace_file(checkpoint_of(file_path), document->image(), false);
+        if (!out.ok)
+          throw OutputError("cannot write the checkpoint: " + out.message);
+      });
+      last_checkpoint = Clock::now();
+      last_duration   = std::chrono::duration<double>(last_checkpoint - now).count();
+      checkpoint_time += last_duration;
+      ++checkpoints;
     }
+
+    Finish finish(const std::string &status);
   };
 
-  namespace
-  {
-    const char *const standard_column_names[] = {"stage",
-                                                 "load_factor",
-                                                 "voltage_kV",
-                                                 "mass_g",
-                                                 "displacement_mm",
-                                                 "stroke_mm",
-                                                 "s2_min_kPa",
-                                                 "s2_ring_inner_kPa",
-                                                 "wrinkled",
-                                                 "newton_iterations"};
-
-    std::vector<double> scaled(const std::vector<double> &values, const double factor)
-    {
-      std::vector<double> result(values.size());
-      for (std::size_t i = 0; i < values.size(); ++i)
-        result[i] = values[i] * factor;
-      return result;
-    }
-  } // namespace
-
-  ResultsFile::ResultsFile(const std::string &path,
-                           const std::string &parameters_text,
+  ResultsFile::ResultsFile(const std::string &path, const std::string &parameters_text,
                            const unsigned int n_rings,
                            const std::vector<std::pair<std::string, std::string>>
                              &extra_root_attributes)
     : impl(std::make_unique<Impl>())
   {
-    impl->file_path = path;
-    impl->rings     = n_rings;
-    if (n_rings == 0)
-      throw std::invalid_argument("ResultsFile '" + path + "': n_rings must be at least 1");
-    for (const auto &attribute : extra_root_attributes)
-      if (attribute.first.empty() || attribute.first == "parameters" ||
-          attribute.first == "code_version" || attribute.first == "n_rings")
-        throw std::invalid_argument("ResultsFile '" + path + "': extra root attribute name '" +
-                                    attribute.first + "' is empty or reserved");
+    Impl &d     = *impl;
+    d.file_path = path;
+    d.directory = parent_directory(path);
+    d.document =
+      std::make_unique<ResultsDocument>(path, parameters_text, n_rings, extra_root_attributes);
+    d.minimum_interval = checkpoint_interval_setting();
 
-    // Parent directory.
-    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-    if (!parent.empty())
+    std::vector<std::string> created;
+    bool                     journal_started = false; // the journal at the path is ours
+    {
+      std::string why;
+      if (!claim_output(path, d.lock, why, &created))
+        throw OutputError("cannot write results file '" + path + "': " + why);
+    }
+    try
       {
-        std::error_code error;
-        std::filesystem::create_directories(parent, error);
-        if (error)
-          throw std::runtime_error("cannot create results file '" + path +
-                                   "': cannot create directory '" + parent.string() +
-                                   "': " + error.message());
+        if (file_exists(journal_of(path)))
+          {
+            try
+              {
+                const Recovery saved = recover_results(path, false);
+                d.notes.push_back("an earlier run writing " + path +
+                                  " did not finish its file: " + saved.message);
+              }
+            catch (const OutputError &e)
+              {
+                throw OutputError("cannot start writing " + path +
+                                  ": the journal of an earlier run that did not write all its "
+                                  "steps must be saved first, but " + e.what());
+              }
+          }
+        remove_temporaries(path);
+        remove_file(checkpoint_of(path));
+        journal_started = true;
+        d.journal.open(journal_of(path), parameters_text, n_rings, extra_root_attributes);
+        d.directory_id = DirectoryIdentity::of(d.directory);
       }
-
-    ErrorPrintingOff quiet;
-    // No file lock: HDF5 1.10 would otherwise hold an exclusive lock for the
-    // whole run, and h5dump/h5py/plot_run.py could not read the results of a
-    // running job. Between two appends the flushed file is consistent.
-    Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
-#if H5_VERSION_GE(1, 10, 7)
-    if (fapl.get() >= 0)
-      H5Pset_file_locking(fapl, false, true);
-#endif
-    const hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT,
-                                 fapl.get() >= 0 ? fapl.get() : H5P_DEFAULT);
-    if (file < 0)
-      throw std::runtime_error("cannot create results file '" + path +
-                               "': " + error_text());
-    impl->file = Handle(file, H5Fclose);
-
-    impl->write_string_attribute(file, "parameters", parameters_text);
-    impl->write_string_attribute(file, "code_version", CDEA_VERSION);
-    impl->write_int_attribute(file, "n_rings", static_cast<int>(n_rings));
-    for (const auto &attribute : extra_root_attributes)
-      impl->write_string_attribute(file, attribute.first, attribute.second);
-
-    impl->summary = Handle(impl->check(H5Gcreate2(file, "summary", H5P_DEFAULT, H5P_DEFAULT,
-                                                  H5P_DEFAULT),
-                                       "H5Gcreate2(/summary)"),
-                           H5Gclose);
-    impl->steps   = Handle(impl->check(H5Gcreate2(file, "steps", H5P_DEFAULT, H5P_DEFAULT,
-                                                  H5P_DEFAULT),
-                                       "H5Gcreate2(/steps)"),
-                           H5Gclose);
-
-    impl->add_standard_column("stage", true, false, "1",
-                              "stage of the run: 0 pre-stretch, 1 dead load, 2 voltage");
-    impl->add_standard_column("load_factor", false, false, "1",
-                              "stage parameter (voltage path parameter in stage 2)");
-    impl->add_standard_column("voltage_kV", false, true, "kV",
-                              "voltage of each ring (steps x rings)");
-    impl->add_standard_column("mass_g", false, false, "g", "dead-load mass on the disk");
-    impl->add_standard_column("displacement_mm", false, false, "mm",
-                              "disk deflection from the frame plane |z(disk) - z(frame)|");
-    impl->add_standard_column("stroke_mm", false, false, "mm",
-                              "displacement minus its zero-voltage value under the same load "
-                              "(NaN before the end of the load stage)");
-    impl->add_standard_column("s2_min_kPa", false, false, "kPa",
-                              "smallest nominal hoop stress s2 anywhere");
-    impl->add_standard_column("s2_ring_inner_kPa", false, true, "kPa",
-                              "nominal hoop stress s2 at the inner edge of each ring "
-                              "(steps x rings)");
-    impl->add_standard_column("wrinkled", true, false, "1",
-                              "1 if the hoop stress is negative somewhere (loss of tension)");
-    impl->add_standard_column("newton_iterations", true, false, "1",
-                              "Newton iterations of the converged step");
-
-    write_onset(OnsetRecord{});
+    catch (...)
+      {
+        d.journal.close();
+        if (journal_started)
+          remove_file(journal_of(path));
+        d.lock.release();
+        remove_created_directories(created);
+        d.finished = true;
+        throw;
+      }
   }
 
   ResultsFile::~ResultsFile()
   {
-    if (impl)
-      {
-        ErrorPrintingOff quiet;
-        impl.reset();
-      }
+    if (impl && !impl->finished)
+      impl->finish("ended without finishing: the program left the run early");
   }
 
   ResultsFile::ResultsFile(ResultsFile &&) noexcept            = default;
   ResultsFile &ResultsFile::operator=(ResultsFile &&) noexcept = default;
 
-  void ResultsFile::append(const StepSummary &summary,
-                           const StepFields  &fields,
+  void ResultsFile::append(const StepSummary &summary, const StepFields &fields,
                            const std::vector<std::pair<std::string, double>> &extra_columns)
   {
-    if (!impl)
-      throw std::logic_error("ResultsFile: append() on a moved-from object");
-    Impl             &d      = *impl;
-    const std::string prefix = "ResultsFile '" + d.file_path + "': ";
-
-    // Validate everything before touching the file.
-    if (summary.voltages.size() != d.rings)
-      throw std::invalid_argument(prefix + "StepSummary::voltages has " +
-                                  std::to_string(summary.voltages.size()) + " entries, expected " +
-                                  std::to_string(d.rings));
-    if (summary.s2_ring_inner.size() != d.rings)
-      throw std::invalid_argument(prefix + "StepSummary::s2_ring_inner has " +
-                                  std::to_string(summary.s2_ring_inner.size()) +
-                                  " entries, expected " + std::to_string(d.rings));
-    const std::size_t n = fields.R.size();
-    const std::pair<const char *, std::size_t> sizes[] = {
-      {"r", fields.r.size()},           {"z", fields.z.size()},
-      {"theta", fields.theta.size()},   {"lambda1", fields.lambda1.size()},
-      {"lambda2", fields.lambda2.size()}, {"s1", fields.s1.size()},
-      {"s2", fields.s2.size()},         {"E", fields.E.size()},
-      {"Phi", fields.Phi.size()},       {"ring", fields.ring.size()}};
-    for (const auto &s : sizes)
-      if (s.second != n)
-        throw std::invalid_argument(prefix + "StepFields::" + s.first + " has " +
-                                    std::to_string(s.second) + " entries but R has " +
-                                    std::to_string(n));
-    {
-      std::set<std::string> seen;
-      for (const auto &column : extra_columns)
-        {
-          const std::string &name = column.first;
-          if (name.empty() || name.find('/') != std::string::npos || name == "." ||
-              d.standard_columns.count(name) > 0 || !seen.insert(name).second)
-            throw std::invalid_argument(prefix + "extra summary column name '" + name +
-                                        "' is empty, contains '/', repeats or is reserved");
-        }
-    }
-
-    ErrorPrintingOff quiet;
-    const hsize_t    row = d.rows;
-
-    // /summary row.
-    const int stage      = static_cast<int>(summary.stage);
-    const int wrinkled   = summary.wrinkled ? 1 : 0;
-    const int iterations = static_cast<int>(summary.newton_iterations);
-    const double              mass_g          = summary.mass * to_g;
-    const double              displacement_mm = summary.displacement * to_mm;
-    const double              stroke_mm       = summary.stroke * to_mm;
-    const double              s2_min_kPa      = summary.s2_min * to_kPa;
-    const std::vector<double> voltage_kV      = scaled(summary.voltages, to_kV);
-    const std::vector<double> s2_ring_kPa     = scaled(summary.s2_ring_inner, to_kPa);
-    const std::map<std::string, const void *> row_data = {
-      {"stage", &stage},
-      {"load_factor", &summary.load_factor},
-      {"voltage_kV", voltage_kV.data()},
-      {"mass_g", &mass_g},
-      {"displacement_mm", &displacement_mm},
-      {"stroke_mm", &stroke_mm},
-      {"s2_min_kPa", &s2_min_kPa},
-      {"s2_ring_inner_kPa", s2_ring_kPa.data()},
-      {"wrinkled", &wrinkled},
-      {"newton_iterations", &iterations}};
-    for (const auto &[name, column] : d.standard_columns)
-      {
-        d.extend(name, column, row + 1);
-        d.write_row(name, column, row, row_data.at(name));
-      }
-
-    // Extra columns: new ones start NaN-filled up to this row.
-    for (const auto &[name, value] : extra_columns)
-      if (d.extra_columns.count(name) == 0)
-        {
-          Impl::Column column;
-          column.width       = 1;
-          column.memory_type = H5T_NATIVE_DOUBLE;
-          column.dataset     = d.create_summary_dataset(name, H5T_IEEE_F64LE, 0, row);
-          d.extra_columns.emplace(name, std::move(column));
-          d.write_extra_description(name);
-        }
-    for (const auto &[name, column] : d.extra_columns)
-      d.extend(name, column, row + 1); // NaN unless written below
-    for (const auto &[name, value] : extra_columns)
-      d.write_row(name, d.extra_columns.at(name), row, &value);
-
-    // /steps/NNNNNN
-    char group_name[32];
-    std::snprintf(group_name, sizeof(group_name), "%06llu", static_cast<unsigned long long>(row));
-    Handle group(d.check(H5Gcreate2(d.steps, group_name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                         std::string("H5Gcreate2(/steps/") + group_name + ")"),
-                 H5Gclose);
-    d.write_int_attribute(group, "stage", stage);
-    d.write_double_attribute(group, "load_factor", summary.load_factor);
-    d.write_double_array_attribute(group, "voltage_kV", voltage_kV);
-    d.write_double_attribute(group, "displacement_mm", displacement_mm);
-
-    d.write_scaled_field(group, "R", fields.R, to_mm, "mm",
-                         "undeformed (reference) radius of the material point");
-    d.write_scaled_field(group, "r", fields.r, to_mm, "mm", "deformed radius");
-    d.write_scaled_field(group, "z", fields.z, to_mm, "mm",
-                         "deformed height (same sign convention as the solver)");
-    d.write_scaled_field(group, "theta", fields.theta, 1., "rad",
-                         "meridian slope angle");
-    d.write_scaled_field(group, "lambda1", fields.lambda1, 1., "1", "meridian stretch");
-    d.write_scaled_field(group, "lambda2", fields.lambda2, 1., "1", "hoop stretch r/R");
-    d.write_scaled_field(group, "s1", fields.s1, to_kPa, "kPa", "nominal meridian stress");
-    d.write_scaled_field(group, "s2", fields.s2, to_kPa, "kPa", "nominal hoop stress");
-    d.write_scaled_field(group, "E", fields.E, to_MV_m, "MV/m",
-                         "true electric field in the thickness direction");
-    d.write_scaled_field(group, "Phi", fields.Phi, to_kV, "kV", "voltage across the film");
-    d.write_field(group, "ring", H5T_STD_I32LE, H5T_NATIVE_INT, fields.ring.data(),
-                  fields.ring.size(), "1", "index of the electrode ring (0 = innermost)");
-    group.reset();
-
-    d.rows = row + 1;
-    d.flush();
+    Impl &d = *impl;
+    d.before_change();
+    d.document->check_append(summary, fields, extra_columns);
+    d.record([&] { d.journal.append(summary, fields, extra_columns); });
+    d.document->append(summary, fields, extra_columns);
+    d.check_directory();
+    d.checkpoint_if_due();
   }
 
-  void ResultsFile::describe_column(const std::string &name,
-                                    const std::string &unit,
+  void ResultsFile::describe_column(const std::string &name, const std::string &unit,
                                     const std::string &description)
   {
-    if (!impl)
-      throw std::logic_error("ResultsFile: describe_column() on a moved-from object");
-    ErrorPrintingOff quiet;
-    impl->extra_descriptions[name] = {unit, description};
-    if (impl->extra_columns.count(name) > 0)
-      {
-        impl->write_extra_description(name);
-        impl->flush();
-      }
+    Impl &d = *impl;
+    d.before_change();
+    d.record([&] { d.journal.describe_column(name, unit, description); });
+    d.document->describe_column(name, unit, description);
   }
 
   void ResultsFile::write_onset(const OnsetRecord &onset)
   {
-    if (!impl)
-      throw std::logic_error("ResultsFile: write_onset() on a moved-from object");
     Impl &d = *impl;
-    if (onset.found && onset.voltages.size() != d.rings)
-      throw std::invalid_argument("ResultsFile '" + d.file_path + "': OnsetRecord::voltages has " +
-                                  std::to_string(onset.voltages.size()) + " entries, expected " +
-                                  std::to_string(d.rings));
-    ErrorPrintingOff quiet;
-    d.write_int_attribute(d.summary, "onset_found", onset.found ? 1 : 0);
-    d.write_double_array_attribute(d.summary, "onset_voltage_kV",
-                                   onset.found ? scaled(onset.voltages, to_kV) :
-                                                 std::vector<double>(d.rings, nan_value));
-    d.write_double_attribute(d.summary, "onset_radius_mm",
-                             onset.found ? onset.radius * to_mm : nan_value);
-    d.write_double_attribute(d.summary, "onset_load_factor",
-                             onset.found ? onset.load_factor : nan_value);
-    d.flush();
+    d.before_change();
+    d.document->check_onset(onset);
+    d.record([&] { d.journal.onset(onset); });
+    d.document->write_onset(onset);
   }
 
   void ResultsFile::set_summary_attribute(const std::string         &name,
                                           const std::vector<double> &values)
   {
-    if (!impl)
-      throw std::logic_error("ResultsFile: set_summary_attribute() on a moved-from object");
-    if (name.empty())
-      throw std::invalid_argument("ResultsFile '" + impl->file_path +
-                                  "': empty summary attribute name");
-    ErrorPrintingOff quiet;
-    impl->write_double_array_attribute(impl->summary, name, values);
-    impl->flush();
+    set_summary_attribute(name, values, 0, 0);
   }
 
   void ResultsFile::set_summary_attribute(const std::string         &name,
@@ -570,35 +220,153 @@ namespace cdea
                                           const unsigned int         rows,
                                           const unsigned int         columns)
   {
-    if (!impl)
-      throw std::logic_error("ResultsFile: set_summary_attribute() on a moved-from object");
-    if (name.empty() || std::size_t(rows) * columns != values.size())
-      throw std::invalid_argument("ResultsFile '" + impl->file_path + "': summary attribute '" +
-                                  name + "' needs rows x columns values");
-    ErrorPrintingOff quiet;
-    if (rows == 0)
-      impl->write_double_array_attribute(impl->summary, name, values);
-    else
+    Impl &d = *impl;
+    d.before_change();
+    if (name.empty() || std::size_t(rows) * columns != (rows == 0 ? 0 : values.size()) ||
+        (rows == 0 && columns != 0 && !values.empty()))
+      throw std::invalid_argument("ResultsFile '" + d.file_path + "': summary attribute '" +
+                                  name + "' needs a name and rows x columns values");
+    d.record([&] { d.journal.summary_attribute(name, values, rows, columns); });
+    d.document->set_summary_attribute(name, values, rows, columns);
+  }
+
+  ResultsFile::Finish ResultsFile::finish(const std::string &status)
+  {
+    if (impl->finished)
+      return impl->finish_result;
+    impl->finished      = true;
+    impl->finish_result = impl->finish(status);
+    return impl->finish_result;
+  }
+
+  ResultsFile::Finish ResultsFile::Impl::finish(const std::string &status)
+  {
+    Finish             f;
+    const unsigned int n = document->n_steps();
+    journal.close();
+    try
       {
-        const hsize_t dims[2] = {rows, columns};
-        Handle        space(impl->check(H5Screate_simple(2, dims, nullptr), "H5Screate_simple"),
-                            H5Sclose);
-        impl->write_attribute(impl->summary, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, space,
-                              values.data());
+        document->set_root_attribute("run_status", status);
+        std::string target   = file_path;
+        const bool  vanished = !(DirectoryIdentity::of(directory) == directory_id);
+        bool        owner    = true; // the journal and lock at file_path are ours
+        if (vanished)
+          {
+            // The journal went with the directory (its data only in memory
+            // now): write the file into a new directory of the same name.
+            lock.release();
+            create_directories(directory);
+            std::string why;
+            owner = lock.acquire(file_path, why);
+            if (!owner)
+              target = free_sibling_name(file_path, ".vanished");
+            f.messages.push_back("the output directory '" + directory +
+                                 "' vanished during the run; it was created again for the " +
+                                 "results");
+          }
+        const WriteOutcome out = replace_file(target, document->image(), true);
+        if (out.ok)
+          {
+            f.written       = true;
+            f.file          = target;
+            f.steps_written = n;
+            if (owner)
+              {
+                remove_file(journal_of(file_path));
+                remove_file(checkpoint_of(file_path));
+              }
+            lock.release();
+            return f;
+          }
+        f.messages.push_back("cannot write " + target + ": " + out.message);
+        if (!vanished && out.written > 0)
+          {
+            // What fits: the leading steps whose file is no larger than what
+            // could be written. The journal keeps all of them.
+            const std::string  journal_path = journal_of(file_path);
+            const unsigned int k            = journal_steps_within(journal_path, out.written);
+            if (k > 0)
+              {
+                JournalReplay part = replay_journal(journal_path, file_path, k);
+                part.document->set_root_attribute(
+                  "run_status", status + " (only the first " + std::to_string(k) + " of " +
+                                  std::to_string(n) + " steps fit: " + out.message + ")");
+                const WriteOutcome fit = replace_file(target, part.document->image(), true);
+                if (fit.ok)
+                  {
+                    f.written       = true;
+                    f.file          = target;
+                    f.steps_written = k;
+                    remove_file(checkpoint_of(file_path));
+                    f.messages.push_back("only the first " + std::to_string(k) + " of " +
+                                         std::to_string(n) + " steps fit into " + target +
+                                         "; the journal " + journal_path + " keeps all " +
+                                         std::to_string(n) + ": make room and run 'cdea " +
+                                         "recover " + file_path + "'");
+                    lock.release();
+                    return f;
+                  }
+              }
+          }
+        if (!vanished)
+          f.messages.push_back("nothing could be written; the journal " + journal_of(file_path) +
+                               " keeps the " + std::to_string(n) + " steps: make room and " +
+                               "run 'cdea recover " + file_path + "'");
       }
-    impl->flush();
+    catch (const std::exception &e)
+      {
+        f.messages.push_back(std::string("writing the results failed: ") + e.what());
+      }
+    if (file_exists(checkpoint_of(file_path)))
+      f.messages.push_back("the last checkpoint is " + checkpoint_of(file_path));
+    lock.release();
+    return f;
   }
 
-  unsigned int ResultsFile::n_steps() const
-  {
-    return impl ? static_cast<unsigned int>(impl->rows) : 0;
-  }
+  const std::vector<std::string> &ResultsFile::notes() const { return impl->notes; }
+  unsigned int ResultsFile::n_steps() const { return impl->document->n_steps(); }
+  unsigned int ResultsFile::n_rings() const { return impl->document->n_rings(); }
+  const std::string &ResultsFile::path() const { return impl->file_path; }
+  std::string ResultsFile::checkpoint_path() const { return checkpoint_of(impl->file_path); }
+  std::string ResultsFile::journal_path() const { return journal_of(impl->file_path); }
+  unsigned int ResultsFile::checkpoints() const { return impl->checkpoints; }
+  double ResultsFile::checkpoint_seconds() const { return impl->checkpoint_time; }
 
-  unsigned int ResultsFile::n_rings() const { return impl ? impl->rings : 0; }
-
-  const std::string &ResultsFile::path() const
+  Recovery recover_results(const std::string &path, const bool into_path_if_free)
   {
-    static const std::string empty;
-    return impl ? impl->file_path : empty;
+    Recovery          r;
+    const std::string journal = journal_of(path);
+    if (!file_exists(journal))
+      {
+        r.message = "no journal " + journal + ": nothing to recover";
+        return r;
+      }
+    r.found                    = true;
+    const JournalReplay replay = replay_journal(journal, path);
+    if (!replay.document || replay.steps == 0)
+      {
+        remove_file(journal);
+        remove_file(checkpoint_of(path));
+        remove_temporaries(path);
+        r.message = "the journal " + journal + " held no step (removed)";
+        return r;
+      }
+    replay.document->set_root_attribute(
+      "run_status", "rebuilt from the journal: the run ended without writing all its steps "
+                    "(killed, crashed, or out of disk space) after the last step here");
+    r.file = into_path_if_free && !file_exists(path) ? path : free_sibling_name(path, ".recovered");
+    const WriteOutcome out = replace_file(r.file, replay.document->image(), true);
+    if (!out.ok)
+      throw OutputError("cannot write the recovered results: " + out.message + " (the journal " +
+                        journal + " is kept)");
+    r.steps = replay.steps;
+    remove_file(journal);
+    remove_file(checkpoint_of(path));
+    remove_temporaries(path);
+    r.message = "its " + std::to_string(r.steps) + " step(s) are in " + r.file;
+    if (replay.dropped_bytes > 0)
+      r.message += " (an incomplete last record of " + std::to_string(replay.dropped_bytes) +
+                   " bytes was dropped)";
+    return r;
   }
 } // namespace cdea

@@ -21,9 +21,10 @@ namespace cdea
   /// Newton, linear solver, relaxed law, water load).
   std::unique_ptr<MembraneModel> make_fe_model(const Parameters &p, const Scene &scene);
 
-  /// Exit codes: 0 success, 1 bad input or unwritable output, 2 the run
-  /// stopped before the end of its voltage path (every converged step is in
-  /// the results file).
+  /// Exit codes: 0 success, 1 bad input or unwritable output (nothing is
+  /// written), 2 the run stopped before the end of its voltage path or could
+  /// not write all of its results (signal, full disk, vanished directory;
+  /// the messages say where the converged steps are).
   enum ExitCode : int
   {
     exit_success      = 0,
@@ -39,6 +40,12 @@ namespace cdea
 
   /// `cdea compare FILE.prm`: both models, and their differences.
   int compare(const std::string &prm_file);
+
+  /// `cdea recover FILE.h5`: the results of a killed run that was writing
+  /// FILE.h5, rebuilt from its journal into FILE.h5 (or, if that exists,
+  /// FILE.recovered.h5). 0 done, 1 nothing to recover or the run still
+  /// going, 2 the file cannot be written.
+  int recover(const std::string &results_file);
 
   std::string usage();
 } // namespace cdea

@@ -22,7 +22,8 @@ namespace cdea
   class InputError : public std::runtime_error
   {
   public:
-    using std::runtime_error::runtime_error;
+    /// Long values in @p message are shortened (clip_long_values()).
+    explicit InputError(const std::string &message);
   };
 
   /// How the voltage path is followed (Solver/Continuation).
@@ -182,6 +183,9 @@ namespace cdea
 
     /// Path of the results file, "<Directory>/<Base name>.h5".
     std::string results_path(const std::string &suffix = "") const;
+
+    /// Warnings of read_parameters() (entries set twice), for the user.
+    std::vector<std::string> input_warnings;
   };
 
   /// Read and validate a .prm file. Throws InputError with a message that

@@ -144,8 +144,10 @@ namespace cdea
                              const SweepSettings &settings,
                              const std::function<void(std::size_t)> &on_points = {});
 
-  /// Write <path> (rank 0 only): the layout of doc/design-maps.md. Throws
+  /// Write <path> (rank 0 only): the layout of doc/design-maps.md, with the
+  /// root attribute run_status. The file is written whole beside the path and
+  /// renamed onto it: an older map stays intact until then. Throws
   /// std::runtime_error naming the file if it cannot be written.
   void write_sweep_file(const std::string &path, const SweepMap &map,
-                        const std::string &parameter_text);
+                        const std::string &parameter_text, const std::string &run_status);
 } // namespace cdea

@@ -1,12 +1,16 @@
 #pragma once
 // Small helpers for the source files that call the HDF5 C API directly
 // (results file, design-map file): HDF5 errors become one-line messages for
-// exceptions instead of error stacks printed to stderr. Includes hdf5.h: not
-// for headers.
+// exceptions instead of error stacks printed to stderr; one attribute writer
+// for both files; files built in memory (the core driver without backing
+// store), so that HDF5 itself never writes to disk and a file on disk is
+// always a complete image written by cdea (see atomic_file.h). Includes
+// hdf5.h: not for headers.
 
 #include <hdf5.h>
 
 #include <string>
+#include <vector>
 
 namespace cdea::hdf5
 {
@@ -74,4 +78,59 @@ namespace cdea::hdf5
   /// the system error text if the innermost entry carries one, else the
   /// innermost description, followed by the outermost description.
   std::string error_text();
+
+  /// Checked HDF5 calls and attributes, for one file. A failing call throws
+  /// std::runtime_error "<context>: <call> failed: <error_text()>".
+  class Writer
+  {
+  public:
+    explicit Writer(std::string context)
+      : context(std::move(context))
+    {}
+
+    [[noreturn]] void fail(const std::string &what) const;
+    hid_t check(const hid_t id, const std::string &what) const
+    {
+      if (id < 0)
+        fail(what);
+      return id;
+    }
+    void check_status(const herr_t status, const std::string &what) const
+    {
+      if (status < 0)
+        fail(what);
+    }
+
+    /// Attributes of @p object; an existing attribute of the name is replaced.
+    /// Strings are variable-length UTF-8 (h5py reads them as str).
+    void string_attribute(hid_t object, const std::string &name, const std::string &value) const;
+    void int_attribute(hid_t object, const std::string &name, int value) const;
+    void double_attribute(hid_t object, const std::string &name, double value) const;
+    /// 1D (empty: a null dataspace) or, with @p rows > 0, rows x columns
+    /// (values row by row).
+    void double_array_attribute(hid_t object, const std::string &name,
+                                const std::vector<double> &values, unsigned int rows = 0,
+                                unsigned int columns = 0) const;
+    /// The attributes "unit" and "description" of a dataset.
+    void describe(hid_t object, const std::string &unit, const std::string &description) const;
+
+    const std::string &name() const { return context; }
+
+  private:
+    std::string context;
+    void write_attribute(hid_t object, const std::string &name, hid_t file_type,
+                         hid_t memory_type, hid_t space, const void *data) const;
+  };
+
+  /// A new, empty HDF5 file that lives in memory only; @p track_times false
+  /// leaves modification times out of the object headers (same data, same
+  /// bytes). Throws std::runtime_error naming @p context.
+  Handle create_memory_file(const std::string &context, bool track_times = true);
+
+  /// The bytes of a file made by create_memory_file() as it would be on
+  /// disk (flushed first). Throws std::runtime_error naming @p context.
+  std::vector<char> file_image(hid_t file, const std::string &context);
+
+  /// The size in bytes of that image, without copying it.
+  std::size_t file_image_size(hid_t file, const std::string &context);
 } // namespace cdea::hdf5

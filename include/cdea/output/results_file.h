@@ -1,11 +1,13 @@
 #pragma once
-// HDF5 results file of one run (plain HDF5 C API, no deal.II).
+// The HDF5 results file of one run, written so that results survive kills,
+// full disks, re-runs and concurrent runs (plain HDF5 C API, no deal.II).
 //
 // Layout (all lengths in mm, stresses in kPa, voltages in kV, fields in MV/m,
 // masses in g; every dataset carries string attributes `unit` and `description`):
 //
 //   /                       attributes: parameters (prm text), code_version,
-//                           n_rings (int), and any extra string attributes
+//                           n_rings (int), run_status (how the run ended),
+//                           and any extra string attributes
 //   /summary/               one row per converged step (1D chunked, unlimited;
 //                           steps x n_rings where marked [rings])
 //       stage (int: 0 pre-stretch, 1 load, 2 voltage), load_factor,
@@ -22,9 +24,13 @@
 //     attributes: stage (int), load_factor, voltage_kV (double[n_rings]),
 //                 displacement_mm
 //
-// The file is flushed after every append(), write_onset() and
-// set_summary_attribute(), so a process killed between two calls leaves a
-// readable file holding every earlier step.
+// How it reaches the disk (doc/usage.md, "What survives what"): the file is
+// built in memory. Every call is first appended to the journal
+// <file>.journal; at most about once a second (CDEA_CHECKPOINT_SECONDS) the
+// whole file is written to <stem>.partial.h5 by write-then-rename; finish()
+// writes <file> the same way and removes the journal, the checkpoint and the
+// lock <file>.lock. Until then an older <file> is not touched. A killed run
+// leaves the journal, which recover_results() turns into a file.
 
 #include <cdea/output/records.h>
 
@@ -38,19 +44,22 @@ namespace cdea
   class ResultsFile
   {
   public:
-    /// Creates (or truncates) the file at @p path, creating its parent
-    /// directory if missing, and writes the root attributes and the empty
-    /// /summary (with onset_found = 0) and /steps groups. Throws
-    /// std::runtime_error naming the path and the reason on failure and
-    /// std::invalid_argument if n_rings == 0 or an extra attribute name is
-    /// empty or reserved (parameters, code_version, n_rings).
+    /// Starts the results of a run for @p path: creates the parent directory
+    /// if missing, takes the lock, saves the journal of an earlier killed run
+    /// onto the same path as a file of its own (see notes()), and starts the
+    /// journal. Writes nothing at @p path. Throws OutputError (safe_files.h)
+    /// naming the path and the reason if the output cannot be written or
+    /// another process writes it (directories it created are removed again),
+    /// and std::invalid_argument if n_rings == 0 or an extra attribute name
+    /// is empty or reserved (parameters, code_version, n_rings, run_status).
     ResultsFile(const std::string &path,
                 const std::string &parameters_text,
                 unsigned int       n_rings,
                 const std::vector<std::pair<std::string, std::string>>
                   &extra_root_attributes = {});
 
-    /// Closes every HDF5 object and the file; never throws.
+    /// finish("ended without finishing") if finish() was not called; never
+    /// throws.
     ~ResultsFile();
 
     ResultsFile(const ResultsFile &)            = delete;
@@ -58,16 +67,18 @@ namespace cdea
     ResultsFile(ResultsFile &&) noexcept;
     ResultsFile &operator=(ResultsFile &&) noexcept;
 
-    /// Adds one row to /summary and the group /steps/NNNNNN, then flushes.
+    /// Adds one row to /summary and the group /steps/NNNNNN.
     /// @p extra_columns are further /summary datasets (double, written as
     /// given; the name carries the unit, e.g. "volume_mm3"). A column first
     /// seen now is NaN for earlier rows; a known column left out now is NaN
     /// in this row.
-    /// Throws std::invalid_argument (before writing anything) if
+    /// Throws std::invalid_argument (before recording anything) if
     /// summary.voltages or summary.s2_ring_inner do not have n_rings entries,
     /// if the field vectors differ in length, or if an extra column name is
-    /// empty, contains '/', repeats, or is one of the standard column names;
-    /// std::runtime_error if HDF5 fails.
+    /// empty, contains '/', repeats, or is one of the standard column names.
+    /// Throws OutputError if the step cannot be recorded (the journal or a
+    /// checkpoint cannot be written) or the output directory has vanished:
+    /// the run should stop and finish().
     void append(const StepSummary &summary,
                 const StepFields  &fields,
                 const std::vector<std::pair<std::string, double>> &extra_columns = {});
@@ -80,13 +91,12 @@ namespace cdea
                          const std::string &description);
 
     /// (Over)writes the /summary attributes onset_found, onset_voltage_kV and
-    /// onset_radius_mm (NaN when not found), then flushes. Throws
-    /// std::invalid_argument if onset.found and onset.voltages does not have
-    /// n_rings entries.
+    /// onset_radius_mm (NaN when not found). Throws std::invalid_argument if
+    /// onset.found and onset.voltages does not have n_rings entries.
     void write_onset(const OnsetRecord &onset);
 
     /// (Over)writes a 1D double attribute of /summary (written as given, no
-    /// unit conversion: put the unit in the name), then flushes.
+    /// unit conversion: put the unit in the name).
     void set_summary_attribute(const std::string         &name,
                                const std::vector<double> &values);
 
@@ -97,13 +107,57 @@ namespace cdea
                                unsigned int               rows,
                                unsigned int               columns);
 
+    /// What finish() did.
+    struct Finish
+    {
+      bool         written = false; ///< a file holds steps_written steps
+      std::string  file;            ///< where they are (path, or elsewhere)
+      unsigned int steps_written = 0;
+      /// Lines for the user: where the results went, what was lost and why.
+      std::vector<std::string> messages;
+    };
+
+    /// Ends the run's output: sets the root attribute run_status to
+    /// @p status and writes the file at path() (written whole, then renamed
+    /// onto any older file). If the output directory vanished it is created
+    /// again; if the file does not fit (disk full, file size limit), the
+    /// leading steps that fit are written and the journal is kept. Then the
+    /// journal, checkpoint and lock go. Never throws; calls after the first
+    /// do nothing.
+    Finish finish(const std::string &status);
+
+    /// Lines for the user from the start (an earlier run's journal saved).
+    const std::vector<std::string> &notes() const;
+
     /// Number of steps appended so far (= rows of /summary).
     unsigned int n_steps() const;
     unsigned int n_rings() const;
     const std::string &path() const;
+    std::string checkpoint_path() const;
+    std::string journal_path() const;
+
+    /// Checkpoints written so far and the wall time they took (s).
+    unsigned int checkpoints() const;
+    double       checkpoint_seconds() const;
 
   private:
     struct Impl;
     std::unique_ptr<Impl> impl;
   };
+
+  /// What recover_results() did.
+  struct Recovery
+  {
+    bool         found = false; ///< there was a journal
+    std::string  file;          ///< where the rebuilt file was written ("" if none)
+    unsigned int steps = 0;
+    std::string  message;       ///< one line for the user
+  };
+
+  /// Rebuilds the results of a killed run that was writing @p path from its
+  /// journal. The file goes to @p path if nothing is there and
+  /// @p into_path_if_free, else to a free "<stem>.recovered[-N].h5" beside
+  /// it; the journal and checkpoint are then removed. The caller must hold
+  /// the lock of @p path. Throws OutputError if it cannot be written.
+  Recovery recover_results(const std::string &path, bool into_path_if_free);
 } // namespace cdea

@@ -1,0 +1,51 @@
+#pragma once
+// How a run reacts to signals, and errors turned into one line for the user.
+
+#include <exception>
+#include <stdexcept>
+#include <string>
+
+namespace cdea
+{
+  /// For the lifetime of the object SIGINT, SIGTERM and SIGHUP only ask the
+  /// run to stop: it stops after its current step and finishes its results
+  /// file. A second such signal ends the process at once, as without the
+  /// object (the journal keeps the steps; doc/usage.md). A signal that was
+  /// ignored when the object was made (nohup) stays ignored.
+  class StopOnSignals
+  {
+  public:
+    StopOnSignals();
+    ~StopOnSignals();
+    StopOnSignals(const StopOnSignals &)            = delete;
+    StopOnSignals &operator=(const StopOnSignals &) = delete;
+
+    /// The signal that asked to stop, or 0.
+    static int requested();
+  };
+
+  /// Thrown at a step boundary after a stop was requested.
+  class RunInterrupted : public std::runtime_error
+  {
+  public:
+    explicit RunInterrupted(int signal);
+    int signal;
+  };
+
+  /// "SIGINT", "SIGTERM", ...
+  std::string signal_name(int signal);
+
+  /// SIGPIPE and SIGXFSZ ignored for the whole process: output to a closed
+  /// pipe (`cdea run ... | head`) fails quietly and the run goes on writing
+  /// its file; a write past the file size limit fails with EFBIG, which the
+  /// results file handles, instead of killing the process.
+  void ignore_output_signals();
+
+  /// @p text on one line: every run of blanks, tabs and newlines becomes
+  /// one blank (deal.II's messages span several indented lines).
+  std::string fold_whitespace(const std::string &text);
+
+  /// The message of @p e on one line, without deal.II's stack trace and
+  /// source location.
+  std::string one_line_message(const std::exception &e);
+} // namespace cdea

@@ -1,0 +1,75 @@
+#pragma once
+// The append-only journal of a results file, "<file>.journal": one record per
+// call that changes the file (its start, every step, onset, attributes, column
+// descriptions), each written with a single write() before the step is
+// printed. A process killed at any moment leaves a journal whose complete
+// records replay into the file it was building; a record cut short by the
+// kill fails its length or CRC-32 check and is dropped with everything after
+// it. Records are in the machine's byte order (the journal is read back on
+// the machine that wrote it, by `cdea recover` or the next run).
+
+#include <cdea/output/records.h>
+#include <cdea/output/results_document.h>
+
+#include <climits>
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace cdea
+{
+  class JournalWriter
+  {
+  public:
+    JournalWriter() = default;
+    ~JournalWriter();
+    JournalWriter(const JournalWriter &)            = delete;
+    JournalWriter &operator=(const JournalWriter &) = delete;
+
+    /// Creates (truncates) @p path and writes the first record. Throws
+    /// OutputError naming the path.
+    void open(const std::string &path, const std::string &parameters_text, unsigned int n_rings,
+              const std::vector<std::pair<std::string, std::string>> &extra_root_attributes);
+
+    /// One record each; throw OutputError (with the system's reason) if the
+    /// record cannot be written whole, after cutting the journal back to its
+    /// last complete record.
+    void describe_column(const std::string &name, const std::string &unit,
+                         const std::string &description);
+    void append(const StepSummary &summary, const StepFields &fields,
+                const std::vector<std::pair<std::string, double>> &extra_columns);
+    void onset(const OnsetRecord &onset);
+    void summary_attribute(const std::string &name, const std::vector<double> &values,
+                           unsigned int rows, unsigned int columns);
+
+    void        close() noexcept;
+    std::size_t size() const { return bytes; }
+
+  private:
+    int         fd    = -1;
+    std::size_t bytes = 0;
+    std::string file;
+    void        write_record(unsigned char type, const std::string &payload);
+  };
+
+  /// A results document rebuilt from a journal.
+  struct JournalReplay
+  {
+    std::unique_ptr<ResultsDocument> document; ///< null if not even the first record is complete
+    unsigned int steps          = 0; ///< steps in the document
+    unsigned int journal_steps  = 0; ///< complete step records in the journal
+    std::size_t  dropped_bytes  = 0; ///< of an incomplete last record
+  };
+
+  /// Replays the journal at @p path into a new document named @p name, with
+  /// at most @p max_steps steps (the records after the last step kept are
+  /// left out too). Throws OutputError if the journal cannot be read.
+  JournalReplay replay_journal(const std::string &path, const std::string &name,
+                               unsigned int max_steps = UINT_MAX);
+
+  /// The most leading steps of the journal whose file image takes at most
+  /// @p max_bytes (for writing what fits after a write failure).
+  unsigned int journal_steps_within(const std::string &path, std::size_t max_bytes);
+} // namespace cdea

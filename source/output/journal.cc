@@ -1,0 +1,451 @@
+#include <cdea/output/journal.h>
+#include <cdea/output/safe_files.h>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <array>
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+namespace cdea
+{
+  namespace
+  {
+    constexpr char magic[8] = {'C', 'D', 'E', 'A', 'J', 'N', 'L', '1'};
+
+    enum RecordType : unsigned char
+    {
+      start_record             = 1,
+      describe_column_record   = 2,
+      append_record            = 3,
+      onset_record             = 4,
+      summary_attribute_record = 5
+    };
+
+    // CRC-32 (IEEE 802.3, reflected polynomial 0xEDB88320).
+    std::uint32_t crc32(const char *data, const std::size_t n, std::uint32_t crc = 0)
+    {
+      static const std::array<std::uint32_t, 256> table = [] {
+        std::array<std::uint32_t, 256> t{};
+        for (std::uint32_t i = 0; i < 256; ++i)
+          {
+            std::uint32_t c = i;
+            for (int k = 0; k < 8; ++k)
+              c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+            t[i] = c;
+          }
+        return t;
+      }();
+      crc = ~crc;
+      for (std::size_t i = 0; i < n; ++i)
+        crc = table[(crc ^ static_cast<unsigned char>(data[i])) & 0xFFu] ^ (crc >> 8);
+      return ~crc;
+    }
+
+    class Encoder
+    {
+    public:
+      std::string bytes;
+      template <typename T>
+      void raw(const T &x)
+      {
+        bytes.append(reinterpret_cast<const char *>(&x), sizeof(T));
+      }
+      void u32(const std::uint32_t x) { raw(x); }
+      void f64(const double x) { raw(x); }
+      void str(const std::string &s)
+      {
+        u64(s.size());
+        bytes += s;
+      }
+      void u64(const std::uint64_t x) { raw(x); }
+      void doubles(const std::vector<double> &v)
+      {
+        u64(v.size());
+        bytes.append(reinterpret_cast<const char *>(v.data()), v.size() * sizeof(double));
+      }
+      void ints(const std::vector<int> &v)
+      {
+        u64(v.size());
+        bytes.append(reinterpret_cast<const char *>(v.data()), v.size() * sizeof(int));
+      }
+    };
+
+    /// Reads what Encoder wrote; a payload that ends early throws (it
+    /// cannot, after the CRC check, unless the journal is of another build).
+    class Decoder
+    {
+    public:
+      Decoder(const char *p, const std::size_t n)
+        : p(p)
+        , end(p + n)
+      {}
+      template <typename T>
+      T raw()
+      {
+        need(sizeof(T));
+        T x;
+        std::memcpy(&x, p, sizeof(T));
+        p += sizeof(T);
+        return x;
+      }
+      std::uint32_t u32() { return raw<std::uint32_t>(); }
+      std::uint64_t u64() { return raw<std::uint64_t>(); }
+      double        f64() { return raw<double>(); }
+      std::string   str()
+      {
+        const std::size_t n = u64();
+        need(n);
+        std::string s(p, n);
+        p += n;
+        return s;
+      }
+      std::vector<double> doubles()
+      {
+        const std::size_t n = u64();
+        need(n * sizeof(double));
+        std::vector<double> v(n);
+        std::memcpy(v.data(), p, n * sizeof(double));
+        p += n * sizeof(double);
+        return v;
+      }
+      std::vector<int> ints()
+      {
+        const std::size_t n = u64();
+        need(n * sizeof(int));
+        std::vector<int> v(n);
+        std::memcpy(v.data(), p, n * sizeof(int));
+        p += n * sizeof(int);
+        return v;
+      }
+
+    private:
+      const char *p, *end;
+      void        need(const std::size_t n) const
+      {
+        if (std::size_t(end - p) < n)
+          throw OutputError("journal record shorter than its content");
+      }
+    };
+
+    struct Record
+    {
+      unsigned char type;
+      std::string   payload;
+    };
+
+    struct Parsed
+    {
+      std::vector<Record> records;
+      std::size_t         dropped_bytes = 0;
+    };
+
+    Parsed read_records(const std::string &path)
+    {
+      std::ifstream in(path, std::ios::binary);
+      if (!in)
+        throw OutputError("cannot read the journal " + path + ": " + std::strerror(errno));
+      const std::string data((std::istreambuf_iterator<char>(in)),
+                             std::istreambuf_iterator<char>());
+      Parsed parsed;
+      if (data.size() < sizeof(magic) || std::memcmp(data.data(), magic, sizeof(magic)) != 0)
+        {
+          if (data.size() >= sizeof(magic) ||
+              std::memcmp(data.data(), magic, data.size()) != 0)
+            throw OutputError(path + " is not a cdea journal");
+          parsed.dropped_bytes = data.size();
+          return parsed;
+        }
+      constexpr std::size_t frame = 1 + 4 + 4; // type, length, CRC
+      std::size_t           at    = sizeof(magic);
+      while (data.size() - at >= frame)
+        {
+          std::uint32_t length = 0, crc = 0;
+          std::memcpy(&length, data.data() + at + 1, 4);
+          if (data.size() - at - frame < length)
+            break;
+          std::memcpy(&crc, data.data() + at + 5 + length, 4);
+          if (crc32(data.data() + at, 5 + length) != crc)
+            break;
+          parsed.records.push_back(
+            {static_cast<unsigned char>(data[at]), data.substr(at + 5, length)});
+          at += frame + length;
+        }
+      parsed.dropped_bytes = data.size() - at;
+      return parsed;
+    }
+
+    StepSummary decode_summary(Decoder &in)
+    {
+      StepSummary s;
+      s.stage             = static_cast<Stage>(in.raw<std::int32_t>());
+      s.load_factor       = in.f64();
+      s.voltages          = in.doubles();
+      s.mass              = in.f64();
+      s.displacement      = in.f64();
+      s.stroke            = in.f64();
+      s.s2_min            = in.f64();
+      s.s2_ring_inner     = in.doubles();
+      s.wrinkled          = in.raw<std::uint8_t>() != 0;
+      s.newton_iterations = in.u32();
+      return s;
+    }
+
+    void encode_summary(Encoder &out, const StepSummary &s)
+    {
+      out.raw(static_cast<std::int32_t>(s.stage));
+      out.f64(s.load_factor);
+      out.doubles(s.voltages);
+      out.f64(s.mass);
+      out.f64(s.displacement);
+      out.f64(s.stroke);
+      out.f64(s.s2_min);
+      out.doubles(s.s2_ring_inner);
+      out.raw(static_cast<std::uint8_t>(s.wrinkled));
+      out.u32(s.newton_iterations);
+    }
+
+    // The fields in a fixed order.
+    std::vector<double> StepFields::*const field_members[] = {
+      &StepFields::R,       &StepFields::r,       &StepFields::z,  &StepFields::theta,
+      &StepFields::lambda1, &StepFields::lambda2, &StepFields::s1, &StepFields::s2,
+      &StepFields::E,       &StepFields::Phi};
+  } // namespace
+
+  JournalWriter::~JournalWriter() { close(); }
+
+  void JournalWriter::close() noexcept
+  {
+    if (fd >= 0)
+      ::close(fd);
+    fd = -1;
+  }
+
+  void JournalWriter::open(const std::string &path, const std::string &parameters_text,
+                           const unsigned int n_rings,
+                           const std::vector<std::pair<std::string, std::string>> &extra)
+  {
+    close();
+    file = path;
+    fd   = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0)
+      throw OutputError("cannot create the journal " + path + ": " + std::strerror(errno));
+    bytes = 0;
+    Encoder out;
+    out.bytes.assign(magic, sizeof(magic));
+    // A journal cut inside the magic or the first record holds no step: it
+    // replays into nothing.
+    Encoder start;
+    start.str(parameters_text);
+    start.u32(n_rings);
+    start.u64(extra.size());
+    for (const auto &[name, value] : extra)
+      {
+        start.str(name);
+        start.str(value);
+      }
+    const ssize_t n = ::write(fd, out.bytes.data(), out.bytes.size());
+    if (n != ssize_t(out.bytes.size()))
+      throw OutputError("cannot write the journal " + path + ": " +
+                        std::strerror(n < 0 ? errno : ENOSPC));
+    bytes = out.bytes.size();
+    write_record(start_record, start.bytes);
+  }
+
+  void JournalWriter::write_record(const unsigned char type, const std::string &payload)
+  {
+    if (fd < 0)
+      throw OutputError("the journal " + file + " is not open");
+    std::string record(1, static_cast<char>(type));
+    const std::uint32_t length = static_cast<std::uint32_t>(payload.size());
+    record.append(reinterpret_cast<const char *>(&length), 4);
+    record += payload;
+    const std::uint32_t crc = crc32(record.data(), record.size());
+    record.append(reinterpret_cast<const char *>(&crc), 4);
+    std::size_t done = 0;
+    while (done < record.size())
+      {
+        const ssize_t n = ::pwrite(fd, record.data() + done, record.size() - done,
+                                   off_t(bytes + done));
+        if (n < 0 && errno == EINTR)
+          continue;
+        if (n <= 0)
+          {
+            const int error = n < 0 ? errno : ENOSPC;
+            if (::ftruncate(fd, off_t(bytes)) != 0)
+              {
+                // The torn record fails its check when read back.
+              }
+            throw OutputError("cannot write the journal " + file + ": " + std::strerror(error));
+          }
+        done += std::size_t(n);
+      }
+    bytes += record.size();
+  }
+
+  void JournalWriter::describe_column(const std::string &name, const std::string &unit,
+                                      const std::string &description)
+  {
+    Encoder out;
+    out.str(name);
+    out.str(unit);
+    out.str(description);
+    write_record(describe_column_record, out.bytes);
+  }
+
+  void JournalWriter::append(const StepSummary &summary, const StepFields &fields,
+                             const std::vector<std::pair<std::string, double>> &extra_columns)
+  {
+    Encoder out;
+    encode_summary(out, summary);
+    for (const auto member : field_members)
+      out.doubles(fields.*member);
+    out.ints(fields.ring);
+    out.u64(extra_columns.size());
+    for (const auto &[name, value] : extra_columns)
+      {
+        out.str(name);
+        out.f64(value);
+      }
+    write_record(append_record, out.bytes);
+  }
+
+  void JournalWriter::onset(const OnsetRecord &onset)
+  {
+    Encoder out;
+    out.raw(static_cast<std::uint8_t>(onset.found));
+    out.doubles(onset.voltages);
+    out.f64(onset.radius);
+    out.f64(onset.load_factor);
+    write_record(onset_record, out.bytes);
+  }
+
+  void JournalWriter::summary_attribute(const std::string &name, const std::vector<double> &values,
+                                        const unsigned int rows, const unsigned int columns)
+  {
+    Encoder out;
+    out.str(name);
+    out.doubles(values);
+    out.u32(rows);
+    out.u32(columns);
+    write_record(summary_attribute_record, out.bytes);
+  }
+
+  JournalReplay replay_journal(const std::string &path, const std::string &name,
+                               const unsigned int max_steps)
+  {
+    const Parsed  parsed = read_records(path);
+    JournalReplay replay;
+    replay.dropped_bytes = parsed.dropped_bytes;
+    for (const Record &r : parsed.records)
+      replay.journal_steps += r.type == append_record;
+    if (parsed.records.empty() || parsed.records.front().type != start_record)
+      return replay;
+    try
+      {
+        for (const Record &r : parsed.records)
+          {
+            Decoder in(r.payload.data(), r.payload.size());
+            switch (r.type)
+              {
+                case start_record:
+                  {
+                    const std::string text    = in.str();
+                    const unsigned    n_rings = in.u32();
+                    const std::size_t n_extra = in.u64();
+                    std::vector<std::pair<std::string, std::string>> extra;
+                    for (std::size_t i = 0; i < n_extra; ++i)
+                      {
+                        std::string key = in.str();
+                        extra.emplace_back(std::move(key), in.str());
+                      }
+                    replay.document =
+                      std::make_unique<ResultsDocument>(name, text, n_rings, extra);
+                    break;
+                  }
+                case describe_column_record:
+                  {
+                    const std::string column = in.str();
+                    const std::string unit   = in.str();
+                    replay.document->describe_column(column, unit, in.str());
+                    break;
+                  }
+                case append_record:
+                  {
+                    if (replay.steps >= max_steps)
+                      return replay;
+                    const StepSummary summary = decode_summary(in);
+                    StepFields        fields;
+                    for (const auto member : field_members)
+                      fields.*member = in.doubles();
+                    fields.ring = in.ints();
+                    std::vector<std::pair<std::string, double>> extra;
+                    const std::size_t n = in.u64();
+                    for (std::size_t i = 0; i < n; ++i)
+                      {
+                        std::string column = in.str();
+                        extra.emplace_back(std::move(column), in.f64());
+                      }
+                    replay.document->append(summary, fields, extra);
+                    ++replay.steps;
+                    break;
+                  }
+                case onset_record:
+                  {
+                    OnsetRecord onset;
+                    onset.found       = in.raw<std::uint8_t>() != 0;
+                    onset.voltages    = in.doubles();
+                    onset.radius      = in.f64();
+                    onset.load_factor = in.f64();
+                    replay.document->write_onset(onset);
+                    break;
+                  }
+                case summary_attribute_record:
+                  {
+                    const std::string         attribute = in.str();
+                    const std::vector<double> values    = in.doubles();
+                    const unsigned int        rows      = in.u32();
+                    replay.document->set_summary_attribute(attribute, values, rows, in.u32());
+                    break;
+                  }
+                default:
+                  throw OutputError("unknown record type " + std::to_string(int(r.type)));
+              }
+          }
+      }
+    catch (const std::invalid_argument &e)
+      {
+        throw OutputError("the journal " + path + " holds an invalid record: " + e.what());
+      }
+    catch (const OutputError &e)
+      {
+        throw OutputError("the journal " + path + " cannot be replayed: " + e.what());
+      }
+    return replay;
+  }
+
+  unsigned int journal_steps_within(const std::string &path, const std::size_t max_bytes)
+  {
+    // Image sizes grow with the steps: bisect on the number of steps.
+    const JournalReplay all = replay_journal(path, path);
+    if (!all.document)
+      return 0;
+    if (all.document->image_size() <= max_bytes)
+      return all.steps;
+    unsigned int lo = 0, hi = all.steps; // image(lo) fits (or lo = 0), image(hi) does not
+    while (hi - lo > 1)
+      {
+        const unsigned int mid = lo + (hi - lo) / 2;
+        const auto         r   = replay_journal(path, path, mid);
+        if (r.document->image_size() <= max_bytes)
+          lo = mid;
+        else
+          hi = mid;
+      }
+    return lo;
+  }
+} // namespace cdea
