@@ -1,0 +1,185 @@
+// The input of `cdea sweep`: the value lists and the subsection Sweep, turned
+// into SweepSettings; the rows of each MPI rank.
+
+#include <cdea/app/commands.h>
+#include <cdea/app/parameters.h>
+#include <cdea/app/sweep.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace cdea
+{
+  namespace
+  {
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+    std::string format(const double x)
+    {
+      std::ostringstream o;
+      o << x;
+      return o.str();
+    }
+
+    std::string trim(const std::string &s)
+    {
+      const auto first = s.find_first_not_of(" \t");
+      if (first == std::string::npos)
+        return "";
+      const auto last = s.find_last_not_of(" \t");
+      return s.substr(first, last - first + 1);
+    }
+
+    /// Round to 12 decimals: generated values equal the typed ones.
+    double round12(const double x) { return std::round(x * 1e12) / 1e12; }
+
+    constexpr std::size_t max_values = 100000;
+  } // namespace
+
+  std::vector<double> expand_value_list(const std::string &text, const std::string &name)
+  {
+    // Items: numbers, or the marker "..." (represented by NaN in `items`).
+    std::vector<double>      items;
+    std::vector<std::string> tokens;
+    std::stringstream        stream(text);
+    std::string              item;
+    while (std::getline(stream, item, ','))
+      {
+        const std::string token = trim(item);
+        if (token.empty())
+          throw InputError(name + ": empty entry in '" + text +
+                           "' (expected numbers separated by ',', and '...')");
+        if (token == "...")
+          {
+            items.push_back(nan);
+            tokens.push_back(token);
+            continue;
+          }
+        items.push_back(parse_number(token, name, text));
+        tokens.push_back(token);
+      }
+    if (!text.empty() && text.back() == ',')
+      throw InputError(name + ": empty entry at the end of '" + text + "'");
+    if (items.empty())
+      throw InputError(name + ": no value given (expected numbers separated by ',')");
+
+    std::vector<double> values;
+    for (std::size_t i = 0; i < items.size(); ++i)
+      {
+        if (!std::isnan(items[i]))
+          {
+            values.push_back(items[i]);
+            continue;
+          }
+        if (i < 2 || std::isnan(items[i - 1]) || std::isnan(items[i - 2]) ||
+            i + 1 >= items.size() || std::isnan(items[i + 1]))
+          throw InputError(name + ": '...' needs two numbers before it and one after it (in '" +
+                           text + "')");
+        const double a = items[i - 2], b = items[i - 1], c = items[i + 1];
+        const double d = b - a;
+        if (d == 0.)
+          throw InputError(name + ": the two values before '...' are equal (" + format(a) +
+                           "), so they define no sequence");
+        const double steps = (c - b) / d;
+        const double k_end = std::round(steps);
+        if (k_end < 1.)
+          throw InputError(name + ": " + tokens[i + 1] + " after '...' does not continue " +
+                           tokens[i - 2] + ", " + tokens[i - 1] + " (step " + format(d) + ")");
+        if (std::abs(steps - k_end) > 1e-6)
+          throw InputError(name + ": " + tokens[i + 1] + " after '...' is not on the sequence " +
+                           tokens[i - 2] + ", " + tokens[i - 1] + ", ... (step " + format(d) +
+                           ")");
+        if (k_end > double(max_values))
+          throw InputError(name + ": '" + text + "' has more than " +
+                           std::to_string(max_values) + " values");
+        for (long k = 1; k < long(k_end); ++k)
+          values.push_back(round12(b + k * d));
+      }
+    if (values.size() > max_values)
+      throw InputError(name + ": '" + text + "' has more than " + std::to_string(max_values) +
+                       " values");
+    return values;
+  }
+
+  SweepSettings sweep_settings(const Parameters &p, const Scene &scene)
+  {
+    // The lines are defined by the sign of the plain law's hoop stress, and
+    // the map is of the actuator under its dead load alone.
+    if (p.wrinkling.model != WrinklingModel::check)
+      throw InputError("Wrinkling/Model = " + to_string(p.wrinkling.model) +
+                       " is not supported by cdea sweep: the red and blue lines are defined "
+                       "by the hoop stress of the plain membrane law (use check)");
+    if (p.reservoir.water_load)
+      throw InputError("Reservoir/Water load = true is not supported by cdea sweep: the maps "
+                       "are of the actuator under its dead load alone (use false)");
+    SweepSettings s;
+    const double  b_over_a = scene.frame_radius / scene.disk_radius;
+
+    const std::string edges_name = "Sweep/Ring edge values (r/a)";
+    s.ring_edge_values           = expand_value_list(p.sweep.ring_edge_values_text, edges_name);
+    for (const double v : s.ring_edge_values)
+      if (!(v > 1. && v < b_over_a))
+        throw InputError(edges_name + ": " + format(v) + " is not inside (1, " +
+                         format(b_over_a) + "): r_v/a must lie strictly between the disk edge "
+                         "and the frame (b/a)");
+    for (std::size_t i = 1; i < s.ring_edge_values.size(); ++i)
+      if (!(s.ring_edge_values[i] > s.ring_edge_values[i - 1]))
+        throw InputError(edges_name + ": values must increase strictly, but " +
+                         format(s.ring_edge_values[i]) + " follows " +
+                         format(s.ring_edge_values[i - 1]));
+
+    const std::string inner_name = "Sweep/Inner voltage (kV)";
+    if (!(p.sweep.inner_voltage_kV > 0.) || !std::isfinite(p.sweep.inner_voltage_kV))
+      throw InputError(inner_name + " must be positive (the stroke increase is relative to "
+                       "the stroke with both rings at it), got " +
+                       format(p.sweep.inner_voltage_kV));
+    s.inner_voltage = std::round(p.sweep.inner_voltage_kV * 1e12) / 1e9;
+
+    const std::string range_name = "Sweep/Outer voltage range (kV)";
+    const auto        range = parse_number_list(p.sweep.outer_voltage_range_text, range_name);
+    if (range.size() != 3)
+      throw InputError(range_name + ": expected three numbers 'from, to, step', got '" +
+                       p.sweep.outer_voltage_range_text + "'");
+    const double from = range[0], to = range[1], step = range[2];
+    if (from < 0.)
+      throw InputError(range_name + ": voltages must not be negative, got from = " +
+                       format(from));
+    if (!(step > 0.))
+      throw InputError(range_name + ": the step must be positive, got " + format(step));
+    if (to < from)
+      throw InputError(range_name + ": the range is empty: 'to' (" + format(to) +
+                       ") is below 'from' (" + format(from) + ")");
+    const double count = std::floor((to - from) / step + 1e-9) + 1.;
+    if (count > double(max_values))
+      throw InputError(range_name + ": " + format(count) + " voltages are too many (at most " +
+                       std::to_string(max_values) + ")");
+    s.outer_from = std::round(from * 1e12) / 1e9;
+    s.outer_to   = std::round(to * 1e12) / 1e9;
+    s.outer_step = std::round(step * 1e12) / 1e9;
+    for (long k = 0; k < long(count); ++k)
+      s.outer_voltages.push_back(std::round((from + k * step) * 1e12) / 1e9);
+    // Land exactly on 'to' when it is on the grid.
+    if (std::abs(from + (count - 1.) * step - to) <= 1e-9 * step)
+      s.outer_voltages.back() = s.outer_to;
+    return s;
+  }
+
+  SteppingSettings sweep_stepping_settings(const Parameters &p)
+  {
+    SteppingSettings s = stepping_settings(p);
+    s.arc_length       = false;
+    s.stability_check  = false;
+    s.breakdown_field  = 0.;
+    return s;
+  }
+
+  std::vector<std::size_t> rows_of_rank(const std::size_t n_rows, const unsigned int rank,
+                                        const unsigned int size)
+  {
+    std::vector<std::size_t> rows;
+    for (std::size_t i = rank; i < n_rows; i += std::max(1u, size))
+      rows.push_back(i);
+    return rows;
+  }
+} // namespace cdea
