@@ -7,7 +7,7 @@
 //  C. the red and blue lines against independent root solves: plain bisection
 //     to 1 mV with the shooting model (another solver, another root finder)
 //     and with the FE model of the same discretization (which isolates the
-//     0.1 V tolerance of the sweep's Brent search);
+//     0.1 V tolerance of the sweep's bracketed root search);
 //  D. the row distribution over ranks.
 // The serial-vs-mpirun identity and the command's bad-input handling are in
 // tests/sweep_mpi.sh and tests/sweep_bad_input.sh.
@@ -335,7 +335,7 @@ int main(int argc, char **argv)
           MembraneModel fe(scene, fe_discretization(p), newton_settings(p));
           const Root    fe_root = bisect_line(fe, scene, 5e3, f, 1e-3);
           check_close(line.outer_voltage, fe_root.voltage, settings.line_tolerance,
-                      name + ": sweep (Brent, 0.1 V) vs FE bisection (1 mV), V");
+                      name + ": sweep (bracketed root, 0.1 V) vs FE bisection (1 mV), V");
           check(line.bracket_width <= settings.line_tolerance * 1.000001,
                 name + ": final bracket " + std::to_string(line.bracket_width) + " V <= 0.1 V");
           // Another solver and another root finder.
