@@ -1,6 +1,7 @@
 // cdea: command-line entry point.
 #include <cdea/app/commands.h>
 #include <cdea/app/mpi_session.h>
+#include <cdea/app/optimize.h>
 #include <cdea/app/sweep.h>
 #include <cdea/app/parameters.h>
 
@@ -37,6 +38,8 @@ int main(int argc, char **argv)
         return cdea::compare(args[1]);
       if (command == "sweep" && args.size() == 2)
         return cdea::run_sweep(args[1]);
+      if (command == "optimize" && args.size() == 2)
+        return cdea::run_optimize(args[1], mpi);
       std::cerr << "cdea: unknown command or wrong number of arguments: '" << command
                 << "'\n\n"
                 << cdea::usage();

@@ -172,15 +172,7 @@ namespace cdea
     const SweepSettings &s = map.settings;
     const std::size_t    n = map.rows.size(), m = s.outer_voltages.size();
 
-    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-    if (!parent.empty())
-      {
-        std::error_code error;
-        std::filesystem::create_directories(parent, error);
-        if (error)
-          throw std::runtime_error("cannot write '" + path + "': cannot create directory '" +
-                                   parent.string() + "': " + error.message());
-      }
+    hdf5::create_parent_directory(path);
 
     ErrorPrintingOff quiet;
     Writer           w(path);
