@@ -216,9 +216,11 @@ namespace cdea
       }
     const std::string h5_path  = p.results_path("_optimum");
     const std::string prm_path = p.output.directory + "/" + p.output.base_name + "_optimum.prm";
+    // The output must be writable before anything is computed (rank 0
+    // writes; the others follow its verdict).
+    int writable = 1;
     if (root)
       {
-        // The output must be writable before anything is computed.
         std::error_code error;
         std::filesystem::create_directories(p.output.directory, error);
         std::ofstream probe(prm_path + ".probe");
@@ -226,11 +228,15 @@ namespace cdea
           {
             std::cerr << "cdea: cannot write results into '" << p.output.directory
                       << "' (Output/Directory)" << (error ? ": " + error.message() : "") << '\n';
-            return exit_input_error;
+            writable = 0;
           }
         probe.close();
         std::filesystem::remove(prm_path + ".probe", error);
       }
+    if (mpi.size() > 1)
+      MPI_Bcast(&writable, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    if (!writable)
+      return exit_input_error;
 
     const auto start_time = std::chrono::steady_clock::now();
     const auto free       = s.free_parameters();
