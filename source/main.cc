@@ -1,5 +1,6 @@
 // cdea: command-line entry point.
 #include <cdea/app/commands.h>
+#include <cdea/app/fit.h>
 #include <cdea/app/mpi_session.h>
 #include <cdea/app/optimize.h>
 #include <cdea/app/sweep.h>
@@ -40,6 +41,8 @@ int main(int argc, char **argv)
         return cdea::run_sweep(args[1]);
       if (command == "optimize" && args.size() == 2)
         return cdea::run_optimize(args[1], mpi);
+      if (command == "fit" && args.size() == 3)
+        return cdea::run_fit(args[1], args[2]);
       std::cerr << "cdea: unknown command or wrong number of arguments: '" << command
                 << "'\n\n"
                 << cdea::usage();

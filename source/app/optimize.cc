@@ -28,7 +28,7 @@ namespace cdea
     /// Scaled constraints above this at the optimum are reported as active.
     constexpr double active_tolerance = 1e-6;
     /// Relative first-order (KKT) residual of a converged optimum.
-    constexpr double optimality_tolerance = 1e-4;
+    constexpr double optimality_tolerance = 1e-3;
 
     /// The k-th number of the van der Corput sequence in @p base.
     double radical_inverse(unsigned int k, const unsigned int base)
@@ -373,6 +373,11 @@ namespace cdea
         status = opt.last_optimize_result();
       }
     result.status = nlopt_status(status);
+    // NLopt's answer is the best layout if it is feasible (the largest
+    // objective seen may belong to a layout just inside the tolerance).
+    evaluate_at(y.data());
+    if (evaluation.ok && c.size() && c.maxCoeff() <= feasibility_tolerance)
+      best = evaluated;
 
     // The best layout, confirmed from zero voltage as `cdea run` would reach it.
     result.best    = best;

@@ -1,8 +1,6 @@
 // What `cdea optimize` writes: <Base name>_optimum.h5 and the parameter file
 // <Base name>_optimum.prm that `cdea run` replays.
 
-#include <deal.II/base/parameter_handler.h>
-
 #include <cdea/app/optimize.h>
 #include <cdea/app/parameters.h>
 #include <cdea/output/hdf5_writer.h>
@@ -21,19 +19,11 @@ namespace cdea
 {
   namespace
   {
-    /// 17 significant digits: the double read back is the one written.
-    std::string exact(const double x)
-    {
-      char buffer[40];
-      std::snprintf(buffer, sizeof buffer, "%.17g", x);
-      return buffer;
-    }
-
     std::string joined(const std::vector<double> &values, const double factor)
     {
       std::string s;
       for (std::size_t i = 0; i < values.size(); ++i)
-        s += (i ? ", " : "") + exact(values[i] * factor);
+        s += (i ? ", " : "") + exact_number(values[i] * factor);
       return s;
     }
 
@@ -49,12 +39,16 @@ namespace cdea
   unsigned int best_start(const std::vector<StartResult> &starts)
   {
     unsigned int best = 0;
-    const auto   better = [](const StartResult &a, const StartResult &b) {
-      const bool fa = a.at_best.ok && a.worst_constraint <= 1e-6;
-      const bool fb = b.at_best.ok && b.worst_constraint <= 1e-6;
-      if (fa != fb)
-        return fa;
-      if (fa)
+    // Converged before feasible before the rest; then the objective (or,
+    // among infeasible ones, the smaller violation).
+    const auto rank = [](const StartResult &r) {
+      const bool feasible = r.at_best.ok && r.worst_constraint <= 1e-6;
+      return r.converged ? 2 : feasible ? 1 : 0;
+    };
+    const auto better = [&](const StartResult &a, const StartResult &b) {
+      if (rank(a) != rank(b))
+        return rank(a) > rank(b);
+      if (rank(a) > 0)
         return a.objective > b.objective;
       if (a.at_best.ok != b.at_best.ok)
         return a.at_best.ok;
@@ -210,32 +204,13 @@ namespace cdea
   void write_replay_parameters(const std::string &prm_file, const std::string &path,
                                const Layout &layout, const std::string &base_name)
   {
-    dealii::ParameterHandler prm;
-    Parameters::declare(prm);
-    prm.parse_input(prm_file, "", false, false);
-    prm.enter_subsection("Electrodes");
-    prm.set("Ring edges (r/a)", joined(layout.edges, 1.));
-    prm.set("Voltage path (kV)", joined(layout.voltages, 1e-3));
-    prm.leave_subsection();
-    prm.enter_subsection("Solver");
-    prm.set("Continuation", "load stepping");
-    prm.leave_subsection();
-    prm.enter_subsection("Output");
-    prm.set("Base name", base_name + "_optimum_run");
-    prm.leave_subsection();
-
-    const std::string temporary = path + ".tmp";
-    {
-      std::ofstream out(temporary);
-      out << "# Written by cdea optimize: `cdea run` on this file ramps the voltages of the\n"
-             "# optimum layout proportionally from zero and reaches the optimum state.\n";
-      prm.print_parameters(out, dealii::ParameterHandler::ShortText);
-      if (!out)
-        throw std::runtime_error("cannot write '" + path + "'");
-    }
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
-    if (error)
-      throw std::runtime_error("cannot write '" + path + "': " + error.message());
+    write_changed_parameters(
+      prm_file, path,
+      {{"Electrodes", "Ring edges (r/a)", joined(layout.edges, 1.)},
+       {"Electrodes", "Voltage path (kV)", joined(layout.voltages, 1e-3)},
+       {"Solver", "Continuation", "load stepping"},
+       {"Output", "Base name", base_name + "_optimum_run"}},
+      "# Written by cdea optimize: `cdea run` on this file ramps the voltages of the\n"
+      "# optimum layout proportionally from zero and reaches the optimum state.\n");
   }
 } // namespace cdea

@@ -1,6 +1,12 @@
 #include <deal.II/base/parameter_handler.h>
 
+#include <cdea/app/parameters.h>
 #include <cdea/app/parameters_design.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
 
 namespace cdea
 {
@@ -18,6 +24,40 @@ namespace cdea
   std::string to_string(const DesignAlgorithm choice)
   {
     return choice == DesignAlgorithm::mma ? "MMA" : "SLSQP";
+  }
+
+  std::string exact_number(const double value)
+  {
+    char buffer[40];
+    std::snprintf(buffer, sizeof buffer, "%.17g", value);
+    return buffer;
+  }
+
+  void write_changed_parameters(const std::string &prm_file, const std::string &path,
+                                const std::vector<ParameterChange> &changes,
+                                const std::string                  &comment)
+  {
+    ParameterHandler prm;
+    Parameters::declare(prm);
+    prm.parse_input(prm_file, "", false, false);
+    for (const ParameterChange &c : changes)
+      {
+        prm.enter_subsection(c.subsection);
+        prm.set(c.entry, c.value);
+        prm.leave_subsection();
+      }
+    const std::string temporary = path + ".tmp";
+    {
+      std::ofstream out(temporary);
+      out << comment;
+      prm.print_parameters(out, ParameterHandler::ShortText);
+      if (!out)
+        throw std::runtime_error("cannot write '" + path + "'");
+    }
+    std::error_code error;
+    std::filesystem::rename(temporary, path, error);
+    if (error)
+      throw std::runtime_error("cannot write '" + path + "': " + error.message());
   }
 
   namespace parameters

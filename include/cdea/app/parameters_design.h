@@ -5,6 +5,7 @@
 // parameter in every message.
 
 #include <string>
+#include <vector>
 
 namespace dealii
 {
@@ -29,6 +30,22 @@ namespace cdea
 
   std::string to_string(DesignObjective choice);
   std::string to_string(DesignAlgorithm choice);
+
+  /// One entry of a parameter file to set: subsection, entry, value.
+  struct ParameterChange
+  {
+    std::string subsection, entry, value;
+  };
+
+  /// Write @p prm_file with @p changes applied to @p path (all entries, as
+  /// deal.II prints them; replaced only once complete), after the comment
+  /// lines @p comment. Throws std::runtime_error naming @p path.
+  void write_changed_parameters(const std::string &prm_file, const std::string &path,
+                                const std::vector<ParameterChange> &changes,
+                                const std::string                  &comment);
+
+  /// A number with 17 significant digits (read back as the same double).
+  std::string exact_number(double value);
 
   namespace parameters
   {
