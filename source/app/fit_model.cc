@@ -250,16 +250,21 @@ namespace cdea
             m.set_state(guess);
             ok = m.solve(guess.load).converged;
             ++solves_;
-            ok = ok && m.min_tangent_eigenvalue() > 0.;
           }
-        if (!ok && !ramp(i, message))
-          return false;
-        const StateSensitivity at(m, free);
-        d[i] = at.displacement();
+        std::unique_ptr<StateSensitivity> at;
+        if (ok)
+          at = std::make_unique<StateSensitivity>(m, free);
+        if (!ok || !at->stable())
+          {
+            if (!ramp(i, message))
+              return false;
+            at = std::make_unique<StateSensitivity>(m, free);
+          }
+        d[i] = at->displacement();
         if (jacobian)
-          jacobian->row(i) = at.d_displacement().transpose();
+          jacobian->row(i) = at->d_displacement().transpose();
         states[i]            = m.state();
-        state_derivatives[i] = at.state_derivative();
+        state_derivatives[i] = at->state_derivative();
       }
     state_values = values;
     return true;

@@ -97,11 +97,10 @@ namespace cdea
     e.d_stroke         = e.d_stroke - last->d_reference_displacement;
     e.volume_change    = e.volume_change - last->reference_volume;
     e.d_volume_change  = e.d_volume_change - last->d_reference_volume;
-    if (!(e.min_eigenvalue > 0.))
+    if (!e.stable)
       {
         e.ok      = false;
-        e.message = "the final state is unstable (smallest tangent eigenvalue " +
-                    std::to_string(e.min_eigenvalue) + " N/m)";
+        e.message = "the final state is unstable (its tangent is not positive definite)";
       }
     return e;
   }
@@ -110,7 +109,7 @@ namespace cdea
   {
     /// The loaded state's own part of an evaluation (stroke and volume
     /// change still absolute: the reference is subtracted in result()).
-    LayoutEvaluation loaded_part(MembraneModel &m, const StateSensitivity &s)
+    LayoutEvaluation loaded_part(const StateSensitivity &s)
     {
       LayoutEvaluation e;
       e.ok              = true;
@@ -120,7 +119,7 @@ namespace cdea
       e.volume_change   = s.volume();
       e.d_volume_change = s.d_volume();
       e.points          = s.points();
-      e.min_eigenvalue  = m.min_tangent_eigenvalue();
+      e.stable          = s.stable();
       return e;
     }
   } // namespace
@@ -149,8 +148,9 @@ namespace cdea
     const StateSensitivity at(m, free);
     reached->loaded     = m.state();
     reached->d_loaded   = at.state_derivative();
-    reached->evaluation = loaded_part(m, at);
-    last                = std::move(reached);
+    reached->evaluation                = loaded_part(at);
+    reached->evaluation.min_eigenvalue = m.min_tangent_eigenvalue();
+    last                               = std::move(reached);
     return result();
   }
 
@@ -210,20 +210,20 @@ namespace cdea
             guess.load = load_of(layout, true);
             ok         = solve(m, guess.load, guess);
           }
+        std::unique_ptr<StateSensitivity> at;
+        if (ok)
+          at = std::make_unique<StateSensitivity>(m, free);
         // A step that lands beyond a fold (on an unstable branch) fails too.
-        if (ok && !(m.min_tangent_eigenvalue() > 0.))
-          ok = false;
-        if (!ok)
+        if (!ok || !at->stable())
           {
             if (++cutbacks > max_cutbacks)
               return false;
             h *= 0.5;
             continue;
           }
-        const StateSensitivity at(m, free);
         reached->loaded     = m.state();
-        reached->d_loaded   = at.state_derivative();
-        reached->evaluation = loaded_part(m, at);
+        reached->d_loaded   = at->state_derivative();
+        reached->evaluation = loaded_part(*at);
         last                = std::move(reached);
         s                   = next;
         h                   = std::min(2. * h, full);

@@ -373,11 +373,6 @@ namespace cdea
         status = opt.last_optimize_result();
       }
     result.status = nlopt_status(status);
-    // NLopt's answer is the best layout if it is feasible (the largest
-    // objective seen may belong to a layout just inside the tolerance).
-    evaluate_at(y.data());
-    if (evaluation.ok && c.size() && c.maxCoeff() <= feasibility_tolerance)
-      best = evaluated;
 
     // The best layout, confirmed from zero voltage as `cdea run` would reach it.
     result.best    = best;

@@ -83,7 +83,10 @@ namespace cdea
     double          displacement  = 0.; ///< m
     double          stroke        = 0.; ///< m
     double          volume_change = 0.; ///< m^3
-    double          min_eigenvalue = 0.; ///< N/m, of the final state
+    bool            stable = false;     ///< tangent positive definite (loads held)
+    /// N/m, smallest eigenvalue of the final state's tangent (computed on
+    /// the ramps from zero only; NaN otherwise).
+    double          min_eigenvalue = std::numeric_limits<double>::quiet_NaN();
     Eigen::VectorXd d_stroke, d_volume_change;
     PointValues     points; ///< s2 and E with their gradients
   };

@@ -100,6 +100,11 @@ namespace cdea
     /// s2 and E at every point of the state, with their gradients.
     PointValues points() const;
 
+    /// Whether the tangent of the state (loads held) is positive definite,
+    /// i.e. the state is stable: a Cholesky factorization of the band
+    /// (O(n bw^2), far cheaper than its smallest eigenvalue).
+    bool stable() const;
+
     /// Gradient of an output J by the adjoint method, from dJ/dx (dof order)
     /// and the explicit dJ/dp at fixed x.
     Eigen::VectorXd adjoint(const Eigen::VectorXd &dJ_dx,
