@@ -363,11 +363,11 @@ namespace cdea
       {
         std::cout << "residuals (model - measured):\n" << std::setw(6) << "point" << std::setw(24)
                   << "voltages (kV)" << std::setw(16) << "measured (mm)" << std::setw(16)
-                  << "model (mm)" << std::setw(14) << "residual (mm)\n";
+                  << "model (mm)" << std::setw(16) << "residual (mm)" << '\n';
         for (std::size_t i = 0; i < data.size(); ++i)
           std::cout << std::setw(6) << i + 1 << std::setw(24) << format_kV(data.voltages[i], 5)
                     << std::setw(16) << format_fixed(data.displacement[i] * 1e3, 6) << std::setw(16)
-                    << format_fixed(r.fitted[i] * 1e3, 6) << std::setw(14)
+                    << format_fixed(r.fitted[i] * 1e3, 6) << std::setw(16)
                     << format_number(r.residuals[i] * 1e3, 3) << '\n';
         std::cout << "weighted rms residual " << format_number(r.rms * 1e3, 4)
                   << " mm, condition number of the scaled Jacobian "
