@@ -18,7 +18,7 @@
 //     (2.0, 5.5 kV).
 //
 //   build/benchmarks/bench_partitioning [--max-rings N] [--starts S] [--field MV/m]
-//        [--graded M,M,...] [--rv-step D] [--out DIR]      (defaults 8 4 59 16,32,64 0.05)
+//        [--graded M,M,...] [--rv-step D] [--out DIR]   (defaults 8 4 59 16,32,64,128 0.05)
 //
 // Tables on stdout; CSV files in DIR (default results/optimization) for
 // postprocess/plot_optimization.py.
@@ -313,7 +313,7 @@ int main(int argc, char **argv)
   const MpiSession         mpi(argc, argv);
   unsigned int             max_rings = 8, starts = 4;
   double                   field_MV = 59., rv_step = 0.05;
-  std::vector<unsigned int> graded_M{16, 32, 64};
+  std::vector<unsigned int> graded_M{16, 32, 64, 128};
   std::string              out_dir = "results/optimization";
   for (int k = 1; k + 1 < argc; k += 2)
     {

@@ -12,8 +12,10 @@ cd "$(dirname "$0")/.."
 build_dir="${BUILD_DIR:-build}"
 jobs="${JOBS:-$(nproc)}"
 
+# libnlopt-cxx-dev: the layout optimizer (cdea optimize); libceres-dev: the
+# least-squares calibration (cdea fit).
 packages=(cmake g++ make libdeal.ii-dev libeigen3-dev libhdf5-dev hdf5-tools
-          openmpi-bin python3 python3-h5py python3-matplotlib)
+          libnlopt-cxx-dev libceres-dev openmpi-bin python3 python3-h5py python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

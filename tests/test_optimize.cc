@@ -5,7 +5,8 @@
 //     variables equals the same layout ramped from zero, and its gradients
 //     (stroke, volume change, s2, E) agree with central differences of ramps;
 //  C. one ring, voltage free: the optimum is the wrinkling onset of a normal
-//     run (s2 = 0 at the disk edge, located by the load stepper);
+//     run (s2 = 0 at the disk edge, located by the load stepper), for the
+//     stroke and for the enclosed volume change;
 //  D. the paper's special case (two rings, inner 5 kV): the optimum lies on
 //     the red line of `cdea sweep` (the row at the optimal edge) and no
 //     neighbouring row's red line gives more;
@@ -190,6 +191,15 @@ int main(int argc, char **argv)
                 "optimum voltage = onset voltage (V)");
     check(r.active.size() == 1 && r.active[0].find("inner edge of ring 1") != std::string::npos,
           "the active constraint is s2 at the disk edge");
+
+    // The pump's objective: the enclosed volume grows with the voltage too.
+    s.objective = DesignObjective::volume_change;
+    const StartResult v = optimize_from(base, s, evaluator, 0, starting_layouts(s)[0]);
+    check(v.converged, "volume change: converged: " + v.status);
+    check_close(v.best.voltages[0], run.onset.voltages[0], 2e-3,
+                "volume change: optimum voltage = onset voltage (V)");
+    check_close(v.objective, v.at_best.volume_change * 1e6, 1e-12,
+                "volume change objective in units of 1000 mm^3");
   }
 
   std::cout << "D. The paper's case: inner ring at 5 kV, edge and outer voltage free\n";

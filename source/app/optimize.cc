@@ -356,21 +356,84 @@ namespace cdea
     opt.set_xtol_rel(s.tolerance);
     opt.set_xtol_abs(std::vector<double>(n, s.tolerance));
     opt.set_ftol_rel(s.tolerance);
-    opt.set_maxeval(s.max_evaluations);
 
+    // First-order optimality of an evaluated layout in the scaled
+    // variables: grad f + A lambda = 0 over the active constraints and
+    // bounds with lambda >= 0.
+    struct Assessment
+    {
+      double                   objective = nan, worst = nan, optimality = nan;
+      bool                     signs = true, converged = false;
+      std::vector<std::string> active;
+    };
+    const auto assess = [&](const Layout &l, const LayoutEvaluation &e) {
+      Assessment               a;
+      std::vector<std::string> names;
+      if (!e.ok)
+        return a;
+      constraints(s, base, l, e, c, dc, &names);
+      a.objective              = (stroke ? e.stroke : e.volume_change) / scale;
+      a.worst                  = c.size() ? c.maxCoeff() : 0.;
+      const Eigen::VectorXd &d = stroke ? e.d_stroke : e.d_volume_change;
+      Eigen::VectorXd        g(n);
+      for (unsigned int j = 0; j < n; ++j)
+        g[j] = -d[j] * (upper[j] - lower[j]) / scale;
+      std::vector<Eigen::VectorXd> columns;
+      for (int i = 0; i < c.size(); ++i)
+        if (c[i] > -active_tolerance)
+          {
+            a.active.push_back(names[i]);
+            columns.push_back(dc.row(i).transpose().cwiseProduct(
+              Eigen::Map<const Eigen::VectorXd>(upper.data(), n) -
+              Eigen::Map<const Eigen::VectorXd>(lower.data(), n)));
+          }
+      const auto values = l.free_values(free);
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          const double t = (values[j] - lower[j]) / (upper[j] - lower[j]);
+          if (t < 1e-9 || t > 1. - 1e-9)
+            {
+              a.active.push_back(free[j].name() + " at its " + (t < 0.5 ? "lower" : "upper") +
+                                 " bound");
+              columns.push_back((t < 0.5 ? -1. : 1.) * Eigen::VectorXd::Unit(n, j));
+            }
+        }
+      Eigen::MatrixXd A(n, columns.size());
+      for (std::size_t k = 0; k < columns.size(); ++k)
+        A.col(k) = columns[k];
+      const Eigen::VectorXd lambda = columns.empty() ?
+                                       Eigen::VectorXd() :
+                                       Eigen::VectorXd(A.completeOrthogonalDecomposition().solve(-g));
+      const Eigen::VectorXd residual = columns.empty() ? g : Eigen::VectorXd(g + A * lambda);
+      a.optimality = residual.norm() / std::max(g.norm(), 1e-300);
+      a.signs      = lambda.size() == 0 || lambda.minCoeff() >= -1e-6 * g.norm();
+      a.converged  = a.worst <= feasibility_tolerance && a.optimality <= optimality_tolerance &&
+                    a.signs;
+      return a;
+    };
+
+    // SLSQP's merit function can stall a little outside the feasible set
+    // (its penalty approaching the multipliers); a fresh start from the best
+    // layout (new quasi-Newton matrix and penalty) then finishes the job.
     std::vector<double> y(n);
-    const auto          values0 = layout.free_values(free);
-    for (unsigned int j = 0; j < n; ++j)
-      y[j] = std::clamp((values0[j] - lower[j]) / (upper[j] - lower[j]), 0., 1.);
-    double      f = 0.;
-    nlopt::result status;
-    try
+    nlopt::result       status = nlopt::SUCCESS;
+    for (unsigned int round = 0; round < 3 && result.evaluations < s.max_evaluations; ++round)
       {
-        status = opt.optimize(y, f);
-      }
-    catch (const std::exception &)
-      {
-        status = opt.last_optimize_result();
+        const auto values0 = best.free_values(free);
+        for (unsigned int j = 0; j < n; ++j)
+          y[j] = std::clamp((values0[j] - lower[j]) / (upper[j] - lower[j]), 0., 1.);
+        opt.set_maxeval(int(s.max_evaluations - result.evaluations));
+        double f = 0.;
+        try
+          {
+            status = opt.optimize(y, f);
+          }
+        catch (const std::exception &)
+          {
+            status = opt.last_optimize_result();
+          }
+        if (assess(best, evaluator.evaluate(best)).converged)
+          break;
       }
     result.status = nlopt_status(status);
 
@@ -385,49 +448,12 @@ namespace cdea
       }
     else
       {
-        std::vector<std::string> names;
-        constraints(s, base, best, result.at_best, c, dc, &names);
-        result.objective =
-          (stroke ? result.at_best.stroke : result.at_best.volume_change) / scale;
-        result.worst_constraint = c.size() ? c.maxCoeff() : 0.;
-
-        // First-order optimality in the scaled variables: grad f + A lambda = 0
-        // over the active constraints and bounds, lambda >= 0.
-        const Eigen::VectorXd &d = stroke ? result.at_best.d_stroke : result.at_best.d_volume_change;
-        Eigen::VectorXd        g(n);
-        for (unsigned int j = 0; j < n; ++j)
-          g[j] = -d[j] * (upper[j] - lower[j]) / scale;
-        std::vector<Eigen::VectorXd> columns;
-        for (int i = 0; i < c.size(); ++i)
-          if (c[i] > -active_tolerance)
-            {
-              result.active.push_back(names[i]);
-              Eigen::VectorXd a(n);
-              for (unsigned int j = 0; j < n; ++j)
-                a[j] = dc(i, j) * (upper[j] - lower[j]);
-              columns.push_back(a);
-            }
-        const auto values = best.free_values(free);
-        for (unsigned int j = 0; j < n; ++j)
-          {
-            const double t = (values[j] - lower[j]) / (upper[j] - lower[j]);
-            if (t < 1e-9 || t > 1. - 1e-9)
-              {
-                result.active.push_back(free[j].name() + " at its " +
-                                        (t < 0.5 ? "lower" : "upper") + " bound");
-                columns.push_back((t < 0.5 ? -1. : 1.) * Eigen::VectorXd::Unit(n, j));
-              }
-          }
-        Eigen::MatrixXd A(n, columns.size());
-        for (std::size_t k = 0; k < columns.size(); ++k)
-          A.col(k) = columns[k];
-        Eigen::VectorXd lambda =
-          columns.empty() ? Eigen::VectorXd() : Eigen::VectorXd(A.completeOrthogonalDecomposition().solve(-g));
-        const Eigen::VectorXd residual = columns.empty() ? g : Eigen::VectorXd(g + A * lambda);
-        result.optimality = residual.norm() / std::max(g.norm(), 1e-300);
-        const bool signs  = lambda.size() == 0 || lambda.minCoeff() >= -1e-6 * g.norm();
-        result.converged  = result.worst_constraint <= feasibility_tolerance &&
-                           result.optimality <= optimality_tolerance && signs;
+        const Assessment a      = assess(best, result.at_best);
+        result.objective        = a.objective;
+        result.worst_constraint = a.worst;
+        result.optimality       = a.optimality;
+        result.active           = a.active;
+        result.converged        = a.converged;
         const std::string nlopt = "NLopt: " + result.status;
         if (result.converged)
           result.status = "optimal (first-order residual " + format_number(result.optimality, 2) +
@@ -437,7 +463,7 @@ namespace cdea
                              std::string("NOT converged: no feasible layout found") :
                              "NOT converged: first-order residual " +
                                format_number(result.optimality, 2) +
-                               (signs ? "" : ", a constraint pushes the wrong way")) +
+                               (a.signs ? "" : ", a constraint pushes the wrong way")) +
                           " (" + nlopt + ")";
       }
     result.solves            = evaluator.solves() - solves0;
