@@ -345,31 +345,40 @@ int main(int argc, char **argv)
   const double field = field_MV * 1e6;
   std::cout << std::setprecision(7);
 
+  // The continuous graded limit first: part 1 measures the distance to it.
+  const ConeLimit cone      = cone_limit();
+  const double    zero_disp = zero_voltage_displacement(base, FeDiscretization(),
+                                                     NewtonSettings(), SteppingSettings());
+  const double    cone_stroke = (cone.displacement - zero_disp) * 1e3;
+
   // 1. The N-curve.
-  std::cout << "1. N rings, all edges and voltages free (" << starts << " starts)\n";
+  std::cout << "1. N rings, all edges and voltages free (" << starts << " starts); 'below':\n"
+               "   the straight-cone limit of part 2 minus the stroke\n";
   std::ofstream rings_csv(out_dir + "/rings.csv");
   rings_csv << "field_limit_MV_per_m,N,stroke_mm,gain_percent,converged_starts,evaluations,"
                "solves,seconds,edges_over_a,voltages_kV\n";
   std::vector<double> best_voltages, best_edges;
+  double              one_ring[2] = {none, none}; // N = 1 without and with the field limit
   for (const double limit : {std::numeric_limits<double>::infinity(), field})
     {
       double one = none;
       std::cout << (std::isinf(limit) ? "  no field limit\n" :
                                         "  E <= " + std::to_string(int(field_MV)) + " MV/m\n")
-                << "   N  stroke (mm)  gain (%)  conv  evals  solves  time (s)  edges | kV\n";
+                << "   N  stroke (mm)  gain (%)  below (mm)  conv  evals  solves  time (s)  edges | kV\n";
       for (unsigned int N = 1; N <= max_rings; ++N)
         {
           const RingsResult r = optimize_rings(N, limit, N == 1 ? 1 : starts);
           const double      stroke = r.best.at_best.stroke * 1e3;
           if (N == 1)
-            one = stroke;
+            one = one_ring[std::isinf(limit) ? 0 : 1] = stroke;
           if (std::isinf(limit))
             {
               best_edges    = r.best.best.edges;
               best_voltages = r.best.best.voltages;
             }
           std::cout << std::setw(4) << N << std::setw(13) << stroke << std::setw(10)
-                    << std::setprecision(4) << 100. * (stroke / one - 1.) << std::setw(6)
+                    << std::setprecision(4) << 100. * (stroke / one - 1.) << std::setw(12)
+                    << (std::isinf(limit) ? cone_stroke - stroke : none) << std::setw(6)
                     << r.converged << std::setw(7) << r.evaluations << std::setw(8) << r.solves
                     << std::setw(10) << std::setprecision(3) << r.seconds << "  "
                     << join(r.best.best.edges, 1., 4) << " | "
@@ -416,19 +425,19 @@ int main(int argc, char **argv)
           const std::size_t n = strokes.size();
           const double      a = strokes[n - 3], b = strokes[n - 2], c = strokes[n - 1];
           const double      p = std::log2((b - a) / (c - b));
-          std::cout << "  extrapolated (observed order " << p << "): "
-                    << c + (c - b) / (std::pow(2., p) - 1.) << " mm\n";
+          const double extrapolated = c + (c - b) / (std::pow(2., p) - 1.);
+          std::cout << "  extrapolated (observed order " << p << "): " << extrapolated
+                    << " mm, gain over one ring "
+                    << 100. * (extrapolated / one_ring[std::isinf(limit) ? 0 : 1] - 1.) << " %\n";
         }
       if (std::isinf(limit))
         {
-          const ConeLimit cone = cone_limit();
-          const double    zero = zero_voltage_displacement(base, FeDiscretization(),
-                                                        NewtonSettings(), SteppingSettings());
           std::cout << "  continuous profile (straight cone, s2 = 0 everywhere): stroke "
-                    << (cone.displacement - zero) * 1e3 << " mm, cone angle "
-                    << cone.theta * 180. / M_PI << " deg, largest voltage needed "
+                    << cone_stroke << " mm, cone angle "
+                    << cone.theta * 180. / M_PI << " deg, gain over one ring "
+                    << 100. * (cone_stroke / one_ring[0] - 1.) << " %, largest voltage needed "
                     << cone.max_voltage * 1e-3 << " kV" << (cone.ok ? "" : " (FAILED)") << '\n';
-          graded_csv << "0,inf," << (cone.displacement - zero) * 1e3 << ",0,0,nan,"
+          graded_csv << "0,inf," << cone_stroke << ",0,0,nan,"
                      << cone.max_voltage * 1e-3 << '\n';
         }
       if (!graded_M.empty() && std::isinf(limit))

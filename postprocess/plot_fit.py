@@ -89,11 +89,13 @@ def main():
         label = name.split(" (")[0]
         lines.append(f"{label} = {v:.6g} ± {e:.2g} {unit}".rstrip())
     lines.append(f"rms residual {rms:.3g} mm")
+    for warning in filter(None, warnings.split("\n")):
+        lines.append("warning: " + (warning[:70] + " ..." if len(warning) > 70 else warning))
     ax.text(0.02, 0.97, "\n".join(lines), transform=ax.transAxes, va="top", fontsize=9,
             bbox=dict(facecolor="white", alpha=0.8, edgecolor="0.8"))
     ax.set_ylabel("displacement (mm)")
     ax.legend(loc="lower right")
-    ax.set_title("(a) data and fitted model" + (" — WARNING: see the file" if warnings else ""))
+    ax.set_title("(a) data and fitted model")
     ax_r.axhline(0., color="0.6", lw=0.8)
     ax_r.plot(x, fitted - measured, "o", color="C3")
     ax_r.set_xlabel(f"voltage of ring {ring} (kV)")

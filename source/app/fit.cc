@@ -335,7 +335,7 @@ namespace cdea
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     std::cout << "\n" << (r.converged ? "Converged" : "NOT converged") << ": " << r.status << "\n"
-              << std::left << std::setw(16) << "parameter" << std::right << std::setw(16)
+              << std::left << std::setw(22) << "parameter" << std::right << std::setw(16)
               << "start" << std::setw(16) << "fitted" << std::setw(16) << "std. error"
               << std::setw(10) << "rel." << '\n';
     for (std::size_t j = 0; j < settings.free.size(); ++j)
@@ -343,7 +343,7 @@ namespace cdea
         const auto [v0, unit] = shown(settings.free[j], r.initial[j]);
         const double v        = shown(settings.free[j], r.values[j]).first;
         const double e        = shown(settings.free[j], r.standard_errors[j]).first;
-        std::cout << std::left << std::setw(16) << label(settings.free[j]) + (unit.empty() ? "" : " (" + unit + ")")
+        std::cout << std::left << std::setw(22) << label(settings.free[j]) + (unit.empty() ? "" : " (" + unit + ")")
                   << std::right << std::setw(16) << format_number(v0, 8) << std::setw(16)
                   << format_number(v, 8) << std::setw(16) << format_number(e, 3) << std::setw(10)
                   << format_number(e / std::abs(v), 2) << '\n';
