@@ -6,7 +6,7 @@
 //     (stroke, volume change, s2, E) agree with central differences of ramps;
 //  C. one ring, voltage free: the optimum is the wrinkling onset of a normal
 //     run (s2 = 0 at the disk edge, located by the load stepper), for the
-//     stroke and for the enclosed volume change;
+//     stroke and for the enclosed volume change, by SLSQP and by MMA;
 //  D. the paper's special case (two rings, inner 5 kV): the optimum lies on
 //     the red line of `cdea sweep` (the row at the optimal edge) and no
 //     neighbouring row's red line gives more;
@@ -200,6 +200,14 @@ int main(int argc, char **argv)
                 "volume change: optimum voltage = onset voltage (V)");
     check_close(v.objective, v.at_best.volume_change * 1e6, 1e-12,
                 "volume change objective in units of 1000 mm^3");
+
+    // The other algorithm.
+    s.objective = DesignObjective::stroke;
+    s.algorithm = DesignAlgorithm::mma;
+    const StartResult w = optimize_from(base, s, evaluator, 0, starting_layouts(s)[0]);
+    check(w.converged, "MMA: converged: " + w.status);
+    check_close(w.best.voltages[0], run.onset.voltages[0], 2e-3,
+                "MMA: optimum voltage = onset voltage (V)");
   }
 
   std::cout << "D. The paper's case: inner ring at 5 kV, edge and outer voltage free\n";

@@ -11,8 +11,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
-#include <iostream>
 #include <sstream>
 
 namespace cdea
@@ -295,8 +293,7 @@ namespace cdea
       else
         {
           row.worst_constraint = nan;
-          if (std::getenv("CDEA_DEBUG"))
-            std::cerr << "evaluation failed: " << evaluation.message << "\n";
+          row.message          = evaluation.message;
         }
       for (unsigned int j = 0; j < n; ++j)
         row.free_values.push_back(evaluated.free_values(free)[j] *

@@ -96,6 +96,7 @@ namespace cdea
           write_value(o, h.objective);
           write_value(o, h.worst_constraint);
           write_value(o, h.free_values);
+          write_value(o, h.message);
         }
       return o.str();
     }
@@ -144,6 +145,7 @@ namespace cdea
           h.objective        = read_double(in);
           h.worst_constraint = read_double(in);
           h.free_values      = read_doubles(in);
+          h.message          = read_string(in);
         }
       if (!in)
         throw std::runtime_error("cdea optimize: garbled start result in the gather");
@@ -276,6 +278,8 @@ namespace cdea
                     << std::setw(12) << format_number(h.worst_constraint, 3) << " ";
           for (const double v : h.free_values)
             std::cout << ' ' << format_fixed(v, 4);
+          if (!h.message.empty())
+            std::cout << "  (" << h.message << ")";
           std::cout << std::endl;
         };
         mine.push_back(optimize_from(base, s, evaluator, k, layouts[k], progress));

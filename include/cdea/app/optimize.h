@@ -136,6 +136,7 @@ namespace cdea
     double              objective = 0.;        ///< mm or mm^3; NaN if the layout failed
     double              worst_constraint = 0.; ///< largest scaled violation (<= 0: feasible)
     std::vector<double> free_values;           ///< kV and r/a
+    std::string         message;               ///< why the layout failed (empty if not)
   };
 
   /// The result of one start.
