@@ -241,12 +241,8 @@ namespace cdea
         bool ok = false;
         if (continued)
           {
-            ModelState            guess = states[i];
-            const Eigen::VectorXd x =
-              Eigen::Map<const Eigen::VectorXd>(guess.unknowns.data(), guess.unknowns.size()) +
-              state_derivatives[i] * dp;
-            guess.unknowns.assign(x.data(), x.data() + x.size());
-            guess.load = load_of(i);
+            ModelState guess = predicted_state(states[i], state_derivatives[i], dp);
+            guess.load       = load_of(i);
             m.set_state(guess);
             ok = m.solve(guess.load).converged;
             ++solves_;

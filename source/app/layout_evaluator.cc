@@ -191,23 +191,15 @@ namespace cdea
         bool ok                      = true;
         if (edges_changed)
           {
-            ModelState guess = last->reference;
-            const Eigen::VectorXd x =
-              Eigen::Map<const Eigen::VectorXd>(guess.unknowns.data(), guess.unknowns.size()) +
-              last->d_reference * dp;
-            guess.unknowns.assign(x.data(), x.data() + x.size());
-            ok = solve(m, load_of(layout, false), guess);
+            ok = solve(m, load_of(layout, false),
+                       predicted_state(last->reference, last->d_reference, dp));
             if (ok)
               reached->set_reference(m, free);
           }
         if (ok)
           {
-            ModelState            guess = last->loaded;
-            const Eigen::VectorXd x =
-              Eigen::Map<const Eigen::VectorXd>(guess.unknowns.data(), guess.unknowns.size()) +
-              last->d_loaded * dp;
-            guess.unknowns.assign(x.data(), x.data() + x.size());
-            guess.load = load_of(layout, true);
+            ModelState guess = predicted_state(last->loaded, last->d_loaded, dp);
+            guess.load       = load_of(layout, true);
             ok         = solve(m, guess.load, guess);
           }
         std::unique_ptr<StateSensitivity> at;

@@ -141,6 +141,17 @@ namespace cdea
     }
   } // namespace
 
+  ModelState predicted_state(const ModelState &state, const Eigen::MatrixXd &dx_dp,
+                             const Eigen::VectorXd &dp)
+  {
+    ModelState            guess = state;
+    const Eigen::VectorXd x =
+      Eigen::Map<const Eigen::VectorXd>(state.unknowns.data(), state.unknowns.size()) +
+      dx_dp * dp;
+    guess.unknowns.assign(x.data(), x.data() + x.size());
+    return guess;
+  }
+
   StateSensitivity::StateSensitivity(MembraneModel &model_in, std::vector<SceneParameter> list)
     : model(model_in)
     , parameters_(std::move(list))

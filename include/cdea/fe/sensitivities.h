@@ -22,6 +22,7 @@
 // StateSensitivity.
 
 #include <cdea/scene.h>
+#include <cdea/solver/equilibrium_model.h>
 
 #include <Eigen/Core>
 
@@ -74,6 +75,11 @@ namespace cdea
     Eigen::MatrixXd           d_s2;    ///< points x parameters
     Eigen::MatrixXd           d_field; ///< points x parameters
   };
+
+  /// The tangent predictor of a state after a parameter change @p dp:
+  /// unknowns x + (dx/dp) dp, the load and internal variables of @p state.
+  ModelState predicted_state(const ModelState &state, const Eigen::MatrixXd &dx_dp,
+                             const Eigen::VectorXd &dp);
 
   class StateSensitivity
   {
