@@ -13,9 +13,11 @@ build_dir="${BUILD_DIR:-build}"
 jobs="${JOBS:-$(nproc)}"
 
 # python3-pytest and python3-vtk9: the Python tests, which read the ParaView
-# output back with VTK's XML reader.
+# output back with VTK's XML reader. libnlopt-cxx-dev: the layout optimizer
+# (cdea optimize); libceres-dev: the least-squares calibration (cdea fit).
 packages=(cmake g++ make libdeal.ii-dev libeigen3-dev libhdf5-dev hdf5-tools
-          openmpi-bin python3 python3-h5py python3-matplotlib python3-pytest python3-vtk9)
+          libnlopt-cxx-dev libceres-dev openmpi-bin python3 python3-h5py python3-matplotlib
+          python3-pytest python3-vtk9)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -2,7 +2,9 @@
 #include <deal.II/base/config.h>
 
 #include <cdea/app/commands.h>
+#include <cdea/app/fit.h>
 #include <cdea/app/mpi_session.h>
+#include <cdea/app/optimize.h>
 #include <cdea/app/sweep.h>
 #include <cdea/app/parameters.h>
 #include <cdea/app/run_control.h>
@@ -17,7 +19,7 @@ namespace
   bool is_serial_job(const std::string &command)
   {
     return command == "run" || command == "shoot" || command == "compare" ||
-           command == "recover";
+           command == "recover" || command == "fit";
   }
 } // namespace
 
@@ -25,7 +27,7 @@ int main(int argc, char **argv)
 {
   const cdea::MpiSession mpi(argc, argv);
   const std::vector<std::string> args(argv + 1, argv + argc);
-  // Under an MPI launcher only rank 0 speaks (and, but for sweep, works).
+  // Under an MPI launcher only rank 0 speaks (and, but for sweep and optimize, works).
   const bool root = cdea::mpi::rank() == 0;
   cdea::ignore_output_signals();
   try
@@ -37,15 +39,18 @@ int main(int argc, char **argv)
           return cdea::exit_input_error;
         }
       const std::string &command = args[0];
+      // The commands that use several processes under an MPI launcher.
       if (command == "sweep" && args.size() == 2)
         return cdea::run_sweep(args[1]);
+      if (command == "optimize" && args.size() == 2)
+        return cdea::run_optimize(args[1]);
       if (cdea::mpi::size() > 1 && is_serial_job(command))
         {
           if (root)
             std::cerr << "cdea: '" << command << "' is a serial job, but an MPI launcher "
                       << "started " << cdea::mpi::size() << " processes of it (each would "
                       << "write the same results): run it without mpirun or with -np 1; "
-                      << "'cdea sweep' is the command that uses several processes\n";
+                      << "'cdea sweep' and 'cdea optimize' use several processes\n";
           return cdea::exit_input_error;
         }
       if (!root)
@@ -79,6 +84,8 @@ int main(int argc, char **argv)
         return cdea::compare(args[1]);
       if (command == "recover" && args.size() == 2)
         return cdea::recover(args[1]);
+      if (command == "fit" && args.size() == 3)
+        return cdea::run_fit(args[1], args[2]);
       std::cerr << "cdea: unknown command or wrong number of arguments: '" << command
                 << "'\n\n"
                 << cdea::usage();

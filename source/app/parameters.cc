@@ -342,6 +342,8 @@ namespace cdea
     parameters::Shooting::declare(prm);
     parameters::Sweep::declare(prm);
     parameters::Reservoir::declare(prm);
+    parameters::Optimization::declare(prm);
+    parameters::Calibration::declare(prm);
     parameters::Output::declare(prm);
   }
 
@@ -357,6 +359,8 @@ namespace cdea
     shooting.parse(prm);
     sweep.parse(prm);
     reservoir.parse(prm);
+    optimization.parse(prm);
+    calibration.parse(prm);
     output.parse(prm);
   }
 

@@ -15,6 +15,38 @@ namespace cdea
     local.tangent.resize(n * n);
     local.volume_hessian.resize(n * n);
     local.parameter_residual.resize(layout.size() * n);
+    local.geometry_residual.resize(2 * n);
+
+    // The ring edges are the ends of the rings' first and last cells.
+    ring_edges.assign(n_rings + 1, 0.);
+    for (const MeshCell &cell : mesh.cells)
+      ring_edges[cell.ring + 1] = cell.x0 + cell.h;
+    for (auto c = mesh.cells.rbegin(); c != mesh.cells.rend(); ++c)
+      ring_edges[c->ring] = c->x0;
+    for (const MeshCell &cell : mesh.cells)
+      {
+        const double length = ring_edges[cell.ring + 1] - ring_edges[cell.ring];
+        fraction_x0.push_back((cell.x0 - ring_edges[cell.ring]) / length);
+        fraction_h.push_back(cell.h / length);
+      }
+  }
+
+  CellMotion CellKernel::cell_motion(const unsigned int c, const unsigned int parameter) const
+  {
+    const MeshCell &cell = mesh.cells[c];
+    if (parameter == layout.mesh_scale())
+      return {cell.x0, cell.h};
+    // The outer edge of the cell's ring (if interior) moves x0 by f0 and h
+    // by fh per unit, the inner edge (if interior) by 1 - f0 and -fh.
+    if (parameter > layout.mesh_scale())
+      {
+        const unsigned int edge = parameter - layout.mesh_scale();
+        if (edge == cell.ring + 1 && edge < layout.n_rings)
+          return {fraction_x0[c], fraction_h[c]};
+        if (edge == cell.ring && edge > 0)
+          return {1. - fraction_x0[c], -fraction_h[c]};
+      }
+    return {};
   }
 
   bool CellKernel::assemble(const Eigen::VectorXd &x, unsigned int flags,
@@ -61,7 +93,10 @@ namespace cdea
         if (flags & assemble_tangent)
           std::fill(local.tangent.begin(), local.tangent.end(), 0.);
         if (flags & assemble_parameter_derivatives)
-          std::fill(local.parameter_residual.begin(), local.parameter_residual.end(), 0.);
+          {
+            std::fill(local.parameter_residual.begin(), local.parameter_residual.end(), 0.);
+            std::fill(local.geometry_residual.begin(), local.geometry_residual.end(), 0.);
+          }
         if (flags & assemble_volume)
           {
             std::fill(local.volume_gradient.begin(), local.volume_gradient.end(), 0.);
@@ -69,7 +104,7 @@ namespace cdea
               std::fill(local.volume_hessian.begin(), local.volume_hessian.end(), 0.);
           }
 
-        const CellInput input{c, &mesh.cells[c], local_x.data(), &mesh};
+        const CellInput input{c, &mesh.cells[c], local_x.data(), &mesh, &layout};
         for (const auto &term : terms)
           if (!term->add_cell(input, flags, scratch, local))
             {
@@ -79,6 +114,17 @@ namespace cdea
               if (flags & assemble_residual)
                 system.residual.setConstant(std::numeric_limits<double>::quiet_NaN());
               return false;
+            }
+
+        // Shape parameters: the chain rule through the cell's motion.
+        if (flags & assemble_parameter_derivatives)
+          for (unsigned int p = layout.first_shape_parameter(); p < layout.size(); ++p)
+            {
+              const CellMotion m = cell_motion(c, p);
+              if (m.dx0 != 0. || m.dh != 0.)
+                for (unsigned int i = 0; i < n; ++i)
+                  local.parameter_residual[p * n + i] +=
+                    m.dx0 * local.geometry_residual[i] + m.dh * local.geometry_residual[n + i];
             }
 
         system.energy += local.energy;

@@ -54,7 +54,8 @@ namespace cdea
       request |= law_energy;
     if (first)
       request |= law_stress;
-    if (flags & assemble_tangent)
+    // The shape derivatives need the tangent (the stresses change with the stretches).
+    if (flags & (assemble_tangent | assemble_parameter_derivatives))
       request |= law_tangent;
     if (request == 0)
       return true;
@@ -102,13 +103,7 @@ namespace cdea
           }
         if (flags & assemble_parameter_derivatives)
           {
-            const ParameterLayout layout{static_cast<unsigned int>(voltages.size())};
-            const std::pair<LawParameter, unsigned int> parameters[] = {
-              {LawParameter::voltage, layout.voltage(ring)},
-              {LawParameter::shear_modulus, layout.shear_modulus()},
-              {LawParameter::jlim, layout.jlim()},
-              {LawParameter::permittivity, layout.permittivity()}};
-            for (const auto &[parameter, column] : parameters)
+            for (const auto &[parameter, column] : law_parameter_columns(*in.layout, ring))
               {
                 double        dW = 0.;
                 NominalStress ds{0., 0.};
@@ -118,12 +113,45 @@ namespace cdea
                   out.parameter_residual[column * n + i] +=
                     w * (ds.s1 * s.dl1[i] + ds.s2 * s.dl2[i]);
               }
+            add_geometry_derivative(p, h, w, rule.points[q], law, s, out);
           }
       }
     return true;
   }
 
-  bool DeadLoadTerm::add_cell(const CellInput &in, const unsigned int, CellScratch &,
+  // The residual w (s1 dl1_i + s2 dl2_i) at a point R = x0 + h xi moves with
+  // the cell: with R_x0 = 1, R_h = xi and the nodal values held,
+  //   w_x0 = w / R,  w_h = w (1/h + xi/R),
+  //   l1_h = -l1/h,  dl1_i,h = -dl1_i/h  (r', z' and the shape gradients scale with 1/h),
+  //   l2_t = -l2 R_t / R,  dl2_i,t = -dl2_i R_t / R,
+  //   s_k,t = s_k1 l1_t + s_k2 l2_t.
+  void MembraneTerm::add_geometry_derivative(const PointKinematics &p, const double h,
+                                             const double w, const double xi,
+                                             const LawResponse &law, const CellScratch &s,
+                                             CellContribution &out) const
+  {
+    const unsigned int   n = mesh.dofs_per_cell();
+    const StressTangent &t = law.tangent;
+    const double         s1 = law.stress.s1, s2 = law.stress.s2;
+    // t = x0: R_t = 1, l1_t = 0;  t = h: R_t = xi, l1_t = -l1/h.
+    const double R_t[2]  = {1., xi};
+    const double l1_t[2] = {0., -p.l1 / h};
+    const double w_t[2]  = {w / p.R, w * (1. / h + xi / p.R)};
+    for (unsigned int k = 0; k < 2; ++k)
+      {
+        const double l2_t  = -p.l2 * R_t[k] / p.R;
+        const double s1_t  = t.s11 * l1_t[k] + t.s12 * l2_t;
+        const double s2_t  = t.s12 * l1_t[k] + t.s22 * l2_t;
+        const double dl1_f = k == 1 ? -1. / h : 0.; // dl1_i,t = dl1_f dl1_i
+        const double dl2_f = -R_t[k] / p.R;         // dl2_i,t = dl2_f dl2_i
+        double      *d     = &out.geometry_residual[k * n];
+        for (unsigned int i = 0; i < n; ++i)
+          d[i] += w_t[k] * (s1 * s.dl1[i] + s2 * s.dl2[i]) +
+                  w * ((s1_t + s1 * dl1_f) * s.dl1[i] + (s2_t + s2 * dl2_f) * s.dl2[i]);
+      }
+  }
+
+  bool DeadLoadTerm::add_cell(const CellInput &in, const unsigned int flags, CellScratch &,
                               CellContribution &out)
   {
     if (in.index != 0)
@@ -137,6 +165,8 @@ namespace cdea
           const double v = mesh.left_end.value[i];
           out.energy -= force * v * in.x[i];
           out.residual[i] -= force * v;
+          if (flags & assemble_parameter_derivatives)
+            out.parameter_residual[in.layout->dead_load() * n + i] -= v;
         }
     return true;
   }

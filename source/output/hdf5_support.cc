@@ -1,6 +1,8 @@
 #include <cdea/output/hdf5_support.h>
 
+#include <filesystem>
 #include <stdexcept>
+#include <system_error>
 #include <vector>
 
 namespace cdea::hdf5
@@ -26,6 +28,15 @@ namespace cdea::hdf5
   }
 
   ErrorPrintingOff::~ErrorPrintingOff() { H5Eset_auto2(H5E_DEFAULT, old_func, old_data); }
+
+  void create_parent_directory(const std::string &path)
+  {
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    std::error_code             error;
+    if (!parent.empty() && (std::filesystem::create_directories(parent, error), error))
+      throw std::runtime_error("cannot write '" + path + "': cannot create directory '" +
+                               parent.string() + "': " + error.message());
+  }
 
   // Innermost and outermost descriptions of the stack; an innermost entry
   // that wraps a system error keeps only that error's text.

@@ -11,7 +11,9 @@ namespace cdea
     Eigen::VectorXd r, dx, trial, r_trial;
     problem.evaluate(x, r);
     double res = r.lpNorm<Eigen::Infinity>() / settings.residual_scale;
-    if (!std::isfinite(res))
+    // allFinite(): the largest entry of a residual with NaN entries (outside
+    // the range, constrained entries zero) may come out as 0.
+    if (!r.allFinite() || !std::isfinite(res))
       {
         report.message = "the initial guess lies outside the material's range";
         return report;

@@ -4,6 +4,7 @@
 // they are declared, and parses them. Parameters::validate() turns them into a
 // Scene and rejects bad input with an InputError that names the parameter.
 
+#include <cdea/app/parameters_design.h>
 #include <cdea/scene.h>
 #include <cdea/solver/tangent_solver.h>
 
@@ -173,6 +174,8 @@ namespace cdea
     parameters::Shooting       shooting;
     parameters::Sweep          sweep;
     parameters::Reservoir      reservoir;
+    parameters::Optimization   optimization;
+    parameters::Calibration    calibration;
     parameters::Output         output;
 
     static void declare(dealii::ParameterHandler &prm);

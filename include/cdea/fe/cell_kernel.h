@@ -35,15 +35,30 @@ namespace cdea
   };
 
   /// The parameters of dR/dp (assemble_parameter_derivatives), in this
-  /// order: the voltage of each ring, then shear modulus, Jlim, permittivity.
+  /// order: the voltage of each ring (V), shear modulus (Pa), Jlim,
+  /// permittivity (F/m), the dead load F (N), then the shape parameters: a
+  /// scale s of every reference radius (taken at s = 1) and the reference
+  /// radius R_k (m) of each interior ring edge k = 1 .. n_rings - 1.
   struct ParameterLayout
   {
     unsigned int n_rings = 1;
-    unsigned int size() const { return n_rings + 3; }
+    unsigned int size() const { return 2 * n_rings + 4; }
     unsigned int voltage(unsigned int ring) const { return ring; }
     unsigned int shear_modulus() const { return n_rings; }
     unsigned int jlim() const { return n_rings + 1; }
     unsigned int permittivity() const { return n_rings + 2; }
+    unsigned int dead_load() const { return n_rings + 3; }
+    unsigned int mesh_scale() const { return n_rings + 4; }
+    unsigned int ring_edge(unsigned int edge) const { return n_rings + 4 + edge; }
+    /// The first shape parameter: those from here on move the cells.
+    unsigned int first_shape_parameter() const { return mesh_scale(); }
+  };
+
+  /// How a cell moves with a shape parameter: d x0/dp and d h/dp.
+  struct CellMotion
+  {
+    double dx0 = 0.;
+    double dh  = 0.;
   };
 
   /// Work arrays of one cell, sized once (step-44's ScratchData).
@@ -60,6 +75,9 @@ namespace cdea
     std::vector<double> residual;           ///< n
     std::vector<double> tangent;            ///< n x n, row-major
     std::vector<double> parameter_residual; ///< [p * n + i]
+    /// Shape derivative of the residual: d/dx0 in [i], d/dh in [n + i], at
+    /// fixed nodal values (the nodes move with the cell).
+    std::vector<double> geometry_residual;
     double              volume = 0.;
     std::vector<double> volume_gradient; ///< n
     std::vector<double> volume_hessian;  ///< n x n
@@ -86,7 +104,8 @@ namespace cdea
     unsigned int          index = 0; ///< in Discretization::cells
     const MeshCell       *cell  = nullptr;
     const double         *x     = nullptr; ///< local dof values
-    const Discretization *mesh  = nullptr;
+    const Discretization  *mesh   = nullptr;
+    const ParameterLayout *layout = nullptr;
   };
 
   class CellTerm
@@ -100,7 +119,11 @@ namespace cdea
       return 0;
     }
     /// Add this term's share of one cell as @p flags ask; false where the
-    /// state lies outside the term's range (the material's, say).
+    /// state lies outside the term's range (the material's, say). With
+    /// assemble_parameter_derivatives a term whose contribution depends on
+    /// the cell's position and length also adds its shape derivative
+    /// (CellContribution::geometry_residual); a term written in the nodal
+    /// values alone (dead load, enclosed volume, water) has none.
     virtual bool add_cell(const CellInput &cell, unsigned int flags, CellScratch &scratch,
                           CellContribution &contribution) = 0;
     /// After the loop over cells: add what couples the whole system.
@@ -132,6 +155,11 @@ namespace cdea
 
     const ParameterLayout &parameters() const { return layout; }
 
+    /// How cell @p cell moves with parameter @p parameter of the layout
+    /// (zero for the non-shape parameters). The cells of a ring keep their
+    /// fractions of the ring: x0 = E_j + f0 (E_j+1 - E_j), h = fh (E_j+1 - E_j).
+    CellMotion cell_motion(unsigned int cell, unsigned int parameter) const;
+
   private:
     const Discretization                  &mesh;
     ParameterLayout                        layout;
@@ -139,5 +167,8 @@ namespace cdea
     CellScratch                            scratch;
     CellContribution                       local;
     std::vector<double>                    local_x;
+    /// Reference radii of the ring edges (n_rings + 1) and, per cell, the
+    /// fractions f0, fh of its ring.
+    std::vector<double> ring_edges, fraction_x0, fraction_h;
   };
 } // namespace cdea

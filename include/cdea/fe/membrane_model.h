@@ -98,6 +98,8 @@ namespace cdea
     unsigned int disk_z_dof() const;
 
   private:
+    /// Sensitivities use the tangent of the converged state (fe/sensitivities.h).
+    friend class StateSensitivity;
     class Impl;
     class Continuation;
     std::unique_ptr<Impl>                impl;

@@ -15,11 +15,23 @@
 #include <cdea/fe/cell_kernel.h>
 #include <cdea/material/membrane_law.h>
 
+#include <array>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace cdea
 {
+  /// The law's parameters at a point of @p ring and their columns in @p layout.
+  inline std::array<std::pair<LawParameter, unsigned int>, 4>
+  law_parameter_columns(const ParameterLayout &layout, const unsigned int ring)
+  {
+    return {{{LawParameter::voltage, layout.voltage(ring)},
+             {LawParameter::shear_modulus, layout.shear_modulus()},
+             {LawParameter::jlim, layout.jlim()},
+             {LawParameter::permittivity, layout.permittivity()}}};
+  }
+
   class MembraneTerm final : public CellTerm
   {
   public:
@@ -52,6 +64,12 @@ namespace cdea
     InternalStep internal_step(unsigned int c, unsigned int q);
 
   private:
+    /// Shape derivative of the residual at one point of weight @p w at
+    /// R = x0 + h xi (CellContribution::geometry_residual).
+    void add_geometry_derivative(const PointKinematics &p, double h, double w, double xi,
+                                 const LawResponse &law, const CellScratch &scratch,
+                                 CellContribution &out) const;
+
     const Discretization              &mesh;
     const double                       two_pi_H;
     std::shared_ptr<const MembraneLaw> law_;

@@ -74,6 +74,11 @@ namespace cdea::hdf5
     herr_t (*closer)(hid_t) = nullptr;
   };
 
+  /// Create the directory that will hold @p path (and its parents) if missing;
+  /// throws std::runtime_error "cannot write '<path>': cannot create
+  /// directory ..." if that fails.
+  void create_parent_directory(const std::string &path);
+
   /// A one-line summary of the current HDF5 error stack (which it clears):
   /// the system error text if the innermost entry carries one, else the
   /// innermost description, followed by the outermost description.

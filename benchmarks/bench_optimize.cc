@@ -1,0 +1,223 @@
+// Speed of `cdea optimize` and `cdea fit` as a user runs them (whole
+// processes: loading the libraries, MPI start-up, input, work, files):
+//
+//   1. `cdea --help`: the start-up alone;
+//   2. two rings, every edge and voltage free (Starts = STARTS);
+//   3. RINGS rings (default 8), every edge and voltage free (Starts = STARTS);
+//   4. a fit of shear modulus and Jlim to 20 points (two rings, synthetic data
+//      at the paper's values with 0.02 mm of seeded noise).
+//
+// Each command runs RUNS times; printed: median and smallest wall time, the
+// median CPU time of the process (user + system, far less affected by other
+// jobs on a shared machine), and the work the program reports (evaluations or
+// iterations, equilibrium solves, its own time).
+//
+//   build/benchmarks/bench_optimize [RUNS [RINGS [STARTS]]]      (defaults 5 8 8)
+//   build/benchmarks/bench_optimize --write-fit-data FILE.csv    (the example data)
+//
+// Files go to results/bench_optimize/. Figures in doc/optimization.md.
+
+#include <cdea/app/fit.h>
+#include <cdea/app/mpi_session.h>
+
+#include "bench_common.h"
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <random>
+#include <regex>
+#include <sstream>
+
+using namespace cdea;
+
+namespace
+{
+  struct Timing
+  {
+    double wall = 0., cpu = 0.;
+  };
+
+  /// Run @p args (argv[0] the program) with stdout and stderr into @p log;
+  /// its wall time and its own CPU time from wait4().
+  Timing run_process(const std::vector<std::string> &args, const std::string &log, int &status)
+  {
+    std::cout.flush();
+    std::fflush(nullptr);
+    const auto start = std::chrono::steady_clock::now();
+    const pid_t pid  = fork();
+    if (pid == 0)
+      {
+        if (!std::freopen(log.c_str(), "w", stdout) || dup2(fileno(stdout), 2) < 0)
+          _exit(127);
+        std::vector<char *> argv;
+        for (const auto &a : args)
+          argv.push_back(const_cast<char *>(a.c_str()));
+        argv.push_back(nullptr);
+        execv(argv[0], argv.data());
+        _exit(127);
+      }
+    rusage usage{};
+    wait4(pid, &status, 0, &usage);
+    Timing t;
+    t.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    t.cpu  = usage.ru_utime.tv_sec + 1e-6 * usage.ru_utime.tv_usec + usage.ru_stime.tv_sec +
+            1e-6 * usage.ru_stime.tv_usec;
+    status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return t;
+  }
+
+  std::string slurp(const std::string &file)
+  {
+    std::ifstream      in(file);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+
+  /// The counts the program prints on its last lines.
+  std::string work_of(const std::string &output)
+  {
+    std::smatch m;
+    static const std::regex optimize(R"((\d+) evaluations, (\d+) equilibrium solves, (\d+) Newton iterations, ([0-9.e-]+) s)");
+    static const std::regex fit(R"((\d+) iterations, (\d+) evaluations, (\d+) equilibrium solves \((\d+) ramps\), ([0-9.e-]+) s)");
+    if (std::regex_search(output, m, optimize))
+      return m[1].str() + " evaluations, " + m[2].str() + " solves, in-process " + m[4].str() + " s";
+    if (std::regex_search(output, m, fit))
+      return m[1].str() + " iterations, " + m[2].str() + " evaluations, " + m[3].str() +
+             " solves, in-process " + m[5].str() + " s";
+    return "";
+  }
+
+  void time_command(const std::string &what, const std::vector<std::string> &args,
+                    const std::string &log, const int runs)
+  {
+    std::vector<double> wall, cpu;
+    std::string         work;
+    for (int k = 0; k < runs; ++k)
+      {
+        int          status = 0;
+        const Timing t      = run_process(args, log, status);
+        // 2: the optimizer stopped unconverged; still a measurement.
+        if (status != 0 && status != 2)
+          {
+            std::cerr << "bench_optimize: '" << what << "' exited with " << status << ", see "
+                      << log << '\n';
+            std::exit(1);
+          }
+        wall.push_back(t.wall);
+        cpu.push_back(t.cpu);
+        work = work_of(slurp(log)) + (status == 2 ? " (NOT converged)" : "");
+      }
+    std::cout << std::left << std::setw(44) << what << std::right << std::fixed
+              << std::setprecision(3) << std::setw(9) << cdea_bench::median(wall) << std::setw(9)
+              << *std::min_element(wall.begin(), wall.end()) << std::setw(9)
+              << cdea_bench::median(cpu) << "   " << work << std::endl;
+  }
+
+  /// 20 points of the paper's actuator with rings 1-1.7-3: both rings to
+  /// 5 kV in 10 steps, then the outer one to 6.5 kV in 10 steps;
+  /// displacements of the model at mu = 25.1 kPa, Jlim = 270 plus Gaussian
+  /// noise of 0.02 mm (seed 2025).
+  void write_fit_data(const std::string &file)
+  {
+    CalibrationData d;
+    for (int k = 1; k <= 10; ++k)
+      d.voltages.push_back({500. * k, 500. * k});
+    for (int k = 1; k <= 10; ++k)
+      d.voltages.push_back({5e3, 5e3 + 150. * k});
+    d.weight.assign(20, 1.);
+    d.displacement.assign(20, 0.);
+    const Scene                       scene = paper_scene({1., 1.7, 3.}, {{5., 5.}});
+    const std::vector<SceneParameter> free{{ParameterKind::shear_modulus, 0},
+                                           {ParameterKind::jlim, 0}};
+    DisplacementModel model(scene, d, free, FeDiscretization(), NewtonSettings(), SteppingSettings());
+    Eigen::VectorXd   x;
+    model.evaluate({25.1e3, 270.}, x, nullptr);
+    std::mt19937                     generator(2025);
+    std::normal_distribution<double> noise(0., 0.02);
+    std::ofstream                    out(file);
+    out << "# Synthetic measurement: cdea's model of the paper's actuator (rings 1, 1.7, 3;\n"
+           "# mu = 25.1 kPa, Jlim = 270) plus Gaussian noise of 0.02 mm (seed 2025).\n"
+           "# Written by: build/benchmarks/bench_optimize --write-fit-data FILE\n"
+           "V1_kV, V2_kV, displacement_mm\n";
+    for (std::size_t i = 0; i < d.voltages.size(); ++i)
+      {
+        char line[128];
+        std::snprintf(line, sizeof line, "%.2f, %.2f, %.4f\n", d.voltages[i][0] * 1e-3,
+                      d.voltages[i][1] * 1e-3, x[i] * 1e3 + noise(generator));
+        out << line;
+      }
+  }
+
+  void write_file(const std::filesystem::path &path, const std::string &text)
+  {
+    std::ofstream(path) << text;
+  }
+
+  std::string optimize_prm(const unsigned int rings, const unsigned int starts,
+                           const std::string &dir, const std::string &base)
+  {
+    std::ostringstream o;
+    o << "subsection Optimization\n  set Rings = " << rings
+      << "\n  set Edge bounds (r/a) = 1, 3\n  set Starts = " << starts
+      << "\nend\nsubsection Output\n  set Directory = " << dir << "\n  set Base name = " << base
+      << "\nend\n";
+    return o.str();
+  }
+} // namespace
+
+int main(int argc, char **argv)
+{
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.size() == 2 && args[0] == "--write-fit-data")
+    {
+      const MpiSession mpi(argc, argv);
+      write_fit_data(args[1]);
+      std::cout << "wrote " << args[1] << '\n';
+      return 0;
+    }
+  const int          runs   = args.size() > 0 ? std::stoi(args[0]) : 5;
+  const unsigned int rings  = args.size() > 1 ? std::stoi(args[1]) : 8;
+  const unsigned int starts = args.size() > 2 ? std::stoi(args[2]) : 8;
+  const std::filesystem::path out = std::filesystem::absolute("results/bench_optimize");
+  std::filesystem::create_directories(out);
+  {
+    const MpiSession mpi(argc, argv);
+    write_fit_data((out / "fit.csv").string());
+  }
+  write_file(out / "two.prm", optimize_prm(2, starts, out.string(), "two"));
+  write_file(out / "many.prm", optimize_prm(rings, starts, out.string(), "many"));
+  write_file(out / "fit.prm", "subsection Electrodes\n  set Ring edges (r/a) = 1, 1.7, 3\n"
+                              "  set Voltage path (kV) = 5, 5\nend\n"
+                              "subsection Material\n  set Shear modulus (kPa) = 20\n"
+                              "  set Jlim = 150\nend\n"
+                              "subsection Calibration\n  set Free parameters = shear modulus, Jlim\n"
+                              "end\nsubsection Output\n  set Directory = " +
+                                out.string() + "\n  set Base name = fit\nend\n");
+
+  const std::string exe = CDEA_EXECUTABLE;
+  std::cout << "bench_optimize: " << runs << " run(s) of each command; wall and CPU times in s\n"
+            << std::left << std::setw(44) << "command" << std::right << std::setw(9) << "median"
+            << std::setw(9) << "min" << std::setw(9) << "CPU" << "   work reported\n";
+  time_command("cdea --help (start-up only)", {exe, "--help"}, (out / "help.log").string(), runs);
+  time_command("optimize: 2 rings all free, " + std::to_string(starts) + " starts",
+               {exe, "optimize", (out / "two.prm").string()}, (out / "two.log").string(), runs);
+  if (rings > 2) // (the smoke run of ctest skips it)
+    time_command("optimize: " + std::to_string(rings) + " rings all free, " +
+                   std::to_string(starts) + " starts",
+                 {exe, "optimize", (out / "many.prm").string()}, (out / "many.log").string(),
+                 runs);
+  time_command("fit: mu and Jlim to 20 points", {exe, "fit", (out / "fit.prm").string(),
+                                                 (out / "fit.csv").string()},
+               (out / "fit.log").string(), runs);
+  return 0;
+}

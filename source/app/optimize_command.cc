@@ -1,0 +1,350 @@
+// `cdea optimize FILE.prm`: the input, the starts over the MPI ranks
+// (round-robin; rank 0 gathers them), progress, the summary and the files.
+
+#include <cdea/app/commands.h>
+#include <cdea/app/mpi_session.h>
+#include <cdea/app/optimize.h>
+#include <cdea/app/parameters.h>
+#include <cdea/format.h>
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+namespace cdea
+{
+  namespace
+  {
+    // ---------------------------------------------------------------------
+    // A start's result as text for the gather (doubles in hexadecimal, so
+    // they arrive bit for bit; strings with their length).
+
+    void write_value(std::ostream &o, const double x) { o << std::hexfloat << x << ' '; }
+    void write_value(std::ostream &o, const unsigned int x) { o << x << ' '; }
+    void write_value(std::ostream &o, const std::string &s) { o << s.size() << ' ' << s << ' '; }
+    template <typename T>
+    void write_value(std::ostream &o, const std::vector<T> &v)
+    {
+      o << v.size() << ' ';
+      for (const auto &x : v)
+        write_value(o, x);
+    }
+
+    double read_double(std::istream &in)
+    {
+      std::string token;
+      in >> token;
+      return std::strtod(token.c_str(), nullptr); // hexfloat and nan/inf
+    }
+    unsigned int read_unsigned(std::istream &in)
+    {
+      unsigned int x = 0;
+      in >> x;
+      return x;
+    }
+    std::string read_string(std::istream &in)
+    {
+      const std::size_t n = read_unsigned(in);
+      in.get();
+      std::string s(n, '\0');
+      in.read(s.data(), std::streamsize(n));
+      return s;
+    }
+    std::vector<double> read_doubles(std::istream &in)
+    {
+      std::vector<double> v(read_unsigned(in));
+      for (double &x : v)
+        x = read_double(in);
+      return v;
+    }
+
+    std::string serialize(const StartResult &r)
+    {
+      std::ostringstream o;
+      for (const unsigned int x : {r.start, unsigned(r.converged), r.evaluations, r.solves,
+                                   r.newton_iterations, unsigned(r.at_best.ok),
+                                   r.at_best.points.n_quadrature_points})
+        write_value(o, x);
+      for (const double x : {r.seconds, r.objective, r.worst_constraint, r.optimality,
+                             r.at_best.displacement,
+                             r.at_best.stroke, r.at_best.volume_change, r.at_best.min_eigenvalue})
+        write_value(o, x);
+      write_value(o, r.status);
+      write_value(o, r.at_best.message);
+      write_value(o, r.active);
+      for (const Layout *l : {&r.initial, &r.best})
+        {
+          write_value(o, l->edges);
+          write_value(o, l->voltages);
+        }
+      const PointValues &p = r.at_best.points;
+      write_value(o, p.R);
+      write_value(o, p.ring);
+      write_value(o, std::vector<double>(p.s2.data(), p.s2.data() + p.s2.size()));
+      write_value(o, std::vector<double>(p.field.data(), p.field.data() + p.field.size()));
+      write_value(o, unsigned(r.history.size()));
+      for (const HistoryRow &h : r.history)
+        {
+          write_value(o, h.evaluation);
+          write_value(o, h.objective);
+          write_value(o, h.worst_constraint);
+          write_value(o, h.free_values);
+          write_value(o, h.message);
+        }
+      return o.str();
+    }
+
+    StartResult deserialize(std::istream &in)
+    {
+      StartResult r;
+      r.start                               = read_unsigned(in);
+      r.converged                           = read_unsigned(in) != 0;
+      r.evaluations                         = read_unsigned(in);
+      r.solves                              = read_unsigned(in);
+      r.newton_iterations                   = read_unsigned(in);
+      r.at_best.ok                          = read_unsigned(in) != 0;
+      r.at_best.points.n_quadrature_points  = read_unsigned(in);
+      r.seconds                             = read_double(in);
+      r.objective                           = read_double(in);
+      r.worst_constraint                    = read_double(in);
+      r.optimality                          = read_double(in);
+      r.at_best.displacement                = read_double(in);
+      r.at_best.stroke                      = read_double(in);
+      r.at_best.volume_change               = read_double(in);
+      r.at_best.min_eigenvalue              = read_double(in);
+      r.status                              = read_string(in);
+      r.at_best.message                     = read_string(in);
+      r.active.resize(read_unsigned(in));
+      for (auto &a : r.active)
+        a = read_string(in);
+      for (Layout *l : {&r.initial, &r.best})
+        {
+          l->edges    = read_doubles(in);
+          l->voltages = read_doubles(in);
+        }
+      PointValues &p = r.at_best.points;
+      p.R            = read_doubles(in);
+      p.ring.resize(read_unsigned(in));
+      for (auto &k : p.ring)
+        k = read_unsigned(in);
+      const auto s2 = read_doubles(in), field = read_doubles(in);
+      p.s2          = Eigen::Map<const Eigen::VectorXd>(s2.data(), s2.size());
+      p.field       = Eigen::Map<const Eigen::VectorXd>(field.data(), field.size());
+      r.history.resize(read_unsigned(in));
+      for (HistoryRow &h : r.history)
+        {
+          h.start            = r.start;
+          h.evaluation       = read_unsigned(in);
+          h.objective        = read_double(in);
+          h.worst_constraint = read_double(in);
+          h.free_values      = read_doubles(in);
+          h.message          = read_string(in);
+        }
+      if (!in)
+        throw std::runtime_error("cdea optimize: garbled start result in the gather");
+      return r;
+    }
+
+    /// Every rank's results on rank 0 (the others keep their own).
+    std::vector<StartResult> gather(const std::vector<StartResult> &mine)
+    {
+      if (mpi::size() == 1)
+        return mine;
+      std::string text;
+      for (const auto &r : mine)
+        text += serialize(r);
+      int              length = int(text.size());
+      std::vector<int> lengths(mpi::size()), displacements(mpi::size(), 0);
+      MPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+      for (unsigned int r = 1; r < mpi::size(); ++r)
+        displacements[r] = displacements[r - 1] + lengths[r - 1];
+      std::string all(mpi::rank() == 0 ? std::size_t(displacements.back() + lengths.back()) : 0,
+                      '\0');
+      MPI_Gatherv(text.data(), length, MPI_CHAR, all.data(), lengths.data(),
+                  displacements.data(), MPI_CHAR, 0, MPI_COMM_WORLD);
+      if (mpi::rank() != 0)
+        return mine;
+      std::vector<StartResult> results;
+      std::istringstream       in(all);
+      while (in >> std::ws && in.peek() != EOF)
+        results.push_back(deserialize(in));
+      std::sort(results.begin(), results.end(),
+                [](const StartResult &a, const StartResult &b) { return a.start < b.start; });
+      return results;
+    }
+
+    std::string kV_list(const std::vector<double> &volts)
+    {
+      std::string s;
+      for (std::size_t i = 0; i < volts.size(); ++i)
+        s += (i ? " " : "") + format_fixed(volts[i] * 1e-3, 4);
+      return s;
+    }
+
+    std::string edge_list(const std::vector<double> &edges)
+    {
+      std::string s;
+      for (std::size_t i = 0; i < edges.size(); ++i)
+        s += (i ? " " : "") + format_fixed(edges[i], 4);
+      return s;
+    }
+  } // namespace
+
+  int run_optimize(const std::string &prm_file)
+  {
+    const bool           root = mpi::rank() == 0;
+    Parameters           p;
+    Scene                base;
+    OptimizationSettings s;
+    std::string          text;
+    try
+      {
+        p    = read_parameters(prm_file, &text);
+        base = p.scene();
+        s    = optimization_settings(p, base);
+      }
+    catch (const InputError &e)
+      {
+        if (root)
+          std::cerr << "cdea: " << e.what() << '\n';
+        return exit_input_error;
+      }
+    const std::string h5_path  = p.results_path("_optimum");
+    const std::string prm_path = p.output.directory + "/" + p.output.base_name + "_optimum.prm";
+    // The output must be writable before anything is computed (rank 0
+    // writes; the others follow its verdict).
+    int writable = 1;
+    if (root)
+      {
+        std::error_code error;
+        std::filesystem::create_directories(p.output.directory, error);
+        std::ofstream probe(prm_path + ".probe");
+        if (error || !probe)
+          {
+            std::cerr << "cdea: cannot write results into '" << p.output.directory
+                      << "' (Output/Directory)" << (error ? ": " + error.message() : "") << '\n';
+            writable = 0;
+          }
+        probe.close();
+        std::filesystem::remove(prm_path + ".probe", error);
+      }
+    if (mpi::size() > 1)
+      MPI_Bcast(&writable, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    if (!writable)
+      return exit_input_error;
+
+    const auto start_time = std::chrono::steady_clock::now();
+    const auto free       = s.free_parameters();
+    const bool stroke     = s.objective == DesignObjective::stroke;
+    if (root)
+      {
+        std::cout << "cdea " << CDEA_VERSION << " optimize: " << s.n_rings << " ring(s), maximise "
+                  << to_string(s.objective) << " by " << to_string(s.algorithm) << ", "
+                  << s.starts << " start(s) on " << mpi::size() << " rank(s)\nfree:";
+        for (const auto &f : free)
+          std::cout << "  " << f.name();
+        std::cout << "\nconstraints: s2 >= " << s.min_hoop_stress * 1e-3 << " kPa";
+        if (std::isfinite(s.max_field))
+          std::cout << ", E <= " << s.max_field * 1e-6 << " MV/m";
+        std::cout << ", rings >= " << s.min_ring_width * base.disk_radius * 1e3
+                  << " mm, stable\n"
+                  << std::setw(5) << "start" << std::setw(6) << "eval" << std::setw(14)
+                  << (stroke ? "stroke (mm)" : "dV (1e3 mm3)") << std::setw(12) << "worst c"
+                  << "  free variables (kV, r/a)\n";
+      }
+
+    SteppingSettings stepping = stepping_settings(p);
+    stepping.arc_length       = false;
+    stepping.stability_check  = false;
+    stepping.breakdown_field  = 0.;
+    LayoutEvaluator evaluator(base, s, fe_discretization(p), newton_settings(p), stepping);
+    const auto      layouts = starting_layouts(s);
+    std::vector<StartResult> mine;
+    for (unsigned int k = mpi::rank(); k < layouts.size(); k += mpi::size())
+      {
+        const auto progress = [&](const HistoryRow &h) {
+          if (!root)
+            return;
+          std::cout << std::setw(5) << h.start << std::setw(6) << h.evaluation << std::setw(14)
+                    << (std::isnan(h.objective) ? std::string("failed") :
+                                                  format_fixed(h.objective, 6))
+                    << std::setw(12) << format_number(h.worst_constraint, 3) << " ";
+          for (const double v : h.free_values)
+            std::cout << ' ' << format_fixed(v, 4);
+          if (!h.message.empty())
+            std::cout << "  (" << h.message << ")";
+          std::cout << std::endl;
+        };
+        mine.push_back(optimize_from(base, s, evaluator, k, layouts[k], progress));
+        if (root)
+          std::cout << "start " << k << ": " << mine.back().status << std::endl;
+      }
+
+    OptimizationRun run;
+    run.starts = gather(mine);
+    if (!root)
+      return exit_success;
+    run.best    = best_start(run.starts);
+    run.ranks   = mpi::size();
+    run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
+
+    std::cout << "\n" << std::setw(5) << "start" << std::setw(14)
+              << (stroke ? "stroke (mm)" : "dV (1e3 mm3)") << std::setw(12) << "worst c"
+              << std::setw(6) << "evals" << std::setw(8) << "solves"
+              << "  edges (r/a) | voltages (kV) | status\n";
+    unsigned int evaluations = 0, solves = 0, iterations = 0;
+    for (const auto &r : run.starts)
+      {
+        evaluations += r.evaluations;
+        solves += r.solves;
+        iterations += r.newton_iterations;
+        std::cout << std::setw(5) << r.start << std::setw(14)
+                  << (r.at_best.ok ? format_fixed(r.objective, 6) : std::string("-"))
+                  << std::setw(12) << format_number(r.worst_constraint, 3) << std::setw(6)
+                  << r.evaluations << std::setw(8) << r.solves << "  " << edge_list(r.best.edges)
+                  << " | " << kV_list(r.best.voltages) << " | " << r.status << '\n';
+      }
+    const StartResult      &best = run.starts[run.best];
+    const LayoutEvaluation &e    = best.at_best;
+    std::cout << "\nOptimum (start " << best.start << ", " << (best.converged ? "converged" : "NOT converged")
+              << "):\n  ring edges (r/a): " << edge_list(best.best.edges)
+              << "\n  voltages (kV):    " << kV_list(best.best.voltages) << std::setprecision(7)
+              << "\n  displacement " << e.displacement * 1e3 << " mm, stroke " << e.stroke * 1e3
+              << " mm, enclosed volume change " << e.volume_change * 1e9 << " mm^3\n";
+    if (e.ok && e.points.s2.size())
+      std::cout << "  min s2 " << e.points.s2.minCoeff() * 1e-3 << " kPa, max E "
+                << e.points.field.maxCoeff() * 1e-6 << " MV/m, smallest tangent eigenvalue "
+                << e.min_eigenvalue << " N/m\n";
+    std::cout << "  active constraints:\n";
+    for (const auto &a : best.active)
+      std::cout << "    " << a << '\n';
+    std::cout << evaluations << " evaluations, " << solves << " equilibrium solves, " << iterations
+              << " Newton iterations, " << std::setprecision(3) << run.seconds << " s\n";
+
+    try
+      {
+        write_optimum_file(h5_path, run, s, base, text);
+        write_replay_parameters(prm_file, prm_path, best.best, p.output.base_name);
+      }
+    catch (const std::exception &error)
+      {
+        std::cerr << "cdea: " << error.what() << '\n';
+        return exit_input_error;
+      }
+    std::cout << "wrote " << h5_path << " and " << prm_path << '\n';
+    if (!best.converged)
+      {
+        std::cerr << "cdea: the optimizer stopped without converging (" << best.status
+                  << "); the best layout found is in " << h5_path << '\n';
+        return exit_not_complete;
+      }
+    return exit_success;
+  }
+} // namespace cdea

@@ -1,0 +1,336 @@
+// Exact sensitivities of a converged state by the direct and the adjoint
+// method with the factored tangent of the state (see sensitivities.h).
+
+#include <cdea/fe/sensitivities.h>
+
+#include "membrane_model_impl.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+// LAPACK: Cholesky factorization of a symmetric positive definite band matrix.
+extern "C" void dpbtrf_(const char *uplo, const int *n, const int *kd, double *ab,
+                        const int *ldab, int *info);
+
+namespace cdea
+{
+  std::string SceneParameter::name() const
+  {
+    switch (kind)
+      {
+        case ParameterKind::voltage:
+          return "voltage of ring " + std::to_string(index + 1) + " (V)";
+        case ParameterKind::shear_modulus:
+          return "shear modulus (Pa)";
+        case ParameterKind::jlim:
+          return "Jlim";
+        case ParameterKind::permittivity:
+          return "permittivity (F/m)";
+        case ParameterKind::mass:
+          return "mass (kg)";
+        case ParameterKind::prestretch:
+          return "pre-stretch";
+        case ParameterKind::ring_edge:
+          return "ring edge " + std::to_string(index) + " (r/a)";
+      }
+    return "unknown";
+  }
+
+  std::vector<SceneParameter> all_parameters(const unsigned int n_rings)
+  {
+    std::vector<SceneParameter> list;
+    for (unsigned int k = 0; k < n_rings; ++k)
+      list.push_back({ParameterKind::voltage, k});
+    for (const auto kind : {ParameterKind::shear_modulus, ParameterKind::jlim,
+                            ParameterKind::permittivity, ParameterKind::mass,
+                            ParameterKind::prestretch})
+      list.push_back({kind, 0});
+    for (unsigned int k = 1; k < n_rings; ++k)
+      list.push_back({ParameterKind::ring_edge, k});
+    return list;
+  }
+
+  double parameter_value(const Scene &scene, const SceneParameter &p)
+  {
+    switch (p.kind)
+      {
+        case ParameterKind::voltage:
+          return scene.path.waypoints().back().at(p.index);
+        case ParameterKind::shear_modulus:
+          return scene.material.shear_modulus;
+        case ParameterKind::jlim:
+          return scene.material.jlim;
+        case ParameterKind::permittivity:
+          return scene.material.permittivity;
+        case ParameterKind::mass:
+          return scene.mass;
+        case ParameterKind::prestretch:
+          return scene.prestretch;
+        case ParameterKind::ring_edge:
+          return scene.ring_edges_over_a.at(p.index);
+      }
+    return 0.;
+  }
+
+  Scene with_parameter(const Scene &scene, const SceneParameter &p, const double value)
+  {
+    Scene s = scene;
+    switch (p.kind)
+      {
+        case ParameterKind::voltage:
+          {
+            auto waypoints               = scene.path.waypoints();
+            waypoints.back().at(p.index) = value;
+            s.path                       = VoltagePath(waypoints);
+            break;
+          }
+        case ParameterKind::shear_modulus:
+          s.material.shear_modulus = value;
+          break;
+        case ParameterKind::jlim:
+          s.material.jlim = value;
+          break;
+        case ParameterKind::permittivity:
+          s.material.permittivity = value;
+          break;
+        case ParameterKind::mass:
+          s.mass = value;
+          break;
+        case ParameterKind::prestretch:
+          s.prestretch = value;
+          break;
+        case ParameterKind::ring_edge:
+          s.ring_edges_over_a.at(p.index) = value;
+          break;
+      }
+    return s;
+  }
+
+  namespace
+  {
+    /// A scene parameter as a combination of the kernel's parameters:
+    /// d/dp = sum factor d/dp_kernel. The mass acts through F = m g; lam_pre
+    /// scales every reference radius by 1/lam_pre (s = lam0/lam, ds/dlam =
+    /// -1/lam at s = 1); an edge r_v/a sits at R_k = (r_v/a) a / lam_pre.
+    std::pair<unsigned int, double> kernel_column(const SceneParameter &p,
+                                                  const ParameterLayout &layout,
+                                                  const Scene &scene)
+    {
+      switch (p.kind)
+        {
+          case ParameterKind::voltage:
+            return {layout.voltage(p.index), 1.};
+          case ParameterKind::shear_modulus:
+            return {layout.shear_modulus(), 1.};
+          case ParameterKind::jlim:
+            return {layout.jlim(), 1.};
+          case ParameterKind::permittivity:
+            return {layout.permittivity(), 1.};
+          case ParameterKind::mass:
+            return {layout.dead_load(), scene.gravity};
+          case ParameterKind::prestretch:
+            return {layout.mesh_scale(), -1. / scene.prestretch};
+          case ParameterKind::ring_edge:
+            if (p.index < 1 || p.index >= layout.n_rings)
+              throw std::invalid_argument("StateSensitivity: " + p.name() +
+                                          " is not an interior edge of this scene");
+            return {layout.ring_edge(p.index), scene.disk_radius / scene.prestretch};
+        }
+      return {0, 0.};
+    }
+  } // namespace
+
+  ModelState predicted_state(const ModelState &state, const Eigen::MatrixXd &dx_dp,
+                             const Eigen::VectorXd &dp)
+  {
+    ModelState            guess = state;
+    const Eigen::VectorXd x =
+      Eigen::Map<const Eigen::VectorXd>(state.unknowns.data(), state.unknowns.size()) +
+      dx_dp * dp;
+    guess.unknowns.assign(x.data(), x.data() + x.size());
+    return guess;
+  }
+
+  StateSensitivity::StateSensitivity(MembraneModel &model_in, std::vector<SceneParameter> list)
+    : model(model_in)
+    , parameters_(std::move(list))
+  {
+    MembraneModel::Impl &m = *model.impl;
+    if (!m.tangent_is_current)
+      {
+        m.assemble_constrained(m.solution, assemble_residual | assemble_tangent);
+        m.tangent_is_current = true;
+      }
+    if (!m.factorize())
+      throw std::runtime_error("StateSensitivity: the tangent of the state is singular");
+
+    // dR/dp and the volume gradient in one pass, into a system of its own
+    // (the stored tangent and its factorization stay).
+    AssembledSystem s;
+    if (!m.kernel.assemble(m.solution, assemble_parameter_derivatives | assemble_volume, s))
+      throw std::runtime_error("StateSensitivity: the state lies outside the material's range");
+    const unsigned int N = m.mesh.n_dofs(), P = parameters_.size();
+    dR_dp.setZero(N, P);
+    dx_dp.setZero(N, P);
+    Eigen::VectorXd column(N), u(N);
+    for (unsigned int j = 0; j < P; ++j)
+      {
+        const auto [k, factor] = kernel_column(parameters_[j], m.kernel.parameters(), m.scene);
+        column                 = factor * s.parameter_residual[k];
+        for (const unsigned int i : m.mesh.constrained)
+          column[i] = 0.;
+        dR_dp.col(j) = column;
+        m.solve_tangent(-column, u);
+        dx_dp.col(j) = u;
+      }
+
+    const double dz = m.solution[m.mesh.z_inner] - m.solution[m.mesh.z_outer];
+    displacement_   = std::abs(dz);
+    d_displacement_ = (dz >= 0. ? 1. : -1.) *
+                      (dx_dp.row(m.mesh.z_inner) - dx_dp.row(m.mesh.z_outer)).transpose();
+    volume_         = s.volume;
+    d_volume_       = dx_dp.transpose() * s.volume_gradient;
+  }
+
+  Eigen::VectorXd StateSensitivity::adjoint(const Eigen::VectorXd &dJ_dx,
+                                            const Eigen::VectorXd &dJ_dp_explicit) const
+  {
+    // K is symmetric (the second variation of Pi), so K^T lambda = K lambda.
+    Eigen::VectorXd lambda;
+    model.impl->solve_tangent(dJ_dx, lambda);
+    return dJ_dp_explicit - dR_dp.transpose() * lambda;
+  }
+
+  bool StateSensitivity::stable() const
+  {
+    const MembraneModel::Impl &m = *model.impl;
+    if (m.system.rank_one_coupling != 0.)
+      return model.min_tangent_eigenvalue() > 0.;
+    // The upper band of the constrained tangent (constrained rows and columns
+    // are decoupled with a positive diagonal), column by column.
+    const BandMatrix &K = m.system.tangent;
+    const int         n = K.size(), kd = K.bandwidth(), ldab = kd + 1;
+    std::vector<double> ab(std::size_t(ldab) * n, 0.);
+    for (int j = 0; j < n; ++j)
+      for (int i = std::max(0, j - kd); i <= j; ++i)
+        ab[std::size_t(j) * ldab + kd + i - j] = 0.5 * (K.entry(i, j) + K.entry(j, i));
+    int        info = 0;
+    const char uplo = 'U';
+    dpbtrf_(&uplo, &n, &kd, ab.data(), &ldab, &info);
+    return info == 0;
+  }
+
+  PointValues StateSensitivity::points() const
+  {
+    const MembraneModel::Impl &m      = *model.impl;
+    const Discretization      &mesh   = m.mesh;
+    const ParameterLayout     &layout = m.kernel.parameters();
+    const unsigned int         n = mesh.dofs_per_cell(), P = parameters_.size();
+    const double               H = m.scene.material.thickness;
+
+    // Each scene parameter as its kernel column.
+    std::vector<std::pair<unsigned int, double>> columns;
+    for (const auto &p : parameters_)
+      columns.push_back(kernel_column(p, layout, m.scene));
+
+    std::vector<double> local(n), gradient_s2(n), gradient_E(n), explicit_s2(layout.size()),
+      explicit_E(layout.size());
+    std::vector<double> s2, field;
+    std::vector<Eigen::VectorXd> d_s2, d_field;
+    PointValues                  out;
+
+    // One point at xi of cell c (shape values @p value, d/dxi @p derivative).
+    const auto point = [&](const unsigned int c, const ShapeTable &table, const unsigned int q) {
+      const MeshCell     &cell = mesh.cells[c];
+      const unsigned int *dofs = mesh.dofs_of(c);
+      for (unsigned int i = 0; i < n; ++i)
+        local[i] = m.solution[dofs[i]];
+      const PointKinematics p   = kinematics(mesh, table, q, cell, local.data());
+      const double          xi  = table.points[q];
+      const double          Phi = m.load.voltages[cell.ring];
+      const LawInput        at  = m.membrane.law_input(p, cell.ring);
+      LawResponse           law;
+      if (!m.plain_law->evaluate(at, {}, law_stress | law_tangent, law))
+        throw std::runtime_error("StateSensitivity: a point lies outside the material's range");
+      const StressTangent &t = law.tangent;
+
+      // d/dx: dl1_i = (r' or z') dN_i/dR / l1, dl2_i = N_i / R (r only).
+      const double *value = &table.value[q * n], *deriv = &table.derivative[q * n];
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const bool   r_dof = mesh.component[i] == 0;
+          const double dl1   = (r_dof ? p.dr : p.dz) * deriv[i] / cell.h / p.l1;
+          const double dl2   = r_dof ? value[i] / p.R : 0.;
+          gradient_s2[i]     = t.s12 * dl1 + t.s22 * dl2;
+          gradient_E[i]      = Phi / H * (p.l2 * dl1 + p.l1 * dl2);
+        }
+
+      // Explicit derivatives at fixed nodal values, per kernel parameter.
+      std::fill(explicit_s2.begin(), explicit_s2.end(), 0.);
+      std::fill(explicit_E.begin(), explicit_E.end(), 0.);
+      for (const auto &[parameter, k] : law_parameter_columns(layout, cell.ring))
+        {
+          double        dW = 0.;
+          NominalStress ds{0., 0.};
+          if (m.plain_law->parameter_derivative(at, {}, parameter, dW, ds))
+            explicit_s2[k] = ds.s2;
+        }
+      explicit_E[layout.voltage(cell.ring)] = p.l1 * p.l2 / H;
+      // Shape: R_t = dx0 + xi dh, l1_t = -l1 dh / h, l2_t = -l2 R_t / R.
+      for (unsigned int k = layout.first_shape_parameter(); k < layout.size(); ++k)
+        {
+          const CellMotion motion = m.kernel.cell_motion(c, k);
+          const double     R_t    = motion.dx0 + xi * motion.dh;
+          const double     l1_t   = -p.l1 * motion.dh / cell.h;
+          const double     l2_t   = -p.l2 * R_t / p.R;
+          explicit_s2[k]          = t.s12 * l1_t + t.s22 * l2_t;
+          explicit_E[k]           = Phi / H * (p.l2 * l1_t + p.l1 * l2_t);
+        }
+
+      Eigen::VectorXd ds2(P), dE(P);
+      for (unsigned int j = 0; j < P; ++j)
+        {
+          const auto [k, factor] = columns[j];
+          double a = factor * explicit_s2[k], b = factor * explicit_E[k];
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              a += gradient_s2[i] * dx_dp(dofs[i], j);
+              b += gradient_E[i] * dx_dp(dofs[i], j);
+            }
+          ds2[j] = a;
+          dE[j]  = b;
+        }
+      out.R.push_back(p.R);
+      out.ring.push_back(cell.ring);
+      s2.push_back(law.stress.s2);
+      field.push_back(Phi * p.l1 * p.l2 / H);
+      d_s2.push_back(std::move(ds2));
+      d_field.push_back(std::move(dE));
+    };
+
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      for (unsigned int q = 0; q < mesh.energy_rule.size(); ++q)
+        point(c, mesh.energy_rule, q);
+    out.n_quadrature_points = s2.size();
+    int previous_ring       = -1;
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      if (int(mesh.cells[c].ring) != previous_ring)
+        {
+          point(c, mesh.left_end, 0);
+          previous_ring = mesh.cells[c].ring;
+        }
+
+    const unsigned int n_points = s2.size();
+    out.s2                      = Eigen::Map<Eigen::VectorXd>(s2.data(), n_points);
+    out.field                   = Eigen::Map<Eigen::VectorXd>(field.data(), n_points);
+    out.d_s2.resize(n_points, P);
+    out.d_field.resize(n_points, P);
+    for (unsigned int k = 0; k < n_points; ++k)
+      {
+        out.d_s2.row(k)    = d_s2[k].transpose();
+        out.d_field.row(k) = d_field[k].transpose();
+      }
+    return out;
+  }
+} // namespace cdea

@@ -1,0 +1,61 @@
+#!/usr/bin/env bash
+# `cdea fit` as a command on the example (prm/fit-example.prm with its CSV:
+# synthetic data at mu = 25.1 kPa, Jlim = 270 with 0.02 mm of noise): exit 0,
+# the fitted values within two standard errors of the truth, the fit file
+# and the parameter file with the fitted values, postprocess/plot_fit.py on
+# the result; parameters the data cannot separate are named in a warning;
+# bad data exit 1 with one message naming file, line and column, and write
+# nothing.
+set -u
+exe="${CDEA_EXECUTABLE:?}"
+src="${CDEA_SOURCE_DIR:?}"
+PYTHON=${PYTHON:-/usr/bin/python3}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+failures=0
+fail() { echo "FAIL $*"; failures=$((failures + 1)); }
+ok() { echo "ok   $*"; }
+
+sed 's/set Directory           = results/set Directory = out/' "$src/prm/fit-example.prm" > fit.prm
+cp "$src/prm/fit-example.csv" data.csv
+"$exe" fit fit.prm data.csv > out.txt 2> err.txt
+rc=$?
+[ $rc -eq 0 ] && ok "fit exits 0" || { fail "exit $rc"; cat err.txt; }
+[ -s out/fit-example_fit.h5 ] && [ -s out/fit-example_fit.prm ] && ok "fit file and parameter file written" \
+  || fail "files: $(ls out 2>&1)"
+"$PYTHON" - out/fit-example_fit.h5 <<'PY' && ok "mu and Jlim within two standard errors of 25.1 kPa and 270" || fail "fitted values"
+import sys, h5py, numpy as np
+f = h5py.File(sys.argv[1], "r")
+v, e = f.attrs["fitted_values"], f.attrs["standard_errors"]
+print("   mu = %.4f +- %.4f kPa, Jlim = %.2f +- %.2f" % (v[0] * 1e-3, e[0] * 1e-3, v[1], e[1]))
+assert abs(v[0] - 25.1e3) < 2 * e[0] and abs(v[1] - 270) < 2 * e[1]
+assert f["correlation"].shape == (2, 2) and abs(f["correlation"][0, 1]) < 1
+assert len(f["data/residual_mm"]) == 20 and 0.01 < f.attrs["rms_residual_mm"] < 0.03
+assert len(f["curve/displacement_mm"]) == 1 + 19 * 8
+PY
+grep -q "set Shear modulus (kPa) *= 25.1" out/fit-example_fit.prm && ok "the parameter file holds the fitted shear modulus" \
+  || fail "fit.prm: $(grep 'Shear modulus' out/fit-example_fit.prm)"
+"$PYTHON" "$src/postprocess/plot_fit.py" out/fit-example_fit.h5 --out fit.png > plot.txt 2>&1 && [ -s fit.png ] \
+  && ok "plot_fit.py writes the figure" || { fail "plot_fit.py"; cat plot.txt; }
+
+# Not identifiable: the potential depends on eps/mu and F/mu only.
+sed -e 's/set Free parameters     = shear modulus, Jlim/set Free parameters = shear modulus, permittivity, mass/' \
+    -e 's/Base name           = fit-example/Base name = degenerate/' fit.prm > degenerate.prm
+"$exe" fit degenerate.prm data.csv > degenerate.txt 2>&1
+grep -q "WARNING: the data do not determine shear modulus, permittivity, mass separately" degenerate.txt \
+  && ok "not identifiable: $(grep WARNING degenerate.txt | head -c 120)" || fail "no warning: $(tail -5 degenerate.txt)"
+
+# Bad data: a message naming file, line and column; exit 1; nothing written.
+printf 'V1_kV, V2_kV, displacement_mm\n1, 1, 18.4\n2, 2, abc\n' > bad.csv
+sed 's/Directory = out/Directory = bad/' fit.prm > bad.prm
+"$exe" fit bad.prm bad.csv > bad.txt 2> bad_err.txt
+rc=$?
+[ $rc -eq 1 ] && grep -q "bad.csv, line 3, column displacement_mm: 'abc' is not a number" bad_err.txt \
+  && [ ! -e bad ] && ok "bad data: $(head -c 120 bad_err.txt)" || fail "bad data: exit $rc, $(cat bad_err.txt)"
+"$exe" fit bad.prm missing.csv > /dev/null 2> missing_err.txt
+[ $? -eq 1 ] && grep -q "cannot read data file 'missing.csv'" missing_err.txt && ok "missing data file" \
+  || fail "missing data file: $(cat missing_err.txt)"
+
+echo "$failures failed"
+[ $failures -eq 0 ]

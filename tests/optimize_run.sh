@@ -1,0 +1,128 @@
+#!/usr/bin/env bash
+# `cdea optimize` as a command: the paper's case (two rings, inner ring at
+# 5 kV, edge and outer voltage free) writes <Base name>_optimum.h5 with the
+# documented root attributes and history, and <Base name>_optimum.prm, which
+# `cdea run` replays to the same state; an optimizer stopped early exits 2
+# with the best layout written; `mpirun -np 2` gives the same file contents;
+# bad input exits 1 with one message naming the parameter and writes nothing.
+set -u
+exe="${CDEA_EXECUTABLE:?}"
+PYTHON=${PYTHON:-/usr/bin/python3}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+failures=0
+fail() { echo "FAIL $*"; failures=$((failures + 1)); }
+ok() { echo "ok   $*"; }
+
+cat > paper.prm <<'EOF'
+subsection Optimization
+  set Rings                  = 2
+  set Fixed voltages (kV)    = 5, free
+  set Fixed ring edges (r/a) = free
+  set Starts                 = 2
+end
+subsection Output
+  set Directory = out
+  set Base name = paper
+end
+EOF
+
+"$exe" optimize paper.prm > out.txt 2> err.txt
+rc=$?
+[ $rc -eq 0 ] && ok "converged run exits 0" || { fail "exit $rc"; cat err.txt; }
+grep -q "Optimum (start" out.txt && ok "the optimum is printed" || fail "no optimum in stdout"
+[ -s out/paper_optimum.h5 ] && [ -s out/paper_optimum.prm ] && ok "both files written" \
+  || fail "files missing: $(ls out)"
+[ -z "$(ls out | grep tmp)" ] && ok "no temporary file left" || fail "left: $(ls out)"
+
+"$PYTHON" - out/paper_optimum.h5 <<'PY' && ok "root attributes and history as documented" || fail "file content"
+import sys, h5py, numpy as np
+f = h5py.File(sys.argv[1], "r")
+a = f.attrs
+need = ["ring_edges_over_a", "voltages_kV", "displacement_mm", "stroke_mm", "volume_change_mm3",
+        "min_s2_kPa", "max_field_MV_per_m", "active_constraints", "iterations", "solves"]
+missing = [k for k in need if k not in a]
+assert not missing, missing
+assert len(a["ring_edges_over_a"]) == 3 and len(a["voltages_kV"]) == 2
+assert a["voltages_kV"][0] == 5.0
+# The paper's case: the red line's maximum (doc/optimization.md).
+assert abs(a["stroke_mm"] - 8.75568) < 2e-5, a["stroke_mm"]
+assert abs(a["ring_edges_over_a"][1] - 1.6186) < 2e-3, a["ring_edges_over_a"]
+assert a["min_s2_kPa"] > -1e-4
+s = a["active_constraints"]
+s = s.decode() if isinstance(s, bytes) else s
+assert "inner edge of ring 2" in s, s
+assert a["iterations"] > 0 and a["solves"] > a["iterations"]
+h = f["history"]
+n = len(h["objective"])
+assert n == a["iterations"] and h["free_values"].shape == (n, 2)
+assert len(f["starts/objective"]) == 2
+PY
+
+# The replay: `cdea run` on the written parameter file reaches the optimum.
+"$exe" run out/paper_optimum.prm > run.txt 2> run_err.txt
+rc=$?
+[ $rc -eq 0 ] && ok "cdea run on the replay file exits 0" || { fail "replay exit $rc"; cat run_err.txt; }
+"$PYTHON" - out/paper_optimum.h5 out/paper_optimum_run.h5 <<'PY' && ok "the replay reaches the same state" || fail "replay differs"
+import sys, h5py
+o, r = h5py.File(sys.argv[1], "r"), h5py.File(sys.argv[2], "r")
+d_opt = o.attrs["displacement_mm"]
+d_run = r["summary/displacement_mm"][-1]
+print("   displacement: optimum %.12f mm, replay %.12f mm" % (d_opt, d_run))
+assert abs(d_run / d_opt - 1) < 1e-9
+assert abs(r["summary/stroke_mm"][-1] / o.attrs["stroke_mm"] - 1) < 1e-9
+PY
+
+# Stopped before converging: exit 2, the best layout still written.
+sed -e 's/set Starts                 = 2/set Starts = 1\n  set Max evaluations = 2/' \
+    -e 's/Base name = paper/Base name = early/' paper.prm > early.prm
+"$exe" optimize early.prm > early.txt 2> early_err.txt
+rc=$?
+[ $rc -eq 2 ] && ok "stopped early: exit 2" || fail "stopped early: exit $rc"
+grep -q "without converging" early_err.txt && ok "says so on stderr" || fail "stderr: $(cat early_err.txt)"
+"$PYTHON" -c "
+import h5py; f = h5py.File('out/early_optimum.h5', 'r')
+assert f.attrs['converged'] == 0 and len(f.attrs['voltages_kV']) == 2" \
+  && ok "the best layout is written (converged = 0)" || fail "early file"
+
+# Two ranks: the starts are dealt round-robin; the same file contents.
+if command -v mpirun > /dev/null; then
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+  export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_btl_vader_single_copy_mechanism=none
+  sed 's/Directory = out/Directory = parallel/' paper.prm > parallel.prm
+  timeout 300 mpirun --oversubscribe -np 2 "$exe" optimize parallel.prm > par.txt 2> par_err.txt
+  rc=$?
+  [ $rc -eq 0 ] && ok "mpirun -np 2 exits 0" || { fail "mpirun exit $rc"; cat par_err.txt; }
+  [ "$(grep -c 'Optimum (start' par.txt)" = 1 ] && ok "one summary (rank 0)" || fail "summaries: $(grep -c 'Optimum' par.txt)"
+  "$PYTHON" - out/paper_optimum.h5 parallel/paper_optimum.h5 <<'PY' && ok "same attributes and history as the serial run" || fail "serial and parallel differ"
+import sys, h5py, numpy as np
+a, b = h5py.File(sys.argv[1], "r"), h5py.File(sys.argv[2], "r")
+for k in a.attrs:
+    if k == "parameters":
+        continue
+    assert np.array_equal(np.asarray(a.attrs[k]), np.asarray(b.attrs[k])), k
+for k in ["history/objective", "history/free_values", "starts/objective"]:
+    assert np.array_equal(a[k][()], b[k][()], equal_nan=True), k
+PY
+else
+  fail "mpirun not found (Debian: openmpi-bin)"
+fi
+
+# Bad input: one message naming the parameter, exit 1, nothing written.
+sed -e 's/set Fixed voltages (kV)    = 5, free/set Fixed voltages (kV) = 5/' \
+    -e 's/Directory = out/Directory = bad/' paper.prm > bad.prm
+"$exe" optimize bad.prm > bad.txt 2> bad_err.txt
+rc=$?
+[ $rc -eq 1 ] && grep -q "Optimization/Fixed voltages (kV)" bad_err.txt && [ ! -e bad ] \
+  && [ "$(wc -l < bad_err.txt)" -le 1 ] \
+  && ok "bad input: $(head -c 150 bad_err.txt)" || fail "bad input: exit $rc, $(cat bad_err.txt)"
+touch blocker
+sed 's/Directory = out/Directory = blocker\/sub/' paper.prm > blocked.prm
+"$exe" optimize blocked.prm > blocked.txt 2> blocked_err.txt
+rc=$?
+[ $rc -eq 1 ] && grep -q "blocker/sub" blocked_err.txt && ok "unwritable output: exit 1" \
+  || fail "unwritable output: exit $rc, $(cat blocked_err.txt)"
+
+echo "$failures failed"
+[ $failures -eq 0 ]
