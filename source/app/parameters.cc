@@ -331,6 +331,8 @@ namespace cdea
     parameters::Sweep::declare(prm);
     parameters::Reservoir::declare(prm);
     parameters::Output::declare(prm);
+    parameters::ViscousMaterial::declare(prm);
+    parameters::Time::declare(prm);
   }
 
   void Parameters::parse(ParameterHandler &prm)
@@ -346,6 +348,8 @@ namespace cdea
     sweep.parse(prm);
     reservoir.parse(prm);
     output.parse(prm);
+    viscous_material.parse(prm);
+    time.parse(prm);
   }
 
   std::string to_string(const Continuation choice)
@@ -396,17 +400,22 @@ namespace cdea
 
   namespace
   {
+    std::string format(const double x);
+  }
+
+  void require_positive(const double value, const std::string &name)
+  {
+    if (!(value > 0.) || !std::isfinite(value))
+      throw InputError(name + " must be positive, got " + format(value));
+  }
+
+  namespace
+  {
     std::string format(const double x)
     {
       std::ostringstream s;
       s << x;
       return s.str();
-    }
-
-    void require_positive(const double value, const std::string &name)
-    {
-      if (!(value > 0.) || !std::isfinite(value))
-        throw InputError(name + " must be positive, got " + format(value));
     }
 
     /// deal.II's messages span several indented lines: fold them into one.
@@ -548,6 +557,7 @@ namespace cdea
     Parameters parameters;
     parameters.parse(prm);
     parameters.scene(); // validate now, before anything is written
+    validate_time(parameters);
     if (text)
       {
         std::ostringstream out;

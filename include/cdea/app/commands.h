@@ -41,4 +41,7 @@ namespace cdea
   int compare(const std::string &prm_file);
 
   std::string usage();
+
+  /// The extra /summary column @p name of a step (NaN if absent).
+  double summary_column(const StepSummary &s, const std::string &name);
 } // namespace cdea
