@@ -1,0 +1,262 @@
+#!/usr/bin/python3
+"""Time-dependent cdea runs (Time/Enabled = true; doc/time.md): displacement,
+ring voltages and the pump's level drop against time, the holds of a
+staircase and the level between the states of a square wave.
+
+Usage:
+  plot_time.py RESULTS.h5 [MORE.h5 ...] [--out DIR] [--elastic QUASI.h5] [--labels A,B,...]
+               [--from T] [--to T] [--min-hold S]
+  plot_time.py --response OUT.png RUN.h5 [RUN.h5 ...] [--labels A,B,...]
+
+First form: writes <base>_time.png into DIR (default: the directory of the
+first file), <base> being the first file's name without its extension: one
+panel each for the displacement, the ring voltages and the level drop against
+time, one line per file (between --from and --to seconds). It prints, for
+every file,
+  - each hold of the voltages (a plateau of at least --min-hold s, default 1): voltages,
+    displacement at its start and end, and the creep between them;
+  - for a square waveform, each cycle's level drop at the end of its on half
+    (state B) and of its off half (state A) and their difference.
+With --elastic (a quasi-static run of the same scene) it also writes
+<base>_holds.png: the displacement at the end of every hold against the last
+ring's voltage, over the quasi-static curve.
+
+Second form (--response): the stroke amplitude (half the peak-to-peak
+displacement over the last cycle) of each run against its drive frequency
+(Time/Frequency (Hz) of the file's parameters), one curve per label (default:
+one per value of Time/Inertia and Material/Relaxation time (s)).
+
+Needs h5py, numpy and matplotlib (Agg backend).
+"""
+
+import argparse
+import os
+import re
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+try:
+    import h5py  # noqa: E402
+except ImportError:  # pragma: no cover
+    sys.exit("plot_time.py: error: the python module h5py is missing "
+             "(Debian: apt-get install python3-h5py)")
+
+PROG = "plot_time.py"
+
+
+class TimeError(Exception):
+    """A problem with the input that ends the program with a message."""
+
+
+def prm_value(text, name):
+    """Value of 'set NAME = value' in the prm text (the last one), or None."""
+    found = re.findall(r"^\s*set\s+" + re.escape(name) + r"\s*=\s*(.*?)\s*$", text, re.MULTILINE)
+    return found[-1] if found else None
+
+
+class TimeRun:
+    """The time rows of one results file."""
+
+    def __init__(self, path):
+        if not os.path.isfile(path):
+            raise TimeError(f"no such file: {path}")
+        try:
+            handle = h5py.File(path, "r")
+        except OSError as e:
+            raise TimeError(f"cannot open {path} as an HDF5 file: {e}") from None
+        with handle as f:
+            if "summary" not in f:
+                raise TimeError(f"{path} has no /summary group: not a cdea results file")
+            s = f["summary"]
+            if "time_s" not in s:
+                raise TimeError(f"{path}: /summary/time_s is missing: not a time-dependent run "
+                                "(Time/Enabled = true)")
+            time = np.asarray(s["time_s"][...], dtype=float)
+            rows = np.isfinite(time)
+            n = len(time)
+            self.path = path
+            self.t = time[rows]
+            self.disp = np.asarray(s["displacement_mm"][...], dtype=float)[rows]
+            self.stroke = np.asarray(s["stroke_mm"][...], dtype=float)[rows]
+            self.volts = np.asarray(s["voltage_kV"][...], dtype=float).reshape(n, -1)[rows]
+            self.level = (np.asarray(s["level_drop_mm"][...], dtype=float)[rows]
+                          if "level_drop_mm" in s else np.full(rows.sum(), np.nan))
+            text = f.attrs.get("parameters", "")
+            self.prm = text.decode() if isinstance(text, bytes) else str(text)
+        self.name = os.path.splitext(os.path.basename(path))[0]
+        self.waveform = prm_value(self.prm, "Waveform") or "?"
+        freq = prm_value(self.prm, "Frequency (Hz)")
+        self.frequency = float(freq) if freq else float("nan")
+
+    def holds(self, min_length=1.0):
+        """(start, end) row indices of voltage plateaus lasting at least min_length s."""
+        result, start = [], 0
+        for i in range(1, len(self.t) + 1):
+            if i == len(self.t) or np.abs(self.volts[i] - self.volts[start]).max() > 1e-9:
+                if self.t[i - 1] - self.t[start] >= min_length and self.volts[start].max() > 0:
+                    result.append((start, i - 1))
+                start = i
+        return result
+
+    def cycles(self):
+        """(k, level at the end of the on half, at the end of the off half) per cycle."""
+        if self.waveform != "square" or not np.isfinite(self.frequency):
+            return []
+        period = 1.0 / self.frequency
+        rows = []
+        for k in range(int(round(self.t[-1] / period + 1e-9))):
+            on_end, off_end = (k + 0.5) * period, (k + 1.0) * period
+            i = np.argmin(np.abs(self.t - on_end))
+            j = np.argmin(np.abs(self.t - off_end))
+            rows.append((k + 1, self.level[i], self.level[j], self.disp[i], self.disp[j]))
+        return rows
+
+    def amplitude(self):
+        """Half the peak-to-peak displacement over the last drive period."""
+        period = 1.0 / self.frequency
+        last = self.t >= self.t[-1] - period * (1 - 1e-9)
+        return 0.5 * (self.disp[last].max() - self.disp[last].min())
+
+
+def plot_time(runs, out_dir, labels, t_from, t_to):
+    fig, axes = plt.subplots(3, 1, figsize=(7.5, 7.5), sharex=True)
+    for run, label in zip(runs, labels):
+        keep = (run.t >= t_from) & (run.t <= t_to)
+        axes[0].plot(run.t[keep], run.disp[keep], lw=0.9, label=label)
+        for k in range(run.volts.shape[1]):
+            axes[1].plot(run.t[keep], run.volts[keep, k], lw=0.9,
+                         label=f"{label}, ring {k + 1}" if len(runs) > 1 or run.volts.shape[1] > 1
+                         else label)
+        axes[2].plot(run.t[keep], run.level[keep], lw=0.9, label=label)
+    axes[0].set_ylabel("displacement (mm)")
+    axes[1].set_ylabel("voltage (kV)")
+    axes[2].set_ylabel("level drop (mm)")
+    axes[2].set_xlabel("time (s)")
+    for ax in axes:
+        ax.grid(alpha=0.3)
+    axes[0].legend(fontsize=8)
+    axes[1].legend(fontsize=7, ncol=2)
+    fig.tight_layout()
+    path = os.path.join(out_dir, runs[0].name + "_time.png")
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    print(f"wrote {path}")
+
+
+def quasi_static_curve(path):
+    with h5py.File(path, "r") as f:
+        s = f["summary"]
+        stage = np.asarray(s["stage"][...], dtype=int)
+        n = len(stage)
+        volts = np.asarray(s["voltage_kV"][...], dtype=float).reshape(n, -1)
+        disp = np.asarray(s["displacement_mm"][...], dtype=float)
+        keep = stage >= 1
+        if "time_s" in s:
+            keep &= ~np.isfinite(np.asarray(s["time_s"][...], dtype=float))
+    return volts[keep], disp[keep]
+
+
+def plot_holds(runs, labels, elastic, out_dir, min_hold):
+    volts, disp = quasi_static_curve(elastic)
+    fig, ax = plt.subplots(figsize=(6.5, 4.5))
+    ax.plot(volts[:, -1], disp, "k-", lw=1.2, label="quasi-static (elastic)")
+    for run, label in zip(runs, labels):
+        ends = [e for _, e in run.holds(min_hold)]
+        ax.plot(run.volts[ends, -1], run.disp[ends], "o", ms=4, label=f"{label}: end of each hold")
+    ax.set_xlabel("voltage of the last ring (kV)")
+    ax.set_ylabel("displacement (mm)")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    path = os.path.join(out_dir, runs[0].name + "_holds.png")
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    print(f"wrote {path}")
+
+
+def report(run, min_hold):
+    print(f"{run.path}: {run.waveform} waveform, {len(run.t)} time rows to t = {run.t[-1]:g} s")
+    holds = run.holds(min_hold)
+    if holds:
+        print("  hold  voltages (kV)        start (s)  end (s)  disp start (mm)  disp end (mm)  creep (mm)")
+        for k, (i, j) in enumerate(holds):
+            v = ", ".join(f"{x:.2f}" for x in run.volts[i])
+            print(f"  {k + 1:4d}  {v:20s} {run.t[i]:9.3f} {run.t[j]:8.3f} {run.disp[i]:16.5f}"
+                  f" {run.disp[j]:14.5f} {run.disp[j] - run.disp[i]:11.5f}")
+    cycles = run.cycles()
+    if cycles:
+        print("  cycle  level B (mm)  level A (mm)  B - A (mm)  disp B (mm)  disp A (mm)")
+        for k, b, a, db, da in cycles:
+            print(f"  {k:5d} {b:13.3f} {a:13.3f} {b - a:11.3f} {db:12.4f} {da:12.4f}")
+
+
+def response(out, runs, labels):
+    groups = {}
+    for run, label in zip(runs, labels):
+        if not np.isfinite(run.frequency):
+            raise TimeError(f"{run.path}: no Time/Frequency (Hz) in its parameters")
+        groups.setdefault(label, []).append((run.frequency, run.amplitude()))
+    fig, ax = plt.subplots(figsize=(6.5, 4.5))
+    print("label, frequency (Hz), stroke amplitude (mm)")
+    for label, points in groups.items():
+        points.sort()
+        f = np.array([p[0] for p in points])
+        a = np.array([p[1] for p in points])
+        ax.semilogx(f, a, "o-", ms=4, label=label)
+        for x, y in points:
+            print(f"{label}, {x:g}, {y:.5f}")
+    ax.set_xlabel("drive frequency (Hz)")
+    ax.set_ylabel("stroke amplitude (mm)")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(out, dpi=90)
+    plt.close(fig)
+    print(f"wrote {out}")
+
+
+def main(argv):
+    parser = argparse.ArgumentParser(prog=PROG, description=__doc__.split("\n\n")[0])
+    parser.add_argument("files", nargs="+")
+    parser.add_argument("--out")
+    parser.add_argument("--elastic")
+    parser.add_argument("--labels")
+    parser.add_argument("--response")
+    parser.add_argument("--from", dest="t_from", type=float, default=-np.inf)
+    parser.add_argument("--to", dest="t_to", type=float, default=np.inf)
+    parser.add_argument("--min-hold", dest="min_hold", type=float, default=1.0)
+    args = parser.parse_args(argv)
+    try:
+        runs = [TimeRun(p) for p in args.files]
+        if args.labels:
+            labels = [x.strip() for x in args.labels.split(",")]
+            if len(labels) != len(runs):
+                raise TimeError(f"--labels has {len(labels)} names for {len(runs)} files")
+        elif args.response:
+            labels = [f"inertia {prm_value(r.prm, 'Inertia')}, tau = "
+                      f"{prm_value(r.prm, 'Relaxation time (s)')} s" for r in runs]
+        else:
+            labels = [r.name for r in runs]
+        if args.response:
+            response(args.response, runs, labels)
+            return 0
+        out_dir = args.out or os.path.dirname(os.path.abspath(args.files[0]))
+        os.makedirs(out_dir, exist_ok=True)
+        for run in runs:
+            report(run, args.min_hold)
+        plot_time(runs, out_dir, labels, args.t_from, args.t_to)
+        if args.elastic:
+            plot_holds(runs, labels, args.elastic, out_dir, args.min_hold)
+    except TimeError as e:
+        print(f"{PROG}: error: {e}", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
