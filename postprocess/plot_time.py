@@ -14,7 +14,10 @@ panel each for the displacement, the ring voltages and the level drop against
 time, one line per file (between --from and --to seconds). It prints, for
 every file,
   - each hold of the voltages (a plateau of at least --min-hold s, default 1): voltages,
-    displacement at its start and end, and the creep between them;
+    the mean displacement over its first and over its last second (which
+    averages out most of the disk's ringing), the creep between them and, with
+    --elastic, the quasi-static displacement at the same voltages and what is
+    still to creep at the end of the hold;
   - for a square waveform, each cycle's level drop at the end of its on half
     (state B) and of its off half (state A) and their difference.
 With --elastic (a quasi-static run of the same scene) it also writes
@@ -179,15 +182,35 @@ def plot_holds(runs, labels, elastic, out_dir, min_hold):
     print(f"wrote {path}")
 
 
-def report(run, min_hold):
+def quasi_static_at(curve, volts):
+    """Displacement of the quasi-static curve at these voltages, interpolated in
+    the last ring's voltage among its rows with the other rings' voltages (NaN
+    if there are none)."""
+    if curve is None:
+        return float("nan")
+    cv, cd = curve
+    same = np.abs(cv[:, :-1] - volts[:-1]).max(axis=1, initial=0.0) < 1e-6
+    x, y = cv[same, -1], cd[same]
+    order = np.argsort(x)
+    x, y = x[order], y[order]
+    if len(x) == 0 or volts[-1] < x[0] - 1e-9 or volts[-1] > x[-1] + 1e-9:
+        return float("nan")
+    return float(np.interp(volts[-1], x, y))
+
+
+def report(run, min_hold, curve):
     print(f"{run.path}: {run.waveform} waveform, {len(run.t)} time rows to t = {run.t[-1]:g} s")
     holds = run.holds(min_hold)
     if holds:
-        print("  hold  voltages (kV)        start (s)  end (s)  disp start (mm)  disp end (mm)  creep (mm)")
+        print("  hold  voltages (kV)     end (s)  first 1 s (mm)  last 1 s (mm)  creep (mm)"
+              "  quasi-static (mm)  still to creep (mm)")
         for k, (i, j) in enumerate(holds):
             v = ", ".join(f"{x:.2f}" for x in run.volts[i])
-            print(f"  {k + 1:4d}  {v:20s} {run.t[i]:9.3f} {run.t[j]:8.3f} {run.disp[i]:16.5f}"
-                  f" {run.disp[j]:14.5f} {run.disp[j] - run.disp[i]:11.5f}")
+            early = run.disp[i:j + 1][run.t[i:j + 1] <= run.t[i] + 1.0].mean()
+            late = run.disp[i:j + 1][run.t[i:j + 1] >= run.t[j] - 1.0].mean()
+            qs = quasi_static_at(curve, run.volts[j])
+            print(f"  {k + 1:4d}  {v:16s} {run.t[j]:8.2f} {early:15.5f} {late:14.5f}"
+                  f" {late - early:11.5f} {qs:18.5f} {qs - late:20.5f}")
     cycles = run.cycles()
     if cycles:
         print("  cycle  level B (mm)  level A (mm)  B - A (mm)  disp B (mm)  disp A (mm)")
@@ -247,8 +270,9 @@ def main(argv):
             return 0
         out_dir = args.out or os.path.dirname(os.path.abspath(args.files[0]))
         os.makedirs(out_dir, exist_ok=True)
+        curve = quasi_static_curve(args.elastic) if args.elastic else None
         for run in runs:
-            report(run, args.min_hold)
+            report(run, args.min_hold, curve)
         plot_time(runs, out_dir, labels, args.t_from, args.t_to)
         if args.elastic:
             plot_holds(runs, labels, args.elastic, out_dir, args.min_hold)

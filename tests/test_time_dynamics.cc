@@ -2,8 +2,10 @@
 //  - Small oscillations: after a slow ramp to 5 kV the elastic actuator's disk
 //    rings about its equilibrium; the period of the ringing against
 //    2 pi sqrt(m / k), with k the stiffness of the disk coordinate from the
-//    tangent (its Schur complement with the other free unknowns) at the
-//    quasi-static equilibrium.
+//    tangent (MembraneModel::disk_stiffness: its Schur complement with the
+//    other free unknowns) at the quasi-static equilibrium.
+//  - The residual and tangent of a time step (viscous update, disk and water
+//    column inertia) against differences of the energy and of the residual.
 //  - Energy balance: electrical work = change of stored energy (elastic,
 //    weight, electrostatic, kinetic) + dissipated energy, with the dissipation
 //    >= 0 in every step; to second order in the time step for the
@@ -17,8 +19,6 @@
 #include "check.h"
 #include "fe_checks.h"
 #include "scenes.h"
-
-#include <Eigen/Dense>
 
 #include <algorithm>
 #include <cmath>
@@ -39,30 +39,6 @@ namespace
       if (key == name)
         return value;
     return std::numeric_limits<double>::quiet_NaN();
-  }
-
-  /// Stiffness of the disk coordinate z(A) at the model's state: the Schur
-  /// complement of the tangent onto z(A) over the free unknowns.
-  double disk_stiffness(const MembraneModel &model)
-  {
-    const auto                K         = model.tangent_matrix();
-    const unsigned int        z         = model.disk_z_dof();
-    const auto               &mesh      = model.discretization();
-    std::vector<unsigned int> others;
-    for (unsigned int i = 0; i < model.n_dofs(); ++i)
-      if (i != z && std::find(mesh.constrained.begin(), mesh.constrained.end(), i) ==
-                      mesh.constrained.end())
-        others.push_back(i);
-    const int       n = others.size();
-    Eigen::MatrixXd Kff(n, n);
-    Eigen::VectorXd Kfz(n);
-    for (int i = 0; i < n; ++i)
-      {
-        Kfz[i] = K[others[i]][z];
-        for (int j = 0; j < n; ++j)
-          Kff(i, j) = K[others[i]][others[j]];
-      }
-    return K[z][z] - Kfz.dot(Kff.ldlt().solve(Kfz));
   }
 
   struct EnergyRun
@@ -103,11 +79,40 @@ namespace
 
 int main()
 {
+  // The FE residual and tangent of a time step (viscous update and both
+  // inertia terms, pump scene with its water load) against differences.
+  {
+    Scene pump = cdea::paper_scene({1., 1.7, 3.}, {{4., 5.}});
+    MembraneModel model(pump, cdea_test::discretization(3, 2), NewtonSettings());
+    WaterLoad     water;
+    water.enabled = true;
+    model.set_water_load(water);
+    model.set_material_law(
+      std::make_shared<TwoNetworkGentLaw>(pump.material, ViscousNetwork{45e3, 270., 2.}));
+    model.set_time_step(std::numeric_limits<double>::infinity(), TimeScheme::backward_euler);
+    cdea_test::run_to_end(model, pump);
+    model.relax_internal_variables();
+    for (const TimeScheme scheme : {TimeScheme::backward_euler, TimeScheme::trapezoidal})
+      {
+        model.set_time_step(0.01, scheme);
+        InertiaStep inertia;
+        inertia.dt            = 0.01;
+        inertia.disk_mass     = pump.mass;
+        inertia.disk_target   = model.disk_position() - 1e-4;
+        inertia.volume_mass   = 2e5;
+        inertia.volume_target = model.enclosed_volume() + 1e-7;
+        model.set_inertia(inertia);
+        cdea_test::check_derivatives(model, scheme == TimeScheme::backward_euler ?
+                                              "time step, backward Euler, inertia" :
+                                              "time step, trapezoidal, inertia");
+      }
+  }
+
   // Small oscillations about the 5 kV equilibrium of the elastic actuator.
   {
     MembraneModel static_model(scene, cdea_test::discretization(4, 4), NewtonSettings());
     const double  z_eq = cdea_test::run_to_end(static_model, scene).displacement;
-    const double  k    = disk_stiffness(static_model);
+    const double  k    = static_model.disk_stiffness();
     const double  omega = std::sqrt(k / scene.mass);
 
     MembraneModel model(scene, cdea_test::discretization(4, 4), NewtonSettings());

@@ -97,6 +97,21 @@ namespace cdea
                 << format_number(onset.radius * 1e3) << " mm" << std::endl;
     };
 
+    // The disk's natural frequency sqrt(k/m) / 2 pi at the first and the last
+    // state of the time integration (k: the condensed static tangent).
+    double     frequency_start = std::numeric_limits<double>::quiet_NaN();
+    const auto frequency       = [&] {
+      return scene.mass > 0. ? std::sqrt(std::max(model->disk_stiffness(), 0.) / scene.mass) /
+                                 (2. * M_PI) :
+                               std::numeric_limits<double>::quiet_NaN();
+    };
+    const auto on_step = stepper.on_step;
+    stepper.on_step    = [&](const StepSummary &s) {
+      if (std::isnan(frequency_start) && !std::isnan(column(s, "time_s")))
+        frequency_start = frequency();
+      on_step(s);
+    };
+
     const auto      start  = std::chrono::steady_clock::now();
     const RunResult result = stepper.run();
     const double    seconds =
@@ -110,6 +125,9 @@ namespace cdea
               << format_number(column(last, "electrical_work_mJ"), 6) << " mJ, stored "
               << format_number(column(last, "stored_energy_change_mJ"), 6) << " mJ, dissipated "
               << format_number(column(last, "dissipated_energy_mJ"), 6) << " mJ\n"
+              << "  disk's natural frequency sqrt(k/m) / 2 pi: "
+              << format_number(frequency_start, 4) << " Hz at the start, "
+              << format_number(frequency(), 4) << " Hz at the end\n"
               << result.steps << " steps, " << result.newton_iterations << " Newton iterations, "
               << std::setprecision(3) << seconds << " s" << std::endl;
     if (!result.completed)

@@ -4,6 +4,9 @@
 
 #include "membrane_model_impl.h"
 
+#include <Eigen/Dense>
+
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -145,5 +148,39 @@ namespace cdea
     m.inertia.set_step(inertia);
     membrane.internal_current = current;
     return budget;
+  }
+
+  // k = K_zz - K_zf K_ff^-1 K_fz over the free unknowns f other than z(A),
+  // with the internal variables held (dt = 0) and no inertia.
+  double MembraneModel::disk_stiffness() const
+  {
+    Impl             &m       = *impl;
+    const double      dt      = m.membrane.time_step();
+    const TimeScheme  scheme  = m.membrane.time_scheme();
+    const InertiaStep inertia = m.inertia.step();
+    const std::vector<double> current = m.membrane.internal_current;
+    m.membrane.set_time_step(0., scheme);
+    m.inertia.set_step(InertiaStep());
+    const auto K = tangent_matrix();
+    m.membrane.set_time_step(dt, scheme);
+    m.inertia.set_step(inertia);
+    m.membrane.internal_current = current;
+
+    const unsigned int        z = m.mesh.z_inner;
+    std::vector<unsigned int> others;
+    for (unsigned int i = 0; i < n_dofs(); ++i)
+      if (i != z && std::find(m.mesh.constrained.begin(), m.mesh.constrained.end(), i) ==
+                      m.mesh.constrained.end())
+        others.push_back(i);
+    const int       n = others.size();
+    Eigen::MatrixXd Kff(n, n);
+    Eigen::VectorXd Kfz(n);
+    for (int i = 0; i < n; ++i)
+      {
+        Kfz[i] = K[others[i]][z];
+        for (int j = 0; j < n; ++j)
+          Kff(i, j) = K[others[i]][others[j]];
+      }
+    return K[z][z] - Kfz.dot(Kff.ldlt().solve(Kfz));
   }
 } // namespace cdea

@@ -112,6 +112,7 @@ namespace cdea
     bool   has_internal_variables() const override;
     double disk_position() const override;
     EnergyBudget energy_budget() const override;
+    double disk_stiffness() const override;
 
   private:
     class Impl;

@@ -62,5 +62,8 @@ namespace cdea
     /// z(A), the disk's coordinate (m; z > 0 is the weight's direction).
     virtual double disk_position() const = 0;
     virtual EnergyBudget energy_budget() const = 0;
+    /// Static stiffness of the disk coordinate at the current state, loads and
+    /// internal variables held: the tangent condensed onto z(A) (N/m).
+    virtual double disk_stiffness() const = 0;
   };
 } // namespace cdea
