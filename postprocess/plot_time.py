@@ -5,7 +5,7 @@ staircase and the level between the states of a square wave.
 
 Usage:
   plot_time.py RESULTS.h5 [MORE.h5 ...] [--out DIR] [--elastic QUASI.h5] [--labels A,B,...]
-               [--from T] [--to T] [--min-hold S]
+               [--from T] [--to T] [--min-hold S] [--levels L1,L2,...]
   plot_time.py --response OUT.png RUN.h5 [RUN.h5 ...] [--labels A,B,...]
 
 First form: writes <base>_time.png into DIR (default: the directory of the
@@ -19,7 +19,9 @@ every file,
     --elastic, the quasi-static displacement at the same voltages and what is
     still to creep at the end of the hold;
   - for a square waveform, each cycle's level drop at the end of its on half
-    (state B) and of its off half (state A) and their difference.
+    (state B) and of its off half (state A), each averaged over the last tenth
+    of the period, and their difference; the differences against the cycle
+    go to <base>_cycles.png, with the quasi-static levels --levels as lines.
 With --elastic (a quasi-static run of the same scene) it also writes
 <base>_holds.png: the displacement at the end of every hold against the last
 ring's voltage, over the quasi-static curve.
@@ -107,16 +109,21 @@ class TimeRun:
         return result
 
     def cycles(self):
-        """(k, level at the end of the on half, at the end of the off half) per cycle."""
+        """(k, level B, level A, displacement B, displacement A) per cycle of a
+        square wave: state B is the end of the on half, A the end of the off
+        half, each the mean over the last tenth of the period (which averages
+        the disk's ringing out)."""
         if self.waveform != "square" or not np.isfinite(self.frequency):
             return []
         period = 1.0 / self.frequency
         rows = []
         for k in range(int(round(self.t[-1] / period + 1e-9))):
-            on_end, off_end = (k + 0.5) * period, (k + 1.0) * period
-            i = np.argmin(np.abs(self.t - on_end))
-            j = np.argmin(np.abs(self.t - off_end))
-            rows.append((k + 1, self.level[i], self.level[j], self.disp[i], self.disp[j]))
+            ends = ((k + 0.5) * period, (k + 1.0) * period)
+            values = []
+            for end in ends:
+                window = (self.t > end - 0.1 * period - 1e-9) & (self.t <= end + 1e-9)
+                values.append((self.level[window].mean(), self.disp[window].mean()))
+            rows.append((k + 1, values[0][0], values[1][0], values[0][1], values[1][1]))
         return rows
 
     def amplitude(self):
@@ -131,10 +138,12 @@ def plot_time(runs, out_dir, labels, t_from, t_to):
     for run, label in zip(runs, labels):
         keep = (run.t >= t_from) & (run.t <= t_to)
         axes[0].plot(run.t[keep], run.disp[keep], lw=0.9, label=label)
-        for k in range(run.volts.shape[1]):
-            axes[1].plot(run.t[keep], run.volts[keep, k], lw=0.9,
-                         label=f"{label}, ring {k + 1}" if len(runs) > 1 or run.volts.shape[1] > 1
-                         else label)
+        # The voltages once per distinct waveform.
+        if not any(len(other.t) == len(run.t) and np.array_equal(other.volts, run.volts)
+                   for other in runs[:runs.index(run)]):
+            for k in range(run.volts.shape[1]):
+                axes[1].plot(run.t[keep], run.volts[keep, k], lw=0.9,
+                             label=f"{label}, ring {k + 1}" if run.volts.shape[1] > 1 else label)
         axes[2].plot(run.t[keep], run.level[keep], lw=0.9, label=label)
     axes[0].set_ylabel("displacement (mm)")
     axes[1].set_ylabel("voltage (kV)")
@@ -146,6 +155,28 @@ def plot_time(runs, out_dir, labels, t_from, t_to):
     axes[1].legend(fontsize=7, ncol=2)
     fig.tight_layout()
     path = os.path.join(out_dir, runs[0].name + "_time.png")
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    print(f"wrote {path}")
+
+
+def plot_cycles(runs, labels, out_dir, levels):
+    square = [(r, l) for r, l in zip(runs, labels) if r.cycles()]
+    if not square:
+        return
+    fig, ax = plt.subplots(figsize=(6.5, 4.5))
+    for run, label in square:
+        c = np.array(run.cycles())
+        ax.plot(c[:, 0], c[:, 1] - c[:, 2], "o-", ms=3, lw=0.8, label=label)
+    for k, value in enumerate(levels):
+        ax.axhline(value, color="k", ls="--", lw=0.8,
+                   label="quasi-static" if k == 0 else None)
+    ax.set_xlabel("cycle")
+    ax.set_ylabel("level drop between states A and B (mm)")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    path = os.path.join(out_dir, runs[0].name + "_cycles.png")
     fig.savefig(path, dpi=90)
     plt.close(fig)
     print(f"wrote {path}")
@@ -253,6 +284,7 @@ def main(argv):
     parser.add_argument("--from", dest="t_from", type=float, default=-np.inf)
     parser.add_argument("--to", dest="t_to", type=float, default=np.inf)
     parser.add_argument("--min-hold", dest="min_hold", type=float, default=1.0)
+    parser.add_argument("--levels", default="")
     args = parser.parse_args(argv)
     try:
         runs = [TimeRun(p) for p in args.files]
@@ -274,6 +306,8 @@ def main(argv):
         for run in runs:
             report(run, args.min_hold, curve)
         plot_time(runs, out_dir, labels, args.t_from, args.t_to)
+        levels = [float(x) for x in args.levels.split(",") if x.strip()]
+        plot_cycles(runs, labels, out_dir, levels)
         if args.elastic:
             plot_holds(runs, labels, args.elastic, out_dir, args.min_hold)
     except TimeError as e:

@@ -276,10 +276,14 @@ namespace cdea
     double       dt_older = 0.;
     while (t_now < t_end * (1. - 1e-14) - 1e-14)
       {
-        // Land on the next breakpoint rather than leave a sliver before it.
+        // Land on the next breakpoint, and never leave a sliver of a step
+        // before it: with less than one and a half steps to go, take halves.
         const double breakpoint =
           std::min(t_now < 0. ? 0. : settings.waveform.next_breakpoint(t_now), t_end);
-        const double t_next = t_now + dt >= breakpoint - 1e-6 * dt ? breakpoint : t_now + dt;
+        const double to_go  = breakpoint - t_now;
+        const double t_next = to_go <= dt * (1. + 1e-6) ? breakpoint :
+                              to_go < 1.5 * dt          ? t_now + 0.5 * to_go :
+                                                          t_now + dt;
         const double h          = t_next - t_now;
         if (!(h > 0.))
           {
