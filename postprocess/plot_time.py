@@ -133,6 +133,13 @@ class TimeRun:
         return 0.5 * (self.disp[last].max() - self.disp[last].min())
 
 
+def save(fig, path):
+    fig.tight_layout()
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
+    print(f"wrote {path}")
+
+
 def plot_time(runs, out_dir, labels, t_from, t_to):
     fig, axes = plt.subplots(3, 1, figsize=(7.5, 7.5), sharex=True)
     for run, label in zip(runs, labels):
@@ -153,11 +160,7 @@ def plot_time(runs, out_dir, labels, t_from, t_to):
         ax.grid(alpha=0.3)
     axes[0].legend(fontsize=8)
     axes[1].legend(fontsize=7, ncol=2)
-    fig.tight_layout()
-    path = os.path.join(out_dir, runs[0].name + "_time.png")
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
-    print(f"wrote {path}")
+    save(fig, os.path.join(out_dir, runs[0].name + "_time.png"))
 
 
 def plot_cycles(runs, labels, out_dir, levels):
@@ -175,11 +178,7 @@ def plot_cycles(runs, labels, out_dir, levels):
     ax.set_ylabel("level drop between states A and B (mm)")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    path = os.path.join(out_dir, runs[0].name + "_cycles.png")
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
-    print(f"wrote {path}")
+    save(fig, os.path.join(out_dir, runs[0].name + "_cycles.png"))
 
 
 def quasi_static_curve(path):
@@ -206,11 +205,7 @@ def plot_holds(runs, labels, elastic, out_dir, min_hold):
     ax.set_ylabel("displacement (mm)")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    path = os.path.join(out_dir, runs[0].name + "_holds.png")
-    fig.savefig(path, dpi=90)
-    plt.close(fig)
-    print(f"wrote {path}")
+    save(fig, os.path.join(out_dir, runs[0].name + "_holds.png"))
 
 
 def quasi_static_at(curve, volts):
@@ -268,10 +263,7 @@ def response(out, runs, labels):
     ax.set_ylabel("stroke amplitude (mm)")
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(out, dpi=90)
-    plt.close(fig)
-    print(f"wrote {out}")
+    save(fig, out)
 
 
 def main(argv):

@@ -23,7 +23,8 @@ namespace cdea
       Vector2 W_l, W_e;
       Matrix2 W_ll, W_ee, W_le;
 
-      bool evaluate(const GentDielectric &gent, const double l1, const double l2, const Vector2 &e)
+      bool evaluate(const GentDielectric &gent, const double l1, const double l2, const Vector2 &e,
+                    const bool with_energy)
       {
         const Vector2 xi(std::exp(e[0]), std::exp(e[1]));
         const Vector2 al(l1 / xi[0], l2 / xi[1]);
@@ -34,7 +35,7 @@ namespace cdea
         const Vector2       t(s.s1, s.s2);
         Matrix2             tt;
         tt << k.s11, k.s12, k.s12, k.s22;
-        energy = gent.energy(al[0], al[1]);
+        energy = with_energy ? gent.energy(al[0], al[1]) : 0.;
         for (int i = 0; i < 2; ++i)
           {
             W_l[i] = t[i] / xi[i];
@@ -95,12 +96,11 @@ namespace cdea
     if (!(in.l1 > 0.) || !(in.l2 > 0.) || !(law_a.gent_margin(in.l1, in.l2) > 0.) ||
         !step.current)
       return false;
-    out.energy        = law_a.energy(in.l1, in.l2);
+    out.energy        = request & law_energy ? law_a.energy(in.l1, in.l2) : 0.;
     out.stress        = law_a.stress(in.l1, in.l2);
     out.tangent       = law_a.tangent(in.l1, in.l2);
     out.tension       = TensionState::taut;
     out.natural_width = in.l2;
-    (void)request; // network B needs all of it for the update anyway
 
     if (std::isinf(step.dt))
       {
@@ -129,21 +129,25 @@ namespace cdea
       {
         // G(e) = c M^-1 (e - e0) - f + W_e = 0, c = 1/dt (backward Euler) or
         // 2/dt (trapezoidal, with f = M^-1 q0); H = c M^-1 + W_ee. Newton
-        // with step halving while outside spring B's Gent limit.
+        // with step halving while outside spring B's Gent limit, until the
+        // update is below 1e-13 (then e and spring B there are kept).
         const bool    trapezoidal = step.scheme == TimeScheme::trapezoidal;
         const double  c           = (trapezoidal ? 2. : 1.) / step.dt;
         const Vector2 f           = trapezoidal ? Vector2(M_inv * q0) : Vector2::Zero();
         bool          converged   = false;
         for (unsigned int it = 0; it < 60 && !converged; ++it)
           {
-            if (!w.evaluate(spring, in.l1, in.l2, e))
+            if (!w.evaluate(spring, in.l1, in.l2, e, false))
               return false;
             const Vector2 G = c * M_inv * (e - e0) - f + w.W_e;
             H               = c * M_inv + w.W_ee;
             Vector2 de      = -solve(H, G);
             if (!de.allFinite())
               return false;
+            // e is within |de| of the root: keep it and its spring B.
             converged = de.lpNorm<Eigen::Infinity>() <= 1e-13;
+            if (converged)
+              break;
             double lambda = 1.;
             for (unsigned int k = 0; k < 40; ++k, lambda *= 0.5)
               {
@@ -156,8 +160,10 @@ namespace cdea
           }
         if (!converged)
           return false;
+        if (request & law_energy)
+          w.energy = spring.energy(in.l1 / std::exp(e[0]), in.l2 / std::exp(e[1]));
       }
-    if (!w.evaluate(spring, in.l1, in.l2, e))
+    else if (!w.evaluate(spring, in.l1, in.l2, e, request & law_energy))
       return false;
 
     // Rate at the end of the step: de/dt = M sigma = -M W_e.

@@ -272,8 +272,9 @@ namespace cdea
                                       std::numeric_limits<double>::infinity();
     double       dt    = settings.max_step;
     unsigned int cutbacks = 0;
-    ModelState   older;
-    double       dt_older = 0.;
+    // The unknowns of the last two accepted steps, for the predictor.
+    ModelState   older, oldest;
+    double       dt_older = 0., dt_oldest = 0.;
     while (t_now < t_end * (1. - 1e-14) - 1e-14)
       {
         // Land on the next breakpoint, and never leave a sliver of a step
@@ -293,7 +294,21 @@ namespace cdea
           }
         const ModelState   state0  = model.state();
         const InertiaState motion0 = motion;
-        if (!older.unknowns.empty())
+        if (!oldest.unknowns.empty())
+          {
+            // Quadratic extrapolation through the last three states, at
+            // times -dt_older - dt_oldest, -dt_older, 0, to h.
+            const double t2 = -dt_older - dt_oldest, t1 = -dt_older;
+            const double w2 = (h - t1) * h / ((t2 - t1) * t2);
+            const double w1 = (h - t2) * h / ((t1 - t2) * t1);
+            const double w0 = 1. - w1 - w2;
+            ModelState guess = state0;
+            for (std::size_t i = 0; i < guess.unknowns.size(); ++i)
+              guess.unknowns[i] = w0 * state0.unknowns[i] + w1 * older.unknowns[i] +
+                                  w2 * oldest.unknowns[i];
+            model.set_state(guess);
+          }
+        else if (!older.unknowns.empty())
           model.predict(older, h / dt_older);
         SolveReport report1 = advance(t_now, h, motion);
         if (!report1.converged && !older.unknowns.empty())
@@ -390,8 +405,10 @@ namespace cdea
             current = evaluate(t_next);
           }
 
-        older    = state0;
-        dt_older = h;
+        oldest    = std::move(older);
+        dt_oldest = dt_older;
+        older     = state0;
+        dt_older  = h;
         t_now    = t_next;
         wants_fields = t_now == breakpoint || t_now >= next_fields_time - 1e-9 * h;
         if (wants_fields && settings.fields_interval > 0.)
