@@ -5,11 +5,13 @@
 // per time step and per Newton iteration. Then the whole program
 // (`cdea run FILE.prm`, output to a temporary folder) as a user runs it:
 // median wall time of a process, which adds library loading, MPI start-up,
-// printing and the HDF5 file.
+// printing and the HDF5 file, interleaved with processes of the quasi-static
+// default case (prm/default.prm), whose time is almost all start-up.
 //
 //   build/benchmarks/bench_time [FILE.prm] [CYCLES] [RUNS] [PROCESS_RUNS]
 //
-// CYCLES (if given and > 0) replaces Time/Cycles, for a quick smoke run.
+// CYCLES (if given and > 0) replaces Time/Cycles, for a quick smoke run:
+//   build/benchmarks/bench_time "" 1 1 1
 
 #include <cdea/app/commands.h>
 #include <cdea/app/mpi_session.h>
@@ -49,7 +51,7 @@ int main(int argc, char **argv)
 {
   const MpiSession  mpi(argc, argv);
   const std::string file =
-    argc > 1 ? argv[1] : std::string(CDEA_SOURCE_DIR) + "/prm/pump-time.prm";
+    argc > 1 && argv[1][0] != '\0' ? argv[1] : std::string(CDEA_SOURCE_DIR) + "/prm/pump-time.prm";
   const int cycles       = argc > 2 ? std::atoi(argv[2]) : 0;
   const int runs         = argc > 3 ? std::atoi(argv[3]) : 5;
   const int process_runs = argc > 4 ? std::atoi(argv[4]) : 5;
@@ -69,6 +71,12 @@ int main(int argc, char **argv)
   catch (const InputError &e)
     {
       std::cerr << "bench_time: " << e.what() << '\n';
+      std::filesystem::remove_all(out);
+      return 1;
+    }
+  if (!p.time.enabled)
+    {
+      std::cerr << "bench_time: " << file << " is not a time run (Time/Enabled = false)\n";
       std::filesystem::remove_all(out);
       return 1;
     }
@@ -103,23 +111,34 @@ int main(int argc, char **argv)
       per_iteration.push_back(t / std::max(1u, iterations));
     }
 
-  std::vector<double> process_time, process_cpu;
+  // Whole processes, interleaved with the quasi-static default case (its
+  // process is almost all start-up: the reference for what the time run adds).
+  const std::string reference =
+    cdea_bench::prm_writing_to(std::string(CDEA_SOURCE_DIR) + "/prm/default.prm", out / "default");
+  std::vector<double> process_time, process_cpu, reference_time;
   for (int k = 0; k < process_runs; ++k)
-    {
-      const auto   start     = std::chrono::steady_clock::now();
-      const double cpu_start = cpu_seconds(RUSAGE_CHILDREN);
-      const int  rc =
-        std::system((std::string(CDEA_EXECUTABLE) + " run " + prm + " > /dev/null").c_str());
-      process_time.push_back(
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-      process_cpu.push_back(cpu_seconds(RUSAGE_CHILDREN) - cpu_start);
-      if (rc != 0)
-        {
-          std::cerr << "bench_time: cdea run failed\n";
-          std::filesystem::remove_all(out);
-          return 1;
-        }
-    }
+    for (const std::string *run : {&prm, &reference})
+      {
+        const auto   start     = std::chrono::steady_clock::now();
+        const double cpu_start = cpu_seconds(RUSAGE_CHILDREN);
+        const int    rc        = std::system(
+          (std::string(CDEA_EXECUTABLE) + " run " + *run + " > /dev/null").c_str());
+        const double wall =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (rc != 0)
+          {
+            std::cerr << "bench_time: cdea run " << *run << " failed\n";
+            std::filesystem::remove_all(out);
+            return 1;
+          }
+        if (run == &prm)
+          {
+            process_time.push_back(wall);
+            process_cpu.push_back(cpu_seconds(RUSAGE_CHILDREN) - cpu_start);
+          }
+        else
+          reference_time.push_back(wall);
+      }
   std::filesystem::remove_all(out);
 
   using cdea_bench::median;
@@ -135,6 +154,7 @@ int main(int argc, char **argv)
   if (process_runs > 0)
     std::cout << "whole process `cdea run`, median of " << process_runs << ": "
               << median(process_time) * 1e3 << " ms (CPU " << median(process_cpu) * 1e3
-              << " ms)\n";
+              << " ms); the quasi-static default case, interleaved: "
+              << median(reference_time) * 1e3 << " ms\n";
   return 0;
 }

@@ -20,8 +20,10 @@ every file,
     still to creep at the end of the hold;
   - for a square waveform, each cycle's level drop at the end of its on half
     (state B) and of its off half (state A), each averaged over the last tenth
-    of the period, and their difference; the differences against the cycle
-    go to <base>_cycles.png, with the quasi-static levels --levels as lines.
+    of the period, and their difference, and the frequency and amplitude of
+    the displacement's oscillation in each half (the disk's ringing); the
+    differences against the cycle go to <base>_cycles.png, with the
+    quasi-static levels --levels as lines.
 With --elastic (a quasi-static run of the same scene) it also writes
 <base>_holds.png: the displacement at the end of every hold against the last
 ring's voltage, over the quasi-static curve.
@@ -125,6 +127,17 @@ class TimeRun:
                 values.append((self.level[window].mean(), self.disp[window].mean()))
             rows.append((k + 1, values[0][0], values[1][0], values[0][1], values[1][1]))
         return rows
+
+    def ringing(self, start, end):
+        """Frequency (from the zero crossings about the mean) and half the
+        peak-to-peak amplitude of the displacement on [start, end]."""
+        window = (self.t > start) & (self.t <= end)
+        t, x = self.t[window], self.disp[window] - self.disp[window].mean()
+        cross = np.where(np.diff(np.sign(x)) != 0)[0]
+        if len(cross) < 3:
+            return float("nan"), 0.5 * np.ptp(self.disp[window])
+        tc = t[cross] - x[cross] * (t[cross + 1] - t[cross]) / (x[cross + 1] - x[cross])
+        return (len(tc) - 1) / (2 * (tc[-1] - tc[0])), 0.5 * np.ptp(self.disp[window])
 
     def amplitude(self):
         """Half the peak-to-peak displacement over the last drive period."""
@@ -239,9 +252,17 @@ def report(run, min_hold, curve):
                   f" {late - early:11.5f} {qs:18.5f} {qs - late:20.5f}")
     cycles = run.cycles()
     if cycles:
-        print("  cycle  level B (mm)  level A (mm)  B - A (mm)  disp B (mm)  disp A (mm)")
+        # Ringing: the displacement over each half after its edge (+10 % of
+        # the half period).
+        half = 0.5 / run.frequency
+        print("  cycle  level B (mm)  level A (mm)  B - A (mm)  disp B (mm)  disp A (mm)"
+              "  ringing on: Hz, mm  off: Hz, mm")
         for k, b, a, db, da in cycles:
-            print(f"  {k:5d} {b:13.3f} {a:13.3f} {b - a:11.3f} {db:12.4f} {da:12.4f}")
+            t0 = 2 * (k - 1) * half
+            f_on, a_on = run.ringing(t0 + 0.1 * half, t0 + half)
+            f_off, a_off = run.ringing(t0 + 1.1 * half, t0 + 2 * half)
+            print(f"  {k:5d} {b:13.3f} {a:13.3f} {b - a:11.3f} {db:12.4f} {da:12.4f}"
+                  f" {f_on:10.3f} {a_on:7.3f} {f_off:8.3f} {a_off:7.3f}")
 
 
 def response(out, runs, labels):
