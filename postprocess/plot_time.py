@@ -25,8 +25,9 @@ every file,
     differences against the cycle go to <base>_cycles.png, with the
     quasi-static levels --levels as lines.
 With --elastic (a quasi-static run of the same scene) it also writes
-<base>_holds.png: the displacement at the end of every hold against the last
-ring's voltage, over the quasi-static curve.
+<base>_holds.png: the displacement over the last second of every hold against
+the last ring's voltage, over the quasi-static curve, and below it what is
+still to creep.
 
 Second form (--response): the stroke amplitude (half the peak-to-peak
 displacement over the last cycle) of each run against its drive frequency
@@ -201,23 +202,29 @@ def quasi_static_curve(path):
         n = len(stage)
         volts = np.asarray(s["voltage_kV"][...], dtype=float).reshape(n, -1)
         disp = np.asarray(s["displacement_mm"][...], dtype=float)
-        keep = stage >= 1
+        factor = np.asarray(s["load_factor"][...], dtype=float)
+        keep = (stage == 2) | ((stage == 1) & (factor == 1.0))
         if "time_s" in s:
             keep &= ~np.isfinite(np.asarray(s["time_s"][...], dtype=float))
     return volts[keep], disp[keep]
 
 
 def plot_holds(runs, labels, elastic, out_dir, min_hold):
-    volts, disp = quasi_static_curve(elastic)
-    fig, ax = plt.subplots(figsize=(6.5, 4.5))
-    ax.plot(volts[:, -1], disp, "k-", lw=1.2, label="quasi-static (elastic)")
+    curve = quasi_static_curve(elastic)
+    fig, axes = plt.subplots(2, 1, figsize=(6.5, 6.5), sharex=True)
+    axes[0].plot(curve[0][:, -1], curve[1], "k-", lw=1.2, label="quasi-static (elastic)")
     for run, label in zip(runs, labels):
         ends = [e for _, e in run.holds(min_hold)]
-        ax.plot(run.volts[ends, -1], run.disp[ends], "o", ms=4, label=f"{label}: end of each hold")
-    ax.set_xlabel("voltage of the last ring (kV)")
-    ax.set_ylabel("displacement (mm)")
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
+        last = [run.disp[(run.t >= run.t[e] - 1.0) & (run.t <= run.t[e])].mean() for e in ends]
+        qs = [quasi_static_at(curve, run.volts[e]) for e in ends]
+        axes[0].plot(run.volts[ends, -1], last, "o", ms=4, label=f"{label}: end of each hold")
+        axes[1].plot(run.volts[ends, -1], np.array(qs) - np.array(last), "o-", ms=4, label=label)
+    axes[0].set_ylabel("displacement (mm)")
+    axes[1].set_ylabel("still to creep (mm)")
+    axes[1].set_xlabel("voltage of the last ring (kV)")
+    for ax in axes:
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
     save(fig, os.path.join(out_dir, runs[0].name + "_holds.png"))
 
 
