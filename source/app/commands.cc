@@ -2,6 +2,7 @@
 #include <cdea/app/parameters.h>
 #include <cdea/app/pump.h>
 #include <cdea/app/run_control.h>
+#include <cdea/app/time_run.h>
 #include <cdea/format.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/output/paraview_writer.h>
@@ -22,6 +23,14 @@
 
 namespace cdea
 {
+  double summary_column(const StepSummary &s, const std::string &name)
+  {
+    for (const auto &[key, value] : s.columns)
+      if (key == name)
+        return value;
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+
   std::string usage()
   {
     return "cdea: finite-element model of a cone dielectric elastomer actuator with a\n"
@@ -102,13 +111,9 @@ namespace cdea
 
   namespace
   {
-    /// A postprocessor column of a summary (NaN if absent).
     double column(const StepSummary &s, const std::string &name)
     {
-      for (const auto &[key, value] : s.columns)
-        if (key == name)
-          return value;
-      return std::numeric_limits<double>::quiet_NaN();
+      return summary_column(s, name);
     }
 
     /// "-" for NaN, else fixed-point with @p decimals.
@@ -400,6 +405,13 @@ namespace cdea
                     << command << "'\n";
           return false;
         }
+      if (p.time.enabled)
+        {
+          std::cerr << "cdea: Time/Enabled = true is implemented for 'cdea run' only: set it to "
+                       "false for 'cdea "
+                    << command << "'\n";
+          return false;
+        }
       return true;
     }
 
@@ -445,6 +457,8 @@ namespace cdea
     if (!in)
       return exit_input_error;
     const Parameters &p = in->parameters;
+    if (p.time.enabled)
+      return run_time(p, in->scene, in->text);
     const auto        model_ptr = make_fe_model(p, in->scene);
     MembraneModel    &model     = *model_ptr;
     std::cout << "FE model: " << model.n_elements() << " elements of degree "

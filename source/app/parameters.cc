@@ -345,6 +345,8 @@ namespace cdea
     parameters::Optimization::declare(prm);
     parameters::Calibration::declare(prm);
     parameters::Output::declare(prm);
+    parameters::ViscousMaterial::declare(prm);
+    parameters::Time::declare(prm);
   }
 
   void Parameters::parse(ParameterHandler &prm)
@@ -362,6 +364,8 @@ namespace cdea
     optimization.parse(prm);
     calibration.parse(prm);
     output.parse(prm);
+    viscous_material.parse(prm);
+    time.parse(prm);
   }
 
   std::string to_string(const Continuation choice)
@@ -415,17 +419,22 @@ namespace cdea
 
   namespace
   {
+    std::string format(const double x);
+  }
+
+  void require_positive(const double value, const std::string &name)
+  {
+    if (!(value > 0.) || !std::isfinite(value))
+      throw InputError(name + " must be positive, got " + format(value));
+  }
+
+  namespace
+  {
     std::string format(const double x)
     {
       std::ostringstream s;
       s << x;
       return s.str();
-    }
-
-    void require_positive(const double value, const std::string &name)
-    {
-      if (!(value > 0.) || !std::isfinite(value))
-        throw InputError(name + " must be positive, got " + format(value));
     }
 
   } // namespace
@@ -564,6 +573,7 @@ namespace cdea
         throw InputError("in parameter file '" + filename + "': " + fold_whitespace(message.str()));
       }
     validate_ranges(parameters, parameters.scene()); // now, before anything is written
+    validate_time(parameters);
     {
       std::ifstream      in(filename);
       std::ostringstream content;

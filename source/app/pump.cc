@@ -7,26 +7,13 @@
 
 namespace cdea
 {
-  namespace
-  {
-    void require_positive(const double value, const std::string &name)
-    {
-      if (!(value > 0.) || !std::isfinite(value))
-        {
-          std::ostringstream m;
-          m << "Reservoir/" << name << " must be positive, got " << value;
-          throw InputError(m.str());
-        }
-    }
-  } // namespace
-
   void validate_reservoir(const Parameters &p)
   {
     const auto &r = p.reservoir;
-    require_positive(r.width_mm, "Width (mm)");
-    require_positive(r.depth_mm, "Depth (mm)");
-    require_positive(r.water_volume_ml, "Water volume (ml)");
-    require_positive(r.water_density, "Water density (kg/m^3)");
+    require_positive(r.width_mm, "Reservoir/Width (mm)");
+    require_positive(r.depth_mm, "Reservoir/Depth (mm)");
+    require_positive(r.water_volume_ml, "Reservoir/Water volume (ml)");
+    require_positive(r.water_density, "Reservoir/Water density (kg/m^3)");
   }
 
   double tube_area(const Parameters &p)

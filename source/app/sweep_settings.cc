@@ -113,6 +113,9 @@ namespace cdea
     if (p.reservoir.water_load)
       throw InputError("Reservoir/Water load = true is not supported by cdea sweep: the maps "
                        "are of the actuator under its dead load alone (use false)");
+    if (p.time.enabled)
+      throw InputError("Time/Enabled = true is not supported by cdea sweep: the maps are "
+                       "quasi-static (use false)");
     SweepSettings s;
     const double  b_over_a = scene.frame_radius / scene.disk_radius;
 

@@ -184,6 +184,15 @@ namespace cdea
             f.Phi.push_back(Phi);
             f.E.push_back(Phi * p.l1 * p.l2 / H);
             f.ring.push_back(cell.ring);
+            // A viscous law stores xi1, xi2 first (two_network_gent.h).
+            if (m.membrane.n_internal() >= 2)
+              {
+                const double *xi = m.membrane.internal_current.data() +
+                                   (std::size_t(c) * mesh.energy_rule.size() + q) *
+                                     m.membrane.n_internal();
+                f.xi1.push_back(xi[0]);
+                f.xi2.push_back(xi[1]);
+              }
           }
         previous_ring = cell.ring;
       }

@@ -23,6 +23,7 @@ namespace cdea
     , dead_load(kernel.add_term(std::make_unique<DeadLoadTerm>()))
     , volume_term(kernel.add_term(std::make_unique<EnclosedVolumeTerm>()))
     , water(kernel.add_term(std::make_unique<WaterTerm>()))
+    , inertia(kernel.add_term(std::make_unique<InertiaTerm>()))
     , plain_law(std::make_shared<GentDielectricLaw>(scene_in.material))
     , relaxed_law(std::make_shared<TensionField>(plain_law))
     , solution(Eigen::VectorXd::Zero(mesh.n_dofs()))
@@ -260,6 +261,9 @@ namespace cdea
 
   void MembraneModel::set_relaxed(const bool relaxed)
   {
+    if (relaxed && impl->plain_law->n_internal_variables() != 0)
+      throw std::invalid_argument("MembraneModel::set_relaxed: the relaxed (tension-field) "
+                                  "membrane needs an elastic law");
     impl->relaxed = relaxed;
     impl->membrane.set_law(relaxed ? impl->relaxed_law : impl->plain_law);
     impl->tangent_is_current = false;

@@ -3,6 +3,7 @@
 // continuation); not installed with the public headers.
 
 #include <cdea/fe/cell_kernel.h>
+#include <cdea/fe/inertia_term.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/fe/membrane_term.h>
 #include <cdea/fe/trilinos_solver.h>
@@ -25,6 +26,7 @@ namespace cdea
     DeadLoadTerm        &dead_load;
     EnclosedVolumeTerm  &volume_term;
     WaterTerm           &water;
+    InertiaTerm         &inertia;
 
     std::shared_ptr<const MembraneLaw> plain_law, relaxed_law;
     bool                               relaxed = false;

@@ -213,7 +213,7 @@ namespace cdea
     std::vector<double> StepFields::*const field_members[] = {
       &StepFields::R,       &StepFields::r,       &StepFields::z,  &StepFields::theta,
       &StepFields::lambda1, &StepFields::lambda2, &StepFields::s1, &StepFields::s2,
-      &StepFields::E,       &StepFields::Phi};
+      &StepFields::E,       &StepFields::Phi,     &StepFields::xi1, &StepFields::xi2};
   } // namespace
 
   JournalWriter::~JournalWriter() { close(); }

@@ -276,6 +276,9 @@ namespace cdea
         throw std::invalid_argument(prefix + "StepFields::" + s.first + " has " +
                                     std::to_string(s.second) + " entries but R has " +
                                     std::to_string(n));
+    if ((!fields.xi1.empty() || !fields.xi2.empty()) &&
+        (fields.xi1.size() != n || fields.xi2.size() != n))
+      throw std::invalid_argument(prefix + "StepFields::xi1, xi2 must be empty or as long as R");
     std::set<std::string> seen;
     for (const auto &column : extra_columns)
       {
@@ -339,6 +342,12 @@ namespace cdea
     for (const auto &[name, value] : extra_columns)
       d.write_row(name, d.extra_columns.at(name), row, &value);
 
+    if (fields.R.empty()) // a /summary row alone (time-dependent runs, doc/time.md)
+      {
+        d.rows = row + 1;
+        return;
+      }
+
     // /steps/NNNNNN
     char group_name[32];
     std::snprintf(group_name, sizeof(group_name), "%06llu", static_cast<unsigned long long>(row));
@@ -366,6 +375,10 @@ namespace cdea
     d.write_scaled_field(group, "Phi", fields.Phi, to_kV, "kV", "voltage across the film");
     d.write_field(group, "ring", H5T_STD_I32LE, H5T_NATIVE_INT, fields.ring.data(),
                   fields.ring.size(), "1", "index of the electrode ring (0 = innermost)");
+    if (!fields.xi1.empty()) // viscous stretches of a time-dependent run (doc/time.md)
+      for (const auto &[name, xi] : {std::pair{"xi1", &fields.xi1}, std::pair{"xi2", &fields.xi2}})
+        d.write_scaled_field(group, name, *xi, 1., "1",
+                             "viscous (dashpot) stretch " + std::string(name));
     d.rows = row + 1;
   }
 

@@ -5,6 +5,7 @@
 // Scene and rejects bad input with an InputError that names the parameter.
 
 #include <cdea/app/parameters_design.h>
+#include <cdea/app/parameters_time.h>
 #include <cdea/scene.h>
 #include <cdea/solver/tangent_solver.h>
 
@@ -177,6 +178,8 @@ namespace cdea
     parameters::Optimization   optimization;
     parameters::Calibration    calibration;
     parameters::Output         output;
+    parameters::ViscousMaterial viscous_material; ///< parameters_time.h
+    parameters::Time            time;             ///< parameters_time.h
 
     static void declare(dealii::ParameterHandler &prm);
     void        parse(dealii::ParameterHandler &prm);
@@ -208,6 +211,9 @@ namespace cdea
   /// One finite number, the whole of @p token; otherwise an InputError naming
   /// the parameter @p name and the entry @p text it came from.
   double parse_number(const std::string &token, const std::string &name, const std::string &text);
+
+  /// An InputError "NAME must be positive, got VALUE" unless 0 < value < infinity.
+  void require_positive(double value, const std::string &name);
 
   /// Parse "1, 1.7, 3" into numbers; @p name is used in error messages.
   std::vector<double> parse_number_list(const std::string &text, const std::string &name);

@@ -24,6 +24,7 @@
 #include <cdea/solver/equilibrium_model.h>
 #include <cdea/solver/newton.h>
 #include <cdea/solver/tangent_solver.h>
+#include <cdea/solver/transient_model.h>
 
 #include <memory>
 
@@ -31,7 +32,7 @@ namespace cdea
 {
   struct AssembledSystem;
 
-  class MembraneModel : public EquilibriumModel
+  class MembraneModel : public TransientModel
   {
   public:
     MembraneModel(const Scene &scene, const FeDiscretization &discretization,
@@ -96,6 +97,22 @@ namespace cdea
 
     /// Index of the dof holding z at the disk edge.
     unsigned int disk_z_dof() const;
+
+    // Time-dependent runs (source/fe/membrane_time.cc; doc/time.md).
+    /// Replace the material law (elastic or with internal variables; the
+    /// relaxed wrinkling model needs an elastic one). Internal variables
+    /// start relaxed at the current state.
+    void set_material_law(std::shared_ptr<const MembraneLaw> law);
+    const MembraneLaw &material_law() const;
+    void   set_time_step(double dt, TimeScheme scheme) override;
+    void   set_inertia(const InertiaStep &inertia) override;
+    void   accept_time_step() override;
+    void   relax_internal_variables() override;
+    double step_dissipation() const override;
+    bool   has_internal_variables() const override;
+    double disk_position() const override;
+    EnergyBudget energy_budget() const override;
+    double disk_stiffness() const override;
 
   private:
     /// Sensitivities use the tangent of the converged state (fe/sensitivities.h).

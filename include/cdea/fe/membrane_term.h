@@ -45,6 +45,8 @@ namespace cdea
     void set_voltages(const std::vector<double> &voltages);
     /// The time step of the internal variables (0: they stay as they are).
     void set_time_step(double dt, TimeScheme scheme);
+    double     time_step() const { return dt; }
+    TimeScheme time_scheme() const { return scheme; }
 
     bool add_cell(const CellInput &cell, unsigned int flags, CellScratch &scratch,
                   CellContribution &contribution) override;

@@ -117,6 +117,14 @@ namespace cdea
     /// Largest hoop stretch inside the law's range at meridian stretch l1
     /// (a relaxation searches the natural width below it).
     virtual double max_hoop_stretch(double l1) const = 0;
+
+    /// Energy dissipated per reference volume over @p step (old to current
+    /// internal variables in dt), for energy budgets; 0 for an elastic law.
+    virtual double dissipation(const InternalStep &step) const
+    {
+      (void)step;
+      return 0.;
+    }
   };
 
   /// The ideal-dielectric Gent law of GentDielectric as a MembraneLaw.

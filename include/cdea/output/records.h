@@ -54,6 +54,8 @@ namespace cdea
   {
     std::vector<double> R, r, z, theta, lambda1, lambda2, s1, s2, E, Phi;
     std::vector<int>    ring;
+    /// Viscous stretches of a law with internal variables (empty otherwise).
+    std::vector<double> xi1, xi2;
   };
 
   /// Where the hoop stress first reaches zero (also used for the first

@@ -20,7 +20,9 @@
 //                 stage parameter t there), plus set_summary_attribute() ones
 //   /steps/NNNNNN           one group per appended step (6 digits from 000000)
 //       R, r, z (mm), theta (rad), lambda1, lambda2, s1, s2 (kPa), E (MV/m),
-//       Phi (kV), ring (int); 1D, one entry per sample point
+//       Phi (kV), ring (int), and xi1, xi2 for a viscous film (time runs);
+//       1D, one entry per sample point. A step appended with empty fields
+//       (R empty) has a /summary row and no group (time runs, doc/time.md)
 //     attributes: stage (int), load_factor, voltage_kV (double[n_rings]),
 //                 displacement_mm
 //

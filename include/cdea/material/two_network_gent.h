@@ -1,0 +1,90 @@
+#pragma once
+// Viscoelastic ideal dielectric: the two-network (rheological) model of Hong,
+// J. Mech. Phys. Solids 59 (2011) 637, and Zhao, Koh and Suo, Int. J. Appl.
+// Mech. 3 (2011) 203, for an incompressible membrane.
+//
+// Network A, a Gent spring (mu_A, Jlim_A), carries the long-time response; in
+// parallel, network B is a Gent spring (mu_B, Jlim_B) in series with a
+// Newtonian dashpot of viscosity eta. The dashpot's stretches xi1, xi2
+// (xi3 = 1 / (xi1 xi2)) are internal variables; spring B sees the elastic
+// stretches a_i = l_i / xi_i. With the voltage term of the ideal dielectric,
+//
+//   W = W_A(l1, l2) + W_B(a1, a2) - (eps / 2) (Phi l1 l2 / H)^2.
+//
+// Evolution: the dashpot's deviatoric rate equals its deviatoric stress over
+// 2 eta, with spring B's in-plane true stresses sigma_i = a_i dW_B/da_i
+// (sigma_3 = 0). In the viscous log-strains e_i = ln xi_i this is
+//
+//   de/dt = M sigma,   M = [[2, -1], [-1, 2]] / (6 eta),   eta = mu_B tau,
+//
+// which for the equi-biaxial film is Zhao, Koh and Suo's
+// dxi/dt = xi (mu_B / 6 eta) (l^2 xi^-2 - l^-4 xi^4) / g_B. Since sigma = -dW_B/de,
+// the flow is a gradient flow, dissipating sigma . M sigma >= 0.
+//
+// Time integration over a step dt (InternalStep), as minimisation of an
+// incremental potential over e, so that the algorithmic stress is
+// dPsi/dl and the consistent tangent is symmetric:
+//   backward Euler:  Psi = W + (e - e0)^T M^-1 (e - e0) / (2 dt);
+//   trapezoidal:     Psi = W + (e - e0)^T M^-1 (e - e0) / dt - (M^-1 q0) . (e - e0),
+// where q0 = de/dt at the start of the step (second order; not L-stable, so
+// a relaxation time much shorter than dt leaves an oscillating error).
+// Stationarity G(e) = dPsi/de = 0 is solved at every point by Newton's
+// method on the 2 x 2 system; then
+//   stress = dW/dl at e,   tangent = W_ll - W_le H^-1 W_el,   H = dG/de.
+// dt = 0 holds xi fixed (instantaneous, "glassy" response); dt = +infinity
+// relaxes network B completely (xi = l, W_B = 0: network A alone).
+//
+// Internal variables per point, in this order: xi1, xi2, q1, q2 with
+// q = de/dt at the end of the step (1/s), which the trapezoidal rule needs.
+
+#include <cdea/material/membrane_law.h>
+
+namespace cdea
+{
+  /// Spring B and the dashpot.
+  struct ViscousNetwork
+  {
+    double shear_modulus   = 0.; ///< mu_B (Pa)
+    double jlim            = 0.; ///< Jlim_B (-)
+    double relaxation_time = 0.; ///< tau = eta / mu_B (s)
+  };
+
+  class TwoNetworkGentLaw final : public MembraneLaw
+  {
+  public:
+    /// @p network_a: mu_A, Jlim_A and the dielectric (permittivity, thickness).
+    TwoNetworkGentLaw(const MaterialConstants &network_a, const ViscousNetwork &network_b);
+
+    unsigned int n_internal_variables() const override { return 4; }
+
+    /// xi = (l1, l2), no viscous rate.
+    void relaxed_internal_variables(const LawInput &input, double *values) const override;
+
+    /// Energy is the incremental potential Psi of the step (W itself for
+    /// dt = 0); false outside either Gent limit or if the local update fails.
+    bool evaluate(const LawInput &input, const InternalStep &step, unsigned int request,
+                  LawResponse &response) const override;
+
+    /// Network A's constants, the permittivity and the voltage: spring B and
+    /// the update of e do not depend on them, so these are network A's.
+    bool parameter_derivative(const LawInput &input, const InternalStep &step,
+                              LawParameter parameter, double &d_energy,
+                              NominalStress &d_stress) const override;
+
+    /// Network A's limit (spring B's depends on the viscous stretches).
+    double max_hoop_stretch(double l1) const override;
+
+    /// (e - e0)^T M^-1 (e - e0) / dt: the dashpot's work over a step of
+    /// either scheme (exact rate times dt for backward Euler, the mean of the
+    /// end rates for the trapezoidal rule); 0 for dt = 0 or infinity.
+    double dissipation(const InternalStep &step) const override;
+
+    const MaterialConstants &network_a() const { return a; }
+    const ViscousNetwork    &network_b() const { return b; }
+
+  private:
+    MaterialConstants a;
+    ViscousNetwork    b;
+    MaterialConstants spring_b; ///< network B's spring as a Gent law (no voltage)
+  };
+} // namespace cdea

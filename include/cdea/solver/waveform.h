@@ -1,0 +1,60 @@
+#pragma once
+// Ring voltages as functions of time for time-dependent runs (Time/Waveform):
+//
+//   ramp-hold  linear from 0 to the peak in the ramp time, then held;
+//   square     0.5 duty square wave between 0 and the peak, starting on,
+//              each edge a linear ramp of the rise time;
+//   sine       peak (1 - cos(2 pi f t)) / 2: between 0 and the peak, from rest;
+//   table      piecewise linear through rows (t, one voltage per ring), from
+//              0 V at t = 0 when the first row is later.
+//
+// All but the sine are piecewise linear through knots; the time stepper lands
+// on every knot (breakpoint) so that no kink or edge falls inside a step.
+
+#include <vector>
+
+namespace cdea
+{
+  enum class WaveformKind
+  {
+    ramp_hold,
+    square,
+    sine,
+    table
+  };
+
+  class Waveform
+  {
+  public:
+    Waveform() = default;
+
+    /// Volts per ring; times in seconds.
+    static Waveform ramp_hold(const std::vector<double> &peak, double ramp_time, double hold_time);
+    static Waveform square(const std::vector<double> &peak, double frequency, unsigned int cycles,
+                           double rise_time);
+    static Waveform sine(const std::vector<double> &peak, double frequency, unsigned int cycles);
+    /// Rows of strictly increasing times >= 0 with one voltage per ring each.
+    static Waveform table(const std::vector<double> &times,
+                          const std::vector<std::vector<double>> &voltages);
+
+    WaveformKind kind() const { return kind_; }
+    unsigned int n_rings() const { return peak_.size(); }
+    /// Largest voltage of each ring (V).
+    const std::vector<double> &peak() const { return peak_; }
+    double       end_time() const { return end; }
+    /// Drive frequency (Hz) of a periodic waveform, 0 otherwise.
+    double frequency() const { return frequency_; }
+
+    std::vector<double> voltages(double t) const;
+    /// The first knot strictly after @p t (end_time() at the latest).
+    double next_breakpoint(double t) const;
+
+  private:
+    WaveformKind                     kind_      = WaveformKind::ramp_hold;
+    std::vector<double>              peak_;
+    double                           frequency_ = 0.;
+    double                           end        = 0.;
+    std::vector<double>              knot_times;
+    std::vector<std::vector<double>> knot_voltages;
+  };
+} // namespace cdea

@@ -1,0 +1,141 @@
+#include <cdea/app/commands.h>
+#include <cdea/app/parameters.h>
+#include <cdea/app/pump.h>
+#include <cdea/app/time_run.h>
+#include <cdea/format.h>
+#include <cdea/output/results_file.h>
+#include <cdea/solver/time_stepper.h>
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <sstream>
+
+namespace cdea
+{
+  namespace
+  {
+    double column(const StepSummary &s, const std::string &name)
+    {
+      return summary_column(s, name);
+    }
+
+    std::string fixed_or_dash(const double value, const int decimals, const int width)
+    {
+      return std::isnan(value) ? std::string(width - 1, ' ') + "-" :
+                                 format_fixed(value, decimals, width);
+    }
+  } // namespace
+
+  int run_time(const Parameters &p, const Scene &scene, const std::string &prm_text)
+  {
+    const TimeSettings settings = time_settings(p, scene);
+    const auto         model    = make_fe_model(p, scene);
+    model->set_material_law(material_law(p, scene));
+
+    const std::string            path = p.results_path();
+    std::unique_ptr<ResultsFile> file;
+    try
+      {
+        file = std::make_unique<ResultsFile>(
+          path, prm_text, scene.n_rings(),
+          std::vector<std::pair<std::string, std::string>>{
+            {"method", "finite elements in time"},
+            {"material_model", to_string(p.viscous_material.model)},
+            {"waveform", to_string(p.time.waveform)},
+            {"time_scheme", to_string(p.time.scheme)}});
+      }
+    catch (const std::exception &e)
+      {
+        std::cerr << "cdea: cannot write results: " << e.what() << '\n';
+        return exit_input_error;
+      }
+
+    TimeStepper stepper(scene, *model, stepping_settings(p), settings);
+    const double area = tube_area(p);
+    stepper.add_postprocessor([area] { return std::make_unique<EnclosedVolume>(area); });
+    for (const SummaryColumn &c : stepper.columns())
+      file->describe_column(c.name, c.unit, c.description);
+
+    std::cout << "FE model: " << model->n_elements() << " elements of degree "
+              << p.discretization.polynomial_degree << ", " << model->n_dofs() << " unknowns\n"
+              << "Time: " << to_string(p.time.waveform) << " waveform, peak "
+              << format_kV(settings.waveform.peak())
+              << " over " << format_number(settings.waveform.end_time()) << " s, steps up to "
+              << format_number(settings.max_step) << " s (" << to_string(settings.scheme)
+              << "), material " << to_string(p.viscous_material.model)
+              << (settings.inertia ? ", disk inertia" : ", no inertia")
+              << (settings.water_density > 0. ? " and water column" : "") << '\n'
+              << "writing " << path << '\n';
+    const unsigned int n = scene.n_rings();
+    std::cout << std::setw(6) << "step" << std::setw(12) << "stage" << std::setw(11) << "time (s)"
+              << std::setw(7 * n) << "V (kV)" << std::setw(12) << "disp (mm)" << std::setw(12)
+              << "stroke (mm)" << std::setw(11) << "level (mm)" << std::setw(11) << "v (mm/s)"
+              << std::setw(11) << "min s2/mu" << std::setw(5) << "its" << '\n';
+    StepSummary last;
+    stepper.on_step = [&](const StepSummary &s) {
+      file->append(s, stepper.fields_wanted() ? stepper.step_fields() : StepFields(), s.columns);
+      last = s;
+      std::ostringstream v;
+      for (const double x : s.voltages)
+        v << format_fixed(x * 1e-3, 3, 7);
+      std::cout << std::setw(6) << file->n_steps() - 1 << std::setw(12)
+                << (s.stage == Stage::voltage ? "time" : stage_name(s.stage))
+                << fixed_or_dash(column(s, "time_s"), 4, 11) << v.str()
+                << format_fixed(s.displacement * 1e3, 5, 12) << fixed_or_dash(s.stroke * 1e3, 5, 12)
+                << fixed_or_dash(column(s, "level_drop_mm"), 3, 11)
+                << fixed_or_dash(column(s, "disk_velocity_mm_per_s"), 2, 11)
+                << format_fixed(s.s2_min / scene.material.shear_modulus, 4, 11) << std::setw(5)
+                << s.newton_iterations << '\n';
+    };
+    stepper.on_onset = [&](const OnsetRecord &onset) {
+      file->write_onset(onset);
+      std::cout << "      loss of tension (s2 = 0) at t = " << format_number(onset.load_factor, 8)
+                << " s, " << format_kV(onset.voltages) << ", radius r = "
+                << format_number(onset.radius * 1e3) << " mm" << std::endl;
+    };
+
+    // The disk's natural frequency sqrt(k/m) / 2 pi at the first and the last
+    // state of the time integration (k: the condensed static tangent).
+    double     frequency_start = std::numeric_limits<double>::quiet_NaN();
+    const auto frequency       = [&] {
+      return scene.mass > 0. ? std::sqrt(std::max(model->disk_stiffness(), 0.) / scene.mass) /
+                                 (2. * M_PI) :
+                               std::numeric_limits<double>::quiet_NaN();
+    };
+    const auto on_step = stepper.on_step;
+    stepper.on_step    = [&](const StepSummary &s) {
+      if (std::isnan(frequency_start) && !std::isnan(column(s, "time_s")))
+        frequency_start = frequency();
+      on_step(s);
+    };
+
+    const auto      start  = std::chrono::steady_clock::now();
+    const RunResult result = stepper.run();
+    const double    seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::cout << "\nFinal state: t = " << format_number(stepper.time(), 8) << " s, voltages "
+              << format_kV(last.voltages) << ", displacement "
+              << format_number(last.displacement * 1e3, 8) << " mm, stroke "
+              << format_number(last.stroke * 1e3, 8) << " mm, level drop "
+              << format_number(column(last, "level_drop_mm"), 6) << " mm\n"
+              << "  energy since t = 0: electrical work "
+              << format_number(column(last, "electrical_work_mJ"), 6) << " mJ, stored "
+              << format_number(column(last, "stored_energy_change_mJ"), 6) << " mJ, dissipated "
+              << format_number(column(last, "dissipated_energy_mJ"), 6) << " mJ\n"
+              << "  disk's natural frequency sqrt(k/m) / 2 pi: "
+              << format_number(frequency_start, 4) << " Hz at the start, "
+              << format_number(frequency(), 4) << " Hz at the end\n"
+              << result.steps << " steps, " << result.newton_iterations << " Newton iterations, "
+              << std::setprecision(3) << seconds << " s" << std::endl;
+    if (!result.completed)
+      {
+        std::cerr << "cdea: the run stopped early: " << result.message << "\n"
+                  << "cdea: the " << file->n_steps() << " converged steps are in " << path << '\n';
+        return exit_not_complete;
+      }
+    return exit_success;
+  }
+} // namespace cdea
