@@ -1,10 +1,9 @@
 #include <deal.II/base/parameter_handler.h>
 
+#include <cdea/app/parameter_input.h>
 #include <cdea/app/parameters.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
 namespace cdea
@@ -418,23 +417,6 @@ namespace cdea
       if (!(value > 0.) || !std::isfinite(value))
         throw InputError(name + " must be positive, got " + format(value));
     }
-
-    /// deal.II's messages span several indented lines: fold them into one.
-    std::string one_line(const std::string &text)
-    {
-      std::string out;
-      for (const char c : text)
-        if (c == '\n' || c == ' ' || c == '\t')
-          {
-            if (!out.empty() && out.back() != ' ')
-              out += ' ';
-          }
-        else
-          out += c;
-      while (!out.empty() && out.back() == ' ')
-        out.pop_back();
-      return out;
-    }
   } // namespace
 
   Scene Parameters::scene() const
@@ -537,34 +519,7 @@ namespace cdea
 
   Parameters read_parameters(const std::string &filename, std::string *text)
   {
-    {
-      std::ifstream probe(filename);
-      if (!probe || !std::filesystem::is_regular_file(filename))
-        throw InputError("cannot read parameter file '" + filename +
-                         "': it does not exist, is not a regular file or is not readable");
-    }
-    ParameterHandler prm;
-    Parameters::declare(prm);
-    try
-      {
-        prm.parse_input(filename, "", false, false);
-      }
-    catch (const dealii::ExceptionBase &e)
-      {
-        std::ostringstream message;
-        e.print_info(message);
-        throw InputError("in parameter file '" + filename + "': " + one_line(message.str()));
-      }
-    Parameters parameters;
-    parameters.parse(prm);
-    parameters.scene(); // validate now, before anything is written
-    if (text)
-      {
-        std::ostringstream out;
-        prm.print_parameters(out, ParameterHandler::ShortText);
-        *text = out.str();
-      }
-    return parameters;
+    return read_parameters(ParameterInput::file(filename), text);
   }
 
   std::string default_parameter_file(const ParameterFormat format)

@@ -1,5 +1,6 @@
 #include <cdea/output/hdf5_support.h>
 #include <cdea/output/results_file.h>
+#include <cdea/output/results_layout.h>
 
 #include <hdf5.h>
 
@@ -20,13 +21,6 @@ namespace cdea
   namespace
   {
     constexpr double nan_value = std::numeric_limits<double>::quiet_NaN();
-
-    // Unit conversions from SI to the file's units.
-    constexpr double to_mm   = 1e3;
-    constexpr double to_kPa  = 1e-3;
-    constexpr double to_kV   = 1e-3;
-    constexpr double to_MV_m = 1e-6;
-    constexpr double to_g    = 1e3;
 
     constexpr hsize_t summary_chunk_rows = 128;
 
@@ -255,11 +249,9 @@ namespace cdea
                             const std::string         &unit,
                             const std::string         &description) const
     {
-      std::vector<double> scaled(values.size());
-      for (std::size_t i = 0; i < values.size(); ++i)
-        scaled[i] = values[i] * factor;
-      write_field(group, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, scaled.data(), scaled.size(),
-                  unit, description);
+      const std::vector<double> v = scaled(values, factor);
+      write_field(group, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, v.data(), v.size(), unit,
+                  description);
     }
 
     void write_extra_description(const std::string &name) const
@@ -275,28 +267,6 @@ namespace cdea
                  "extra summary column (the unit is part of the name); NaN where not written");
     }
   };
-
-  namespace
-  {
-    const char *const standard_column_names[] = {"stage",
-                                                 "load_factor",
-                                                 "voltage_kV",
-                                                 "mass_g",
-                                                 "displacement_mm",
-                                                 "stroke_mm",
-                                                 "s2_min_kPa",
-                                                 "s2_ring_inner_kPa",
-                                                 "wrinkled",
-                                                 "newton_iterations"};
-
-    std::vector<double> scaled(const std::vector<double> &values, const double factor)
-    {
-      std::vector<double> result(values.size());
-      for (std::size_t i = 0; i < values.size(); ++i)
-        result[i] = values[i] * factor;
-      return result;
-    }
-  } // namespace
 
   ResultsFile::ResultsFile(const std::string &path,
                            const std::string &parameters_text,
@@ -358,27 +328,8 @@ namespace cdea
                                        "H5Gcreate2(/steps)"),
                            H5Gclose);
 
-    impl->add_standard_column("stage", true, false, "1",
-                              "stage of the run: 0 pre-stretch, 1 dead load, 2 voltage");
-    impl->add_standard_column("load_factor", false, false, "1",
-                              "stage parameter (voltage path parameter in stage 2)");
-    impl->add_standard_column("voltage_kV", false, true, "kV",
-                              "voltage of each ring (steps x rings)");
-    impl->add_standard_column("mass_g", false, false, "g", "dead-load mass on the disk");
-    impl->add_standard_column("displacement_mm", false, false, "mm",
-                              "disk deflection from the frame plane |z(disk) - z(frame)|");
-    impl->add_standard_column("stroke_mm", false, false, "mm",
-                              "displacement minus its zero-voltage value under the same load "
-                              "(NaN before the end of the load stage)");
-    impl->add_standard_column("s2_min_kPa", false, false, "kPa",
-                              "smallest nominal hoop stress s2 anywhere");
-    impl->add_standard_column("s2_ring_inner_kPa", false, true, "kPa",
-                              "nominal hoop stress s2 at the inner edge of each ring "
-                              "(steps x rings)");
-    impl->add_standard_column("wrinkled", true, false, "1",
-                              "1 if the hoop stress is negative somewhere (loss of tension)");
-    impl->add_standard_column("newton_iterations", true, false, "1",
-                              "Newton iterations of the converged step");
+    for (const StandardColumn &c : standard_summary_columns())
+      impl->add_standard_column(c.name, c.integer, c.per_ring, c.unit, c.description);
 
     write_onset(OnsetRecord{});
   }
@@ -441,30 +392,15 @@ namespace cdea
     const hsize_t    row = d.rows;
 
     // /summary row.
-    const int stage      = static_cast<int>(summary.stage);
-    const int wrinkled   = summary.wrinkled ? 1 : 0;
-    const int iterations = static_cast<int>(summary.newton_iterations);
-    const double              mass_g          = summary.mass * to_g;
-    const double              displacement_mm = summary.displacement * to_mm;
-    const double              stroke_mm       = summary.stroke * to_mm;
-    const double              s2_min_kPa      = summary.s2_min * to_kPa;
-    const std::vector<double> voltage_kV      = scaled(summary.voltages, to_kV);
-    const std::vector<double> s2_ring_kPa     = scaled(summary.s2_ring_inner, to_kPa);
-    const std::map<std::string, const void *> row_data = {
-      {"stage", &stage},
-      {"load_factor", &summary.load_factor},
-      {"voltage_kV", voltage_kV.data()},
-      {"mass_g", &mass_g},
-      {"displacement_mm", &displacement_mm},
-      {"stroke_mm", &stroke_mm},
-      {"s2_min_kPa", &s2_min_kPa},
-      {"s2_ring_inner_kPa", s2_ring_kPa.data()},
-      {"wrinkled", &wrinkled},
-      {"newton_iterations", &iterations}};
-    for (const auto &[name, column] : d.standard_columns)
+    const std::vector<std::vector<double>> values = standard_summary_values(summary);
+    for (std::size_t c = 0; c < values.size(); ++c)
       {
-        d.extend(name, column, row + 1);
-        d.write_row(name, column, row, row_data.at(name));
+        const StandardColumn   &layout = standard_summary_columns()[c];
+        const Impl::Column     &column = d.standard_columns.at(layout.name);
+        const std::vector<int>  integers(values[c].begin(), values[c].end());
+        d.extend(layout.name, column, row + 1);
+        d.write_row(layout.name, column, row,
+                    layout.integer ? static_cast<const void *>(integers.data()) : values[c].data());
       }
 
     // Extra columns: new ones start NaN-filled up to this row.
@@ -489,27 +425,17 @@ namespace cdea
     Handle group(d.check(H5Gcreate2(d.steps, group_name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                          std::string("H5Gcreate2(/steps/") + group_name + ")"),
                  H5Gclose);
-    d.write_int_attribute(group, "stage", stage);
+    const std::vector<double> voltage_kV = scaled(summary.voltages, file_units::kV);
+    d.write_int_attribute(group, "stage", static_cast<int>(summary.stage));
     d.write_double_attribute(group, "load_factor", summary.load_factor);
     d.write_double_array_attribute(group, "voltage_kV", voltage_kV);
-    d.write_double_attribute(group, "displacement_mm", displacement_mm);
-
-    d.write_scaled_field(group, "R", fields.R, to_mm, "mm",
-                         "undeformed (reference) radius of the material point");
-    d.write_scaled_field(group, "r", fields.r, to_mm, "mm", "deformed radius");
-    d.write_scaled_field(group, "z", fields.z, to_mm, "mm",
-                         "deformed height (same sign convention as the solver)");
-    d.write_scaled_field(group, "theta", fields.theta, 1., "rad",
-                         "meridian slope angle");
-    d.write_scaled_field(group, "lambda1", fields.lambda1, 1., "1", "meridian stretch");
-    d.write_scaled_field(group, "lambda2", fields.lambda2, 1., "1", "hoop stretch r/R");
-    d.write_scaled_field(group, "s1", fields.s1, to_kPa, "kPa", "nominal meridian stress");
-    d.write_scaled_field(group, "s2", fields.s2, to_kPa, "kPa", "nominal hoop stress");
-    d.write_scaled_field(group, "E", fields.E, to_MV_m, "MV/m",
-                         "true electric field in the thickness direction");
-    d.write_scaled_field(group, "Phi", fields.Phi, to_kV, "kV", "voltage across the film");
-    d.write_field(group, "ring", H5T_STD_I32LE, H5T_NATIVE_INT, fields.ring.data(),
-                  fields.ring.size(), "1", "index of the electrode ring (0 = innermost)");
+    d.write_double_attribute(group, "displacement_mm", summary.displacement * file_units::mm);
+    for (const FieldDataset &f : field_datasets())
+      if (f.values)
+        d.write_scaled_field(group, f.name, fields.*f.values, f.factor, f.unit, f.description);
+      else
+        d.write_field(group, f.name, H5T_STD_I32LE, H5T_NATIVE_INT, fields.ring.data(),
+                      fields.ring.size(), f.unit, f.description);
     group.reset();
 
     d.rows = row + 1;
@@ -541,14 +467,13 @@ namespace cdea
                                   std::to_string(onset.voltages.size()) + " entries, expected " +
                                   std::to_string(d.rings));
     ErrorPrintingOff quiet;
-    d.write_int_attribute(d.summary, "onset_found", onset.found ? 1 : 0);
-    d.write_double_array_attribute(d.summary, "onset_voltage_kV",
-                                   onset.found ? scaled(onset.voltages, to_kV) :
-                                                 std::vector<double>(d.rings, nan_value));
-    d.write_double_attribute(d.summary, "onset_radius_mm",
-                             onset.found ? onset.radius * to_mm : nan_value);
-    d.write_double_attribute(d.summary, "onset_load_factor",
-                             onset.found ? onset.load_factor : nan_value);
+    for (const SummaryAttribute &a : onset_attributes(onset, d.rings))
+      if (a.integer)
+        d.write_int_attribute(d.summary, a.name, static_cast<int>(a.values[0]));
+      else if (a.scalar)
+        d.write_double_attribute(d.summary, a.name, a.values[0]);
+      else
+        d.write_double_array_attribute(d.summary, a.name, a.values);
     d.flush();
   }
 
