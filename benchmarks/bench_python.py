@@ -84,8 +84,9 @@ def main():
         if not (w == w and c == c and w > 0):
             print("bench_python: the time of %s is not finite" % name)
             return 1
-    print("goal: cdea.run of this case at most 5 ms per call: %s (median %.3f ms)"
-          % ("met" if run_wall <= 5e-3 else "NOT met", run_wall * 1e3))
+    if os.path.basename(prm) == "default.prm":
+        print("goal: cdea.run of the default case at most 5 ms per call: %s (median %.3f ms)"
+              % ("met" if run_wall <= 5e-3 else "NOT met", run_wall * 1e3))
     if process_runs <= 0:
         return 0
 

@@ -8,10 +8,10 @@
 #
 #     PYTHONPATH=build/python /usr/bin/python3 postprocess/sweep_mass.py [--out FILE.png] [--masses 100,200,300]
 #
-# Left: the stroke against the voltage for each mass. Right: what the mass
-# does at the end of the path: the disk's deflection before any voltage, the
-# stroke at 5 kV and the smallest hoop stress there (wrinkling when it reaches
-# zero).
+# Left: the stroke against the voltage for each mass, the wrinkling onset
+# marked. Right: what the mass does at the end of the path: the disk's
+# deflection before any voltage, the stroke at 5 kV and the smallest hoop
+# stress there (wrinkling when it reaches zero).
 
 # %%
 import argparse
@@ -78,10 +78,14 @@ colours = plt.cm.viridis(np.linspace(0, 0.9, len(masses)))
 for m, r, c in zip(masses, results, colours):
     s = r.summary
     on_path = s["stage"] == 2
-    left.plot(s["voltage_kV"][on_path, 0], s["stroke_mm"][on_path], color=c, label="%g g" % m)
+    voltage, stroke = s["voltage_kV"][on_path, 0], s["stroke_mm"][on_path]
+    left.plot(voltage, stroke, color=c, label="%g g" % m)
+    if r.onset:  # where the hoop stress first reaches zero (wrinkling)
+        v = r.onset["voltage_kV"][0]
+        left.plot(v, np.interp(v, voltage, stroke), "x", color="tab:red", ms=8, mew=2)
 left.set_xlabel("voltage (kV)")
 left.set_ylabel("stroke (mm)")
-left.set_title("stroke against voltage")
+left.set_title("stroke against voltage (x: wrinkling onset)")
 left.legend(fontsize=8)
 left.grid(alpha=0.3)
 

@@ -123,9 +123,10 @@ namespace
     return real_array(a.values, {py::ssize_t(a.values.size())});
   }
 
-  /// Writes a results file with @p writer (without the GIL) at @p path, or
-  /// at @p default_path if @p path is None; returns where. A file that
-  /// cannot be written raises OSError with the writer's message.
+  /// Writes a results file with @p writer at @p path, or at @p default_path
+  /// if @p path is None; returns where. A file that cannot be written raises
+  /// OSError with the writer's message. The GIL stays held: it keeps two
+  /// threads out of the HDF5 library at once (Debian's is not thread-safe).
   std::string write_file(const py::object &path, const std::string &default_path,
                          const std::function<void(const std::string &)> &writer)
   {
@@ -134,7 +135,6 @@ namespace
                        py::module_::import("os").attr("fspath")(path).cast<std::string>();
     try
       {
-        const py::gil_scoped_release release;
         writer(file);
       }
     catch (const std::exception &e)

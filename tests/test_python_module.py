@@ -341,3 +341,16 @@ def test_mpi_only_for_trilinos():
                           timeout=120)
     assert done.returncode == 0, done.stderr
     assert done.stdout.startswith("ok ")
+
+
+def test_threads_give_the_serial_results():
+    """Runs release the GIL while they compute: two threads, the serial numbers."""
+    from concurrent.futures import ThreadPoolExecutor
+    prm = os.path.join(SRC, "prm", "partitioned-rv1.7.prm")
+    masses = [200, 250, 300, 350]
+    serial = [cdea.run(prm, {"Loading/Mass (g)": m}) for m in masses]
+    with ThreadPoolExecutor(2) as pool:
+        threaded = list(pool.map(lambda m: cdea.run(prm, {"Loading/Mass (g)": m}), masses))
+    for a, b in zip(serial, threaded):
+        for name in a.summary:
+            assert_same(b.summary[name], a.summary[name], name)
