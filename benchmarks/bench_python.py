@@ -1,7 +1,8 @@
 """Benchmark: the in-process cost of the Python module `cdea` (doc/python.md,
 doc/performance.md).
 
-    PYTHONPATH=build/python /usr/bin/python3 benchmarks/bench_python.py [FILE.prm] [CALLS] [PROCESS_RUNS]
+    PYTHONPATH=build/python /usr/bin/python3 benchmarks/bench_python.py \
+        [FILE.prm] [CALLS] [PROCESS_RUNS]
 
 In one interpreter it calls, CALLS times each (default 51), and prints the
 median wall and CPU time per call of:

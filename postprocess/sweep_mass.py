@@ -6,7 +6,8 @@
 # `cdea.run` per mass in this process, nothing written but the figure. The
 # cells (`# %%`) run one by one in Jupyter or VS Code, or all at once:
 #
-#     PYTHONPATH=build/python /usr/bin/python3 postprocess/sweep_mass.py [--out FILE.png] [--masses 100,200,300]
+#     PYTHONPATH=build/python /usr/bin/python3 postprocess/sweep_mass.py \
+#         [--out FILE.png] [--masses 100,200,300] [--prm FILE.prm]
 #
 # Left: the stroke against the voltage for each mass, the wrinkling onset
 # marked. Right: what the mass does at the end of the path: the disk's

@@ -63,7 +63,8 @@ namespace
         std::string part;
         if (is_sequence(item))
           for (const py::handle x : item)
-            part += (part.empty() ? "" : ", ") + scalar_text(key, py::reinterpret_borrow<py::object>(x));
+            part += (part.empty() ? "" : ", ") +
+                    scalar_text(key, py::reinterpret_borrow<py::object>(x));
         else
           part = scalar_text(key, py::reinterpret_borrow<py::object>(item));
         text += (text.empty() ? "" : is_sequence(item) ? "; " : ", ") + part;
@@ -83,15 +84,16 @@ namespace
                                                                  ParameterInput::file(s);
       }
     else if (py::hasattr(prm, "__fspath__"))
-      input = ParameterInput::file(py::module_::import("os").attr("fspath")(prm).cast<std::string>());
+      input =
+        ParameterInput::file(py::module_::import("os").attr("fspath")(prm).cast<std::string>());
     else
       throw py::type_error("prm must be the path of a parameter file or its text");
     if (!overrides.is_none())
       for (const auto &[key, value] : overrides.cast<py::dict>())
         {
           const std::string name = py::str(key).cast<std::string>();
-          input.overrides.emplace_back(name,
-                                       override_text(name, py::reinterpret_borrow<py::object>(value)));
+          const std::string text = override_text(name, py::reinterpret_borrow<py::object>(value));
+          input.overrides.emplace_back(name, text);
         }
     return input;
   }
@@ -112,7 +114,7 @@ namespace
     return a;
   }
 
-  /// A /summary attribute as h5py reads it: a numpy scalar, or an array.
+  /// A /summary attribute: a number (scalar attributes), or a numpy array.
   py::object attribute_value(const SummaryAttribute &a)
   {
     if (a.scalar)

@@ -185,7 +185,8 @@ def test_overrides_act_as_edits_of_the_file():
     deflection = [r.summary["displacement_mm"][r.summary["stage"] == 1][-1] for r in loaded]
     assert deflection[0] < deflection[1] < deflection[2]
     # Overrides come after the file and have the last word.
-    assert re.search(r"set Mass \(g\) *= 123\n", cdea.parameters(default, {"Loading/Mass (g)": 123}))
+    text = cdea.parameters(default, {"Loading/Mass (g)": 123})
+    assert re.search(r"set Mass \(g\) *= 123\n", text)
 
 
 BAD_FILES = [
