@@ -15,9 +15,11 @@ jobs="${JOBS:-$(nproc)}"
 # python3-pytest and python3-vtk9: the Python tests, which read the ParaView
 # output back with VTK's XML reader. libnlopt-cxx-dev: the layout optimizer
 # (cdea optimize); libceres-dev: the least-squares calibration (cdea fit).
+# pybind11-dev, python3-dev and python3-numpy: the Python module `cdea`
+# (build/python, doc/python.md).
 packages=(cmake g++ make libdeal.ii-dev libeigen3-dev libhdf5-dev hdf5-tools
           libnlopt-cxx-dev libceres-dev openmpi-bin python3 python3-h5py python3-matplotlib
-          python3-pytest python3-vtk9)
+          python3-pytest python3-vtk9 pybind11-dev python3-dev python3-numpy)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -42,4 +44,4 @@ cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release > "$log" 2>&1 || {
   exit 1
 }
 cmake --build "$build_dir" -j "$jobs"
-echo "setup: built $build_dir/cdea"
+echo "setup: built $build_dir/cdea and the Python module in $build_dir/python"

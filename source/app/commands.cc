@@ -2,13 +2,13 @@
 #include <cdea/app/parameters.h>
 #include <cdea/app/pump.h>
 #include <cdea/app/run_control.h>
+#include <cdea/app/session.h>
 #include <cdea/app/time_run.h>
 #include <cdea/format.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/output/paraview_writer.h>
 #include <cdea/output/results_file.h>
 #include <cdea/output/safe_files.h>
-#include <cdea/output/state_check.h>
 #include <cdea/shooting/shooting_model.h>
 #include <cdea/solver/load_stepper.h>
 
@@ -198,8 +198,7 @@ namespace cdea
       file->write_onset(OnsetRecord());
 
       LoadStepper stepper(scene, model, stepping_settings(p));
-      stepper.add_postprocessor(std::make_unique<EnclosedVolume>(tube_area(p)));
-      stepper.add_postprocessor(std::make_unique<NonPhysicalCheck>(scene.frame_radius));
+      add_run_postprocessors(stepper, p, scene);
       StepRecorder recorder(*file, stepper, scene);
       // ParaView output (Output/ParaView): a VTU per step, moved in place at the end.
       std::unique_ptr<ParaViewWriter> paraview;
@@ -221,30 +220,17 @@ namespace cdea
       };
       // Limit points: /summary attributes limit_point_voltage_kV (k x rings)
       // and limit_point_displacement_mm (k), rewritten as each is found.
-      std::vector<double> limit_kV, limit_mm;
-      const auto          write_limit_points = [&]() {
-        file->set_summary_attribute("limit_point_voltage_kV", limit_kV, limit_mm.size(),
-                                    scene.n_rings());
-        file->set_summary_attribute("limit_point_displacement_mm", limit_mm);
-      };
-      write_limit_points();
+      std::vector<LimitPoint> limits;
+      write_summary_attributes(*file, limit_point_attributes(limits, scene.n_rings()));
       stepper.on_limit_point = [&](const LimitPoint &limit) {
-        for (const double v : limit.voltages)
-          limit_kV.push_back(v * 1e-3);
-        limit_mm.push_back(limit.displacement * 1e3);
-        write_limit_points();
+        limits.push_back(limit);
+        write_summary_attributes(*file, limit_point_attributes(limits, scene.n_rings()));
         std::cout << "      limit point (fold) at " << format_kV(limit.voltages)
                   << ", displacement " << std::setprecision(7) << limit.displacement * 1e3
                   << " mm" << std::endl;
       };
       stepper.on_breakdown = [&](const OnsetRecord &breakdown) {
-        file->set_summary_attribute("breakdown_voltage_kV", [&] {
-          std::vector<double> v;
-          for (const double x : breakdown.voltages)
-            v.push_back(x * 1e-3);
-          return v;
-        }());
-        file->set_summary_attribute("breakdown_radius_mm", {breakdown.radius * 1e3});
+        write_summary_attributes(*file, breakdown_attributes(breakdown));
         std::cout << "      breakdown field " << p.solver.breakdown_field_MV_per_m
                   << " MV/m reached at " << format_kV(breakdown.voltages) << ", r = "
                   << std::setprecision(6) << breakdown.radius * 1e3 << " mm" << std::endl;
@@ -361,24 +347,16 @@ namespace cdea
 
   namespace
   {
-    struct Input
-    {
-      Parameters  parameters;
-      Scene       scene;
-      std::string text;
-    };
+    using Input = RunInput;
 
     /// Read and validate; on bad input print the message and return nothing.
     std::optional<Input> load_input(const std::string &prm_file)
     {
       try
         {
-          Input in;
-          in.parameters = read_parameters(prm_file, &in.text);
+          RunInput in = read_run_input(ParameterInput::file(prm_file), RunMethod::finite_elements);
           for (const std::string &warning : in.parameters.input_warnings)
             std::cerr << "cdea: warning: " << warning << '\n';
-          in.scene      = in.parameters.scene();
-          validate_reservoir(in.parameters);
           return in;
         }
       catch (const InputError &e)
@@ -391,42 +369,25 @@ namespace cdea
     /// The water load exists in the FE model only: refuse it elsewhere.
     bool fe_only_check(const Parameters &p, const std::string &command)
     {
-      if (p.reservoir.water_load)
+      try
         {
-          std::cerr << "cdea: Reservoir/Water load = true is implemented in the FE model only: "
-                       "use 'cdea run', or set it to false for 'cdea "
-                    << command << "'\n";
+          require_shooting_options(p, command);
+          return true;
+        }
+      catch (const InputError &e)
+        {
+          std::cerr << "cdea: " << e.what() << '\n';
           return false;
         }
-      if (p.wrinkling.model == WrinklingModel::relaxed)
-        {
-          std::cerr << "cdea: Wrinkling/Model = relaxed is implemented in the FE model only: "
-                       "use 'cdea run', or set it to check for 'cdea "
-                    << command << "'\n";
-          return false;
-        }
-      if (p.time.enabled)
-        {
-          std::cerr << "cdea: Time/Enabled = true is implemented for 'cdea run' only: set it to "
-                       "false for 'cdea "
-                    << command << "'\n";
-          return false;
-        }
-      return true;
     }
 
     /// The shooting model follows the voltage path by load stepping only.
     Parameters with_load_stepping(const Parameters &p, const std::string &command)
     {
-      Parameters q = p;
-      if (q.solver.continuation != Continuation::load_stepping)
-        {
-          std::cout << "cdea " << command << ": Solver/Continuation = "
-                    << to_string(q.solver.continuation)
-                    << " applies to the FE model of 'cdea run'; both solvers follow the path "
-                       "by load stepping here\n";
-          q.solver.continuation = Continuation::load_stepping;
-        }
+      std::string      note;
+      const Parameters q = load_stepping_parameters(p, command, note);
+      if (!note.empty())
+        std::cout << note << '\n';
       return q;
     }
 

@@ -1,12 +1,11 @@
 #include <deal.II/base/parameter_handler.h>
 
+#include <cdea/app/parameter_input.h>
 #include <cdea/app/parameters.h>
 #include <cdea/app/run_control.h>
 #include <cdea/app/validation.h>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
 namespace cdea
@@ -543,50 +542,7 @@ namespace cdea
 
   Parameters read_parameters(const std::string &filename, std::string *text)
   {
-    {
-      std::ifstream probe(filename);
-      if (!probe || !std::filesystem::is_regular_file(filename))
-        throw InputError("cannot read parameter file '" + filename +
-                         "': it does not exist, is not a regular file or is not readable");
-    }
-    ParameterHandler prm;
-    Parameters::declare(prm);
-    try
-      {
-        prm.parse_input(filename, "", false, false);
-      }
-    catch (const dealii::ExceptionBase &e)
-      {
-        std::ostringstream message;
-        e.print_info(message);
-        throw InputError("in parameter file '" + filename + "': " + fold_whitespace(message.str()));
-      }
-    Parameters parameters;
-    try
-      {
-        parameters.parse(prm);
-      }
-    catch (const dealii::ExceptionBase &e)
-      {
-        std::ostringstream message;
-        e.print_info(message);
-        throw InputError("in parameter file '" + filename + "': " + fold_whitespace(message.str()));
-      }
-    validate_ranges(parameters, parameters.scene()); // now, before anything is written
-    validate_time(parameters);
-    {
-      std::ifstream      in(filename);
-      std::ostringstream content;
-      content << in.rdbuf();
-      parameters.input_warnings = duplicate_entry_warnings(content.str(), filename);
-    }
-    if (text)
-      {
-        std::ostringstream out;
-        prm.print_parameters(out, ParameterHandler::ShortText);
-        *text = out.str();
-      }
-    return parameters;
+    return read_parameters(ParameterInput::file(filename), text);
   }
 
   std::string default_parameter_file(const ParameterFormat format)

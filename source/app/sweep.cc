@@ -449,15 +449,11 @@ namespace cdea
     if (!root)
       return exit_success;
 
-    // A map none of whose layouts reached the inner voltage is no map.
-    const bool no_row_reached =
-      std::none_of(map.rows.begin(), map.rows.end(),
-                   [](const SweepRow &r) { return r.base_reached; });
-    const std::string status =
-      no_row_reached ? "stopped: no layout reached the inner voltage" : "complete";
+    const std::string status         = sweep_run_status(map);
+    const bool        no_row_reached = status != "complete";
     try
       {
-        write_sweep_file(path, map, text, status);
+        write_sweep_file(path, map, text);
       }
     catch (const std::exception &e)
       {

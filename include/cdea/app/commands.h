@@ -2,6 +2,7 @@
 // The sub-commands of the cdea program. Each returns the process exit code.
 
 #include <cdea/fe/membrane_model.h>
+#include <cdea/shooting/options.h>
 #include <cdea/solver/load_stepper.h>
 
 #include <memory>
@@ -16,6 +17,7 @@ namespace cdea
   SteppingSettings stepping_settings(const Parameters &p);
   FeDiscretization fe_discretization(const Parameters &p);
   NewtonSettings   newton_settings(const Parameters &p);
+  shooting::ShootingOptions shooting_options(const Parameters &p);
 
   /// An FE model of @p scene set up as the parameters say (discretization,
   /// Newton, linear solver, relaxed law, water load).

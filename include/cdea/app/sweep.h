@@ -144,10 +144,47 @@ namespace cdea
                              const SweepSettings &settings,
                              const std::function<void(std::size_t)> &on_points = {});
 
+  /// What the map file holds, in its units (kV, mm, kPa, %): its root
+  /// attributes and its datasets, row-major with dimensions @p dims. The one
+  /// description of the map's names, units and conversions, shared by the
+  /// file and the Python module.
+  struct MapFileContent
+  {
+    enum class Kind
+    {
+      real,
+      integer, ///< values hold whole numbers
+      text
+    };
+    struct Attribute
+    {
+      std::string name;
+      Kind        kind;
+      double      real; ///< real and integer attributes
+      std::string text;
+    };
+    struct Dataset
+    {
+      std::string              name, unit, description;
+      std::vector<std::size_t> dims;
+      Kind                     kind;
+      std::vector<double>      values; ///< real and integer datasets
+      std::vector<std::string> texts;  ///< text datasets
+    };
+    std::vector<Attribute> attributes;
+    std::vector<Dataset>   datasets;
+  };
+
+  MapFileContent sweep_map_content(const SweepMap &map, const std::string &parameter_text);
+
   /// Write <path> (rank 0 only): the layout of doc/design-maps.md, with the
-  /// root attribute run_status. The file is written whole beside the path and
+  /// root attribute run_status (sweep_run_status()). The file is written whole beside the path and
   /// renamed onto it: an older map stays intact until then. Throws
   /// std::runtime_error naming the file if it cannot be written.
   void write_sweep_file(const std::string &path, const SweepMap &map,
-                        const std::string &parameter_text, const std::string &run_status);
+                        const std::string &parameter_text);
+
+  /// The map's run_status: "complete", or why it is no map (no layout
+  /// reached the inner voltage).
+  std::string sweep_run_status(const SweepMap &map);
 } // namespace cdea

@@ -1,0 +1,461 @@
+// The Python module `cdea` (pybind11): `cdea run`, `cdea shoot` and `cdea
+// sweep` in-process (app/session.h), their results as numpy arrays with the
+// names and units of the results files (output/results_layout.h for /summary
+// and /steps, sweep_map_content() for the map), written to HDF5 only when
+// asked. Bad input raises ValueError with the command line's message. MPI is
+// not started (only the Trilinos KLU solver starts it, when it needs it).
+// Documented in doc/python.md.
+
+#include <cdea/app/mpi_session.h>
+#include <cdea/app/session.h>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <functional>
+#include <map>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace py = pybind11;
+using namespace cdea;
+
+namespace
+{
+  bool is_sequence(const py::handle value)
+  {
+    return py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value);
+  }
+
+  /// One value of an override as prm text: str as it is, bool as
+  /// true/false, a number as Python prints it (numpy scalars and arrays
+  /// through tolist()).
+  std::string scalar_text(const std::string &key, py::object value)
+  {
+    if (py::hasattr(value, "tolist"))
+      value = value.attr("tolist")();
+    if (py::isinstance<py::str>(value))
+      return value.cast<std::string>();
+    if (py::isinstance<py::bool_>(value))
+      return value.cast<bool>() ? "true" : "false";
+    if (py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value))
+      return py::str(value).cast<std::string>();
+    throw py::type_error("override '" + key +
+                         "': the value must be a str, a number, a bool or a list of numbers, "
+                         "got " +
+                         py::str(value.get_type().attr("__name__")).cast<std::string>());
+  }
+
+  /// An override's value as prm text: a list of numbers becomes "a, b, c",
+  /// a list of such lists "a, b; c, d" (the waypoints of Voltage path).
+  std::string override_text(const std::string &key, py::object value)
+  {
+    if (py::hasattr(value, "tolist"))
+      value = value.attr("tolist")();
+    if (!is_sequence(value))
+      return scalar_text(key, value);
+    std::string text;
+    for (const py::handle item : value)
+      {
+        std::string part;
+        if (is_sequence(item))
+          for (const py::handle x : item)
+            part += (part.empty() ? "" : ", ") +
+                    scalar_text(key, py::reinterpret_borrow<py::object>(x));
+        else
+          part = scalar_text(key, py::reinterpret_borrow<py::object>(item));
+        text += (text.empty() ? "" : is_sequence(item) ? "; " : ", ") + part;
+      }
+    return text;
+  }
+
+  /// @p prm: a path (str or os.PathLike), or prm text (a str holding a line
+  /// break, or "" for every default).
+  ParameterInput parameter_input(const py::object &prm, const py::object &overrides)
+  {
+    ParameterInput input;
+    if (py::isinstance<py::str>(prm))
+      {
+        const std::string s = prm.cast<std::string>();
+        input = s.empty() || s.find('\n') != std::string::npos ? ParameterInput::text(s) :
+                                                                 ParameterInput::file(s);
+      }
+    else if (py::hasattr(prm, "__fspath__"))
+      input =
+        ParameterInput::file(py::module_::import("os").attr("fspath")(prm).cast<std::string>());
+    else
+      throw py::type_error("prm must be the path of a parameter file or its text");
+    if (!overrides.is_none())
+      for (const auto &[key, value] : overrides.cast<py::dict>())
+        {
+          const std::string name = py::str(key).cast<std::string>();
+          const std::string text = override_text(name, py::reinterpret_borrow<py::object>(value));
+          input.overrides.emplace_back(name, text);
+        }
+    return input;
+  }
+
+  py::array_t<double> real_array(const std::vector<double> &values,
+                                 const std::vector<py::ssize_t> &shape)
+  {
+    py::array_t<double> a(shape);
+    std::copy(values.begin(), values.end(), a.mutable_data());
+    return a;
+  }
+
+  py::array_t<int> integer_array(const std::vector<double> &values,
+                                 const std::vector<py::ssize_t> &shape)
+  {
+    py::array_t<int> a(shape);
+    std::copy(values.begin(), values.end(), a.mutable_data());
+    return a;
+  }
+
+  /// A /summary attribute: a number (scalar attributes), or a numpy array.
+  py::object attribute_value(const SummaryAttribute &a)
+  {
+    if (a.scalar)
+      return a.integer ? py::object(py::int_(static_cast<int>(a.values[0]))) :
+                         py::object(py::float_(a.values[0]));
+    if (a.rows > 0)
+      return real_array(a.values, {py::ssize_t(a.rows), py::ssize_t(a.columns)});
+    return real_array(a.values, {py::ssize_t(a.values.size())});
+  }
+
+  /// Writes a results file with @p writer at @p path, or at @p default_path
+  /// if @p path is None; returns where. A file that cannot be written raises
+  /// OSError with the writer's message. The GIL stays held: it keeps two
+  /// threads out of the HDF5 library at once (Debian's is not thread-safe).
+  std::string write_file(const py::object &path, const std::string &default_path,
+                         const std::function<void(const std::string &)> &writer)
+  {
+    const std::string file =
+      path.is_none() ? default_path :
+                       py::module_::import("os").attr("fspath")(path).cast<std::string>();
+    try
+      {
+        writer(file);
+      }
+    catch (const std::exception &e)
+      {
+        PyErr_SetString(PyExc_OSError, e.what());
+        throw py::error_already_set();
+      }
+    return file;
+  }
+
+  /// The result of cdea.run() and cdea.shoot().
+  class Run
+  {
+  public:
+    explicit Run(RunRecord record)
+      : record(std::move(record))
+    {}
+
+    /// /summary: the standard columns, then the postprocessors' columns in
+    /// the order they first appear (NaN in the rows without them).
+    py::dict summary()
+    {
+      if (summary_cache)
+        return summary_cache.cast<py::dict>();
+      const std::size_t                             n       = record.steps.size();
+      const std::vector<StandardColumn>            &columns = standard_summary_columns();
+      std::vector<std::vector<std::vector<double>>> rows(n);
+      for (std::size_t i = 0; i < n; ++i)
+        rows[i] = standard_summary_values(record.steps[i]);
+      py::dict summary;
+      for (std::size_t c = 0; c < columns.size(); ++c)
+        {
+          const std::size_t width = columns[c].per_ring ? record.n_rings : 1;
+          std::vector<double> values;
+          values.reserve(n * width);
+          for (std::size_t i = 0; i < n; ++i)
+            values.insert(values.end(), rows[i][c].begin(), rows[i][c].end());
+          std::vector<py::ssize_t> shape = {py::ssize_t(n)};
+          if (columns[c].per_ring)
+            shape.push_back(py::ssize_t(width));
+          summary[columns[c].name.c_str()] = columns[c].integer ?
+                                               py::object(integer_array(values, shape)) :
+                                               py::object(real_array(values, shape));
+        }
+      std::vector<std::string>                   extra; // in the order they first appear
+      std::map<std::string, std::vector<double>> extra_values;
+      for (std::size_t i = 0; i < n; ++i)
+        for (const auto &[name, value] : record.steps[i].columns)
+          {
+            auto [column, is_new] = extra_values.try_emplace(name, n, std::nan(""));
+            if (is_new)
+              extra.push_back(name);
+            column->second[i] = value;
+          }
+      for (const std::string &name : extra)
+        summary[name.c_str()] = real_array(extra_values[name], {py::ssize_t(n)});
+      summary_cache = summary;
+      return summary;
+    }
+
+    /// /steps/NNNNNN of step @p step (negative: from the end).
+    py::dict fields(long step) const
+    {
+      const long n = long(record.fields.size());
+      if (step < 0)
+        step += n;
+      if (step < 0 || step >= n)
+        throw py::index_error("step " + std::to_string(step) + " is not one of the " +
+                              std::to_string(n) + " steps");
+      const StepFields &f = record.fields[std::size_t(step)];
+      py::dict          fields;
+      for (const FieldDataset &d : field_datasets())
+        if (d.values)
+          fields[d.name.c_str()] =
+            real_array(scaled(f.*d.values, d.factor), {py::ssize_t((f.*d.values).size())});
+        else
+          fields[d.name.c_str()] = integer_array(std::vector<double>(f.ring.begin(), f.ring.end()),
+                                                 {py::ssize_t(f.ring.size())});
+      return fields;
+    }
+
+    py::object onset() const
+    {
+      if (!record.result.onset.found)
+        return py::none();
+      py::dict onset;
+      for (const SummaryAttribute &a : onset_attributes(record.result.onset, record.n_rings))
+        if (!a.integer)
+          onset[a.name.substr(std::string("onset_").size()).c_str()] = attribute_value(a);
+      return onset;
+    }
+
+    /// The /summary attributes: onset, limit points, breakdown.
+    py::dict attributes() const
+    {
+      py::dict attributes;
+      std::vector<SummaryAttribute> all = onset_attributes(record.result.onset, record.n_rings);
+      for (const auto &more :
+           {limit_point_attributes(record.result.limit_points, record.n_rings),
+            breakdown_attributes(record.result.breakdown)})
+        all.insert(all.end(), more.begin(), more.end());
+      for (const SummaryAttribute &a : all)
+        attributes[a.name.c_str()] = attribute_value(a);
+      return attributes;
+    }
+
+    /// Unit and description of every /summary column.
+    py::dict columns()
+    {
+      py::dict columns;
+      for (const StandardColumn &c : standard_summary_columns())
+        columns[c.name.c_str()] = py::make_tuple(c.unit, c.description);
+      const py::dict present = summary();
+      for (const SummaryColumn &c : record.columns)
+        if (present.contains(c.name))
+          columns[c.name.c_str()] = py::make_tuple(c.unit, c.description);
+      return columns;
+    }
+
+    std::string write(const py::object &path) const
+    {
+      return write_file(path, record.results_path,
+                        [this](const std::string &file) { write_run(record, file); });
+    }
+
+    RunRecord record;
+
+  private:
+    py::object summary_cache; // the summary dict once built
+  };
+
+  /// The result of cdea.sweep().
+  class Sweep
+  {
+  public:
+    explicit Sweep(SweepRecord record)
+      : record(std::move(record))
+      , content(sweep_map_content(this->record.map, this->record.parameters))
+    {}
+
+    py::dict arrays() const
+    {
+      py::dict arrays;
+      for (const MapFileContent::Dataset &d : content.datasets)
+        {
+          const std::vector<py::ssize_t> shape(d.dims.begin(), d.dims.end());
+          if (d.kind == MapFileContent::Kind::text)
+            arrays[d.name.c_str()] = py::module_::import("numpy").attr("array")(d.texts, "object");
+          else if (d.kind == MapFileContent::Kind::integer)
+            arrays[d.name.c_str()] = integer_array(d.values, shape);
+          else
+            arrays[d.name.c_str()] = real_array(d.values, shape);
+        }
+      return arrays;
+    }
+
+    py::dict attributes() const
+    {
+      py::dict attributes;
+      for (const MapFileContent::Attribute &a : content.attributes)
+        if (a.kind == MapFileContent::Kind::text)
+          attributes[a.name.c_str()] = a.text;
+        else if (a.kind == MapFileContent::Kind::integer)
+          attributes[a.name.c_str()] = static_cast<int>(a.real);
+        else
+          attributes[a.name.c_str()] = a.real;
+      return attributes;
+    }
+
+    py::dict columns() const
+    {
+      py::dict columns;
+      for (const MapFileContent::Dataset &d : content.datasets)
+        columns[d.name.c_str()] = py::make_tuple(d.unit, d.description);
+      return columns;
+    }
+
+    std::string write(const py::object &path) const
+    {
+      return write_file(path, record.results_path, [this](const std::string &file) {
+        write_sweep_file(file, record.map, record.parameters);
+      });
+    }
+
+    SweepRecord    record;
+    MapFileContent content;
+  };
+
+  Run run_method(const py::object &prm, const py::object &overrides, const RunMethod method)
+  {
+    const ParameterInput input = parameter_input(prm, overrides);
+    std::string          note;
+    RunRecord            record;
+    {
+      const py::gil_scoped_release release;
+      record = run_in_memory(read_run_input(input, method, &note), method);
+    }
+    if (!note.empty())
+      record.notes.push_back(note);
+    return Run(std::move(record));
+  }
+} // namespace
+
+PYBIND11_MODULE(cdea, m)
+{
+  prepare_in_process_runs();
+  m.doc() = "cdea in-process: cone dielectric elastomer actuators with partitioned electrodes "
+            "(run, shoot, sweep without a process per run; doc/python.md)";
+  m.attr("__version__") = CDEA_VERSION;
+  py::register_exception_translator([](std::exception_ptr p) {
+    try
+      {
+        if (p)
+          std::rethrow_exception(p);
+      }
+    catch (const InputError &e)
+      {
+        PyErr_SetString(PyExc_ValueError, e.what());
+      }
+  });
+
+  py::class_<Run>(m, "RunResult",
+                  "The steps of cdea.run() or cdea.shoot(), in memory: /summary and /steps of "
+                  "the results file as numpy arrays (same names, same units).")
+    .def_property_readonly("summary", &Run::summary,
+                           "dict of numpy arrays, one per /summary dataset (steps, or steps x "
+                           "rings)")
+    .def("fields", &Run::fields, py::arg("step"),
+         "dict of numpy arrays along the meridian: the datasets of /steps/NNNNNN (negative "
+         "steps count from the end)")
+    .def_property_readonly("onset", &Run::onset,
+                           "None, or dict voltage_kV, radius_mm, load_factor of the loss of "
+                           "tension")
+    .def_property_readonly("attributes", &Run::attributes,
+                           "dict of the /summary attributes (onset, limit points, breakdown)")
+    .def_property_readonly("columns", &Run::columns,
+                           "dict name -> (unit, description) of the /summary columns")
+    .def_property_readonly("completed", [](const Run &r) { return r.record.result.completed; },
+                           "True if the run reached the end of its voltage path")
+    .def_property_readonly("message", [](const Run &r) { return r.record.result.message; },
+                           "why the run stopped early ('' if it did not)")
+    .def_property_readonly("end", [](const Run &r) { return r.record.result.end; },
+                           "how an arc-length continuation ended ('' otherwise)")
+    .def_property_readonly("notes", [](const Run &r) { return r.record.notes; })
+    .def_property_readonly("n_steps", [](const Run &r) { return r.record.steps.size(); })
+    .def("__len__", [](const Run &r) { return r.record.steps.size(); })
+    .def_property_readonly("n_rings", [](const Run &r) { return r.record.n_rings; })
+    .def_property_readonly("newton_iterations",
+                           [](const Run &r) { return r.record.result.newton_iterations; })
+    .def_property_readonly("seconds", [](const Run &r) { return r.record.seconds; },
+                           "wall time of the load stages (s)")
+    .def_property_readonly("method", [](const Run &r) { return r.record.method; })
+    .def_property_readonly("parameters", [](const Run &r) { return r.record.parameters; },
+                           "every parameter of the run, as the results file stores them")
+    .def_property_readonly("results_path", [](const Run &r) { return r.record.results_path; },
+                           "where the command line would write the results")
+    .def("write", &Run::write, py::arg("path") = py::none(),
+         "write the results file (HDF5, as the command line writes it) to path, by default "
+         "<Directory>/<Base name>.h5 of the parameters; returns the path")
+    .def("__repr__", [](const Run &r) {
+      return "<cdea.RunResult " + r.record.method + ": " + std::to_string(r.record.steps.size()) +
+             " steps, " + (r.record.result.completed ? "completed" : "stopped early") + ">";
+    });
+
+  py::class_<Sweep>(m, "SweepResult",
+                    "The design map of cdea.sweep(), in memory: the datasets and root "
+                    "attributes of the map file as numpy arrays (same names, same units).")
+    .def_property_readonly("arrays", &Sweep::arrays, "dict of numpy arrays, one per dataset")
+    .def_property_readonly("attributes", &Sweep::attributes, "dict of the root attributes")
+    .def_property_readonly("columns", &Sweep::columns,
+                           "dict name -> (unit, description) of the datasets")
+    .def_property_readonly("seconds", [](const Sweep &s) { return s.record.seconds; })
+    .def_property_readonly("parameters", [](const Sweep &s) { return s.record.parameters; })
+    .def_property_readonly("results_path", [](const Sweep &s) { return s.record.results_path; })
+    .def("write", &Sweep::write, py::arg("path") = py::none(),
+         "write the map file (HDF5) to path, by default <Directory>/<Base name>_map.h5; "
+         "returns the path")
+    .def("__repr__", [](const Sweep &s) {
+      return "<cdea.SweepResult " + std::to_string(s.record.map.rows.size()) + " x " +
+             std::to_string(s.record.map.settings.outer_voltages.size()) + " points>";
+    });
+
+  const std::string prm_doc = "prm: the path of a parameter file (str or os.PathLike) or its "
+                              "text (a str with a line break; '' for every default); overrides: "
+                              "dict {'Subsection/Entry': value} set after it.";
+  const std::tuple<const char *, RunMethod, const char *> runs[] = {
+    {"run", RunMethod::finite_elements,
+     "`cdea run` in-process: the FE model along the load stages. "},
+    {"shoot", RunMethod::shooting,
+     "`cdea shoot` in-process: the shooting model on the same scene. "}};
+  for (const auto &[name, method, what] : runs)
+    m.def(
+      name,
+      [method = method](const py::object &prm, const py::object &overrides) {
+        return run_method(prm, overrides, method);
+      },
+      py::arg("prm"), py::arg("overrides") = py::none(), (what + prm_doc).c_str());
+  m.def(
+    "sweep",
+    [](const py::object &prm, const py::object &overrides) {
+      const ParameterInput input = parameter_input(prm, overrides);
+      SweepRecord          record;
+      {
+        const py::gil_scoped_release release;
+        record = sweep_in_memory(input);
+      }
+      return Sweep(std::move(record));
+    },
+    py::arg("prm"), py::arg("overrides") = py::none(),
+    ("`cdea sweep` in-process, on this process alone. " + prm_doc).c_str());
+  m.def(
+    "parameters",
+    [](const py::object &prm, const py::object &overrides) {
+      std::string text;
+      read_parameters(parameter_input(prm, overrides), &text);
+      return text;
+    },
+    py::arg("prm") = "", py::arg("overrides") = py::none(),
+    ("Every parameter, validated, as a results file stores them. " + prm_doc).c_str());
+  m.def("mpi_initialized", &mpi::initialized,
+        "True once this process has started MPI (only the Trilinos KLU solver does)");
+}
