@@ -2,6 +2,7 @@
 #include <cdea/app/parameters.h>
 #include <cdea/app/pump.h>
 #include <cdea/app/run_control.h>
+#include <cdea/app/run_output.h>
 #include <cdea/app/session.h>
 #include <cdea/app/time_run.h>
 #include <cdea/format.h>
@@ -179,22 +180,11 @@ namespace cdea
                    const std::string &prm_text, const std::string &path,
                    const std::string &method)
     {
-      // ---- results file: start (exit 1 if it cannot be ours) ----
-      const StopOnSignals          stop_on_signals;
-      std::unique_ptr<ResultsFile> file;
-      try
-        {
-          file = std::make_unique<ResultsFile>(path, prm_text, scene.n_rings(),
-                                               std::vector<std::pair<std::string, std::string>>{
-                                                 {"method", method}});
-        }
-      catch (const std::exception &e)
-        {
-          std::cerr << "cdea: " << one_line_message(e) << '\n';
-          return exit_input_error;
-        }
-      for (const std::string &note : file->notes())
-        std::cerr << "cdea: " << note << '\n';
+      // ---- results file: claimed now, written whole at the end ----
+      const auto output = RunOutput::open(path, prm_text, scene.n_rings(), {{"method", method}});
+      if (!output)
+        return exit_input_error;
+      ResultsFile *const file = &output->file();
       file->write_onset(OnsetRecord());
 
       LoadStepper stepper(scene, model, stepping_settings(p));
@@ -209,8 +199,7 @@ namespace cdea
         recorder.step(s);
         if (paraview)
           paraview->write_step(s, stepper.step_fields());
-        if (StopOnSignals::requested() != 0) // stop at this step boundary
-          throw RunInterrupted(StopOnSignals::requested());
+        RunOutput::stop_point();
       };
       stepper.on_onset = [&](const OnsetRecord &onset) {
         file->write_onset(onset);
@@ -241,30 +230,7 @@ namespace cdea
       recorder.header();
       const auto start = std::chrono::steady_clock::now();
       // ---- the run: a signal, an output failure or an error stops it ----
-      RunResult   result;
-      std::string stopped; // why the run was cut short, "" if it was not
-      try
-        {
-          result = stepper.run();
-        }
-      catch (const RunInterrupted &e)
-        {
-          stopped = e.what();
-        }
-      catch (const OutputError &e)
-        {
-          stopped = std::string("the results cannot be written: ") + e.what();
-        }
-      catch (const std::exception &e)
-        {
-          stopped = "error: " + one_line_message(e);
-        }
-      if (!stopped.empty())
-        {
-          result.completed = false;
-          result.message   = stopped;
-          result.steps     = file->n_steps();
-        }
+      const RunResult result = output->guard([&] { return stepper.run(); });
       const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -314,26 +280,7 @@ namespace cdea
         std::cout << "Arc-length continuation ended: " << result.end << '\n';
       std::cout << result.steps << " steps, " << result.newton_iterations
                 << " Newton iterations, " << std::setprecision(3) << seconds << " s\n";
-      // ---- results file: finish (written whole, then renamed into place) ----
-      const std::string status = result.completed ?
-                                   std::string("complete") :
-                                   "stopped after step " +
-                                     std::to_string(int(file->n_steps()) - 1) + ": " +
-                                     result.message;
-      const ResultsFile::Finish done = file->finish(status);
-      std::cout << "results: " << done.steps_written << " steps in "
-                << (done.written ? done.file : std::string("no file")) << " ("
-                << file->checkpoints() << " checkpoints, " << std::setprecision(3)
-                << file->checkpoint_seconds() << " s)" << std::endl;
-      if (!result.completed)
-        std::cerr << "cdea: the run stopped early: " << result.message << '\n';
-      for (const std::string &message : done.messages)
-        std::cerr << "cdea: " << message << '\n';
-      if (!result.completed && done.written)
-        std::cerr << "cdea: the " << done.steps_written << " converged steps are in "
-                  << done.file << '\n';
-      const bool all_written = done.written && done.steps_written == file->n_steps();
-      return result.completed && all_written ? exit_success : exit_not_complete;
+      return output->finish(result);
     }
   } // namespace
 

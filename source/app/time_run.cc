@@ -3,6 +3,7 @@
 #include <cdea/app/pump.h>
 #include <cdea/app/time_run.h>
 #include <cdea/format.h>
+#include <cdea/app/run_output.h>
 #include <cdea/output/results_file.h>
 #include <cdea/solver/time_stepper.h>
 
@@ -36,22 +37,15 @@ namespace cdea
     model->set_material_law(material_law(p, scene));
 
     const std::string            path = p.results_path();
-    std::unique_ptr<ResultsFile> file;
-    try
-      {
-        file = std::make_unique<ResultsFile>(
-          path, prm_text, scene.n_rings(),
-          std::vector<std::pair<std::string, std::string>>{
-            {"method", "finite elements in time"},
-            {"material_model", to_string(p.viscous_material.model)},
-            {"waveform", to_string(p.time.waveform)},
-            {"time_scheme", to_string(p.time.scheme)}});
-      }
-    catch (const std::exception &e)
-      {
-        std::cerr << "cdea: cannot write results: " << e.what() << '\n';
-        return exit_input_error;
-      }
+    const auto output = RunOutput::open(
+      path, prm_text, scene.n_rings(),
+      {{"method", "finite elements in time"},
+       {"material_model", to_string(p.viscous_material.model)},
+       {"waveform", to_string(p.time.waveform)},
+       {"time_scheme", to_string(p.time.scheme)}});
+    if (!output)
+      return exit_input_error;
+    ResultsFile *const file = &output->file();
 
     TimeStepper stepper(scene, *model, stepping_settings(p), settings);
     const double area = tube_area(p);
@@ -78,6 +72,7 @@ namespace cdea
     stepper.on_step = [&](const StepSummary &s) {
       file->append(s, stepper.fields_wanted() ? stepper.step_fields() : StepFields(), s.columns);
       last = s;
+      RunOutput::stop_point();
       std::ostringstream v;
       for (const double x : s.voltages)
         v << format_fixed(x * 1e-3, 3, 7);
@@ -113,7 +108,7 @@ namespace cdea
     };
 
     const auto      start  = std::chrono::steady_clock::now();
-    const RunResult result = stepper.run();
+    const RunResult result = output->guard([&] { return stepper.run(); });
     const double    seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::cout << "\nFinal state: t = " << format_number(stepper.time(), 8) << " s, voltages "
@@ -130,12 +125,6 @@ namespace cdea
               << format_number(frequency(), 4) << " Hz at the end\n"
               << result.steps << " steps, " << result.newton_iterations << " Newton iterations, "
               << std::setprecision(3) << seconds << " s" << std::endl;
-    if (!result.completed)
-      {
-        std::cerr << "cdea: the run stopped early: " << result.message << "\n"
-                  << "cdea: the " << file->n_steps() << " converged steps are in " << path << '\n';
-        return exit_not_complete;
-      }
-    return exit_success;
+    return output->finish(result);
   }
 } // namespace cdea
