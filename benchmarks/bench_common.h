@@ -24,6 +24,7 @@
 #include <functional>
 #include <iostream>
 #include <stdexcept>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -95,8 +96,13 @@ namespace cdea_bench
     const std::string prm = (out / "bench.prm").string();
     std::ifstream     in(file);
     std::ofstream     copy(prm);
-    copy << in.rdbuf() << "\nsubsection Output\n  set Directory = " << out.string()
-         << "\nend\n";
+    // The file's own Directory entry is left out (an entry set twice draws a warning).
+    const std::regex directory(R"(^\s*set\s+Directory\s*=.*)");
+    std::string      line;
+    while (std::getline(in, line))
+      if (!std::regex_match(line, directory))
+        copy << line << '\n';
+    copy << "\nsubsection Output\n  set Directory = " << out.string() << "\nend\n";
     return prm;
   }
 
