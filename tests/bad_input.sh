@@ -1,13 +1,7 @@
 #!/usr/bin/env bash
 # Every kind of bad input: one clear message on stderr that names the parameter
 # (or file), a non-zero exit, and no results file created.
-set -u
-exe="${CDEA_EXECUTABLE:?}"
-src="${CDEA_SOURCE_DIR:?}"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-failures=0
+source "$(dirname "$0")/script_helpers.bash"
 
 # case NAME "sed expression on prm/default.prm" "text the message must contain"
 case_() {

@@ -6,16 +6,7 @@
 # the result; parameters the data cannot separate are named in a warning;
 # bad data exit 1 with one message naming file, line and column, and write
 # nothing.
-set -u
-exe="${CDEA_EXECUTABLE:?}"
-src="${CDEA_SOURCE_DIR:?}"
-PYTHON=${PYTHON:-/usr/bin/python3}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-failures=0
-fail() { echo "FAIL $*"; failures=$((failures + 1)); }
-ok() { echo "ok   $*"; }
+source "$(dirname "$0")/script_helpers.bash"
 
 sed 's/set Directory           = results/set Directory = out/' "$src/prm/fit-example.prm" > fit.prm
 cp "$src/prm/fit-example.csv" data.csv

@@ -4,15 +4,7 @@
 # whole); duplicate entries warned; trailing separators refused alike by run
 # and sweep; step table columns apart for t >= 1000; a sweep none of whose
 # layouts reaches the inner voltage exits 2 and says so.
-set -u
-exe="${CDEA_EXECUTABLE:?}"
-src="${CDEA_SOURCE_DIR:?}"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-failures=0
-fail() { echo "FAIL $*"; failures=$((failures + 1)); }
-ok() { echo "ok   $*"; }
+source "$(dirname "$0")/script_helpers.bash"
 
 # bad NAME "sed expression on prm/default.prm" "text the message must contain" [PRM]
 # (with PRM, that file with the edit instead of prm/default.prm)

@@ -5,15 +5,7 @@
 # `cdea run` replays to the same state; an optimizer stopped early exits 2
 # with the best layout written; `mpirun -np 2` gives the same file contents;
 # bad input exits 1 with one message naming the parameter and writes nothing.
-set -u
-exe="${CDEA_EXECUTABLE:?}"
-PYTHON=${PYTHON:-/usr/bin/python3}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-failures=0
-fail() { echo "FAIL $*"; failures=$((failures + 1)); }
-ok() { echo "ok   $*"; }
+source "$(dirname "$0")/script_helpers.bash"
 
 cat > paper.prm <<'EOF'
 subsection Optimization

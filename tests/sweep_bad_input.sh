@@ -4,13 +4,7 @@
 # prm/sweep-inner5.prm and changes one entry per case. (Every check of the
 # subsection Sweep is also tested in-process, without the process start-up
 # per case, by tests/test_sweep.cc.)
-set -u
-exe="${CDEA_EXECUTABLE:?}"
-src="${CDEA_SOURCE_DIR:?}"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-failures=0
+source "$(dirname "$0")/script_helpers.bash"
 
 # case NAME "sed expression on prm/sweep-inner5.prm" "text the message must contain"
 case_() {

@@ -8,13 +8,7 @@
 #    viscoelastic run, fields only at the breakpoints of the waveform;
 #  - postprocess/plot_time.py on them;
 #  - the other commands refuse Time/Enabled = true.
-set -u
-exe="${CDEA_EXECUTABLE:?}"
-src="${CDEA_SOURCE_DIR:?}"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-failures=0
+source "$(dirname "$0")/script_helpers.bash"
 
 # A short viscoelastic ramp-hold on the default scene; cases append to it.
 base() {

@@ -13,7 +13,7 @@ namespace cdea
   using dealii::ParameterHandler;
   using dealii::Patterns::Anything;
   using dealii::Patterns::Bool;
-    using dealii::Patterns::Double;
+  using dealii::Patterns::Double;
   using dealii::Patterns::Integer;
 
   namespace parameters
