@@ -87,6 +87,9 @@ namespace cdea
   RunRecord run_in_memory(const RunInput &input, const RunMethod method)
   {
     const Parameters &p = input.parameters;
+    if (p.time.enabled)
+      throw InputError("Time/Enabled = true: time runs are not available in-process yet; run "
+                       "them with 'cdea run FILE.prm', or set it to false here");
     RunRecord         record;
     record.n_rings    = input.scene.n_rings();
     record.parameters = input.text;
