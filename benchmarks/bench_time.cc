@@ -17,6 +17,7 @@
 #include <cdea/app/mpi_session.h>
 #include <cdea/app/parameters.h>
 #include <cdea/app/pump.h>
+#include <cdea/app/time_run.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/solver/time_stepper.h>
 
@@ -89,12 +90,9 @@ int main(int argc, char **argv)
     {
       const auto   start     = std::chrono::steady_clock::now();
       const double cpu_start = cpu_seconds(RUSAGE_SELF);
-      const auto   model     = make_fe_model(p, scene);
-      model->set_material_law(material_law(p, scene));
-      TimeStepper  stepper(scene, *model, stepping_settings(p), settings);
-      const double area = tube_area(p);
-      stepper.add_postprocessor([area] { return std::make_unique<EnclosedVolume>(area); });
-      const RunResult result = stepper.run();
+      // The model, stepper and postprocessors of `cdea run`.
+      const TimeRunSetup run    = set_up_time_run(p, scene);
+      const RunResult    result = run.stepper->run();
       const double    t =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       if (!result.completed)

@@ -1,8 +1,8 @@
-// The Python module `cdea` (pybind11): `cdea run`, `cdea shoot` and `cdea
-// sweep` in-process (app/session.h), their results as numpy arrays with the
-// names and units of the results files (output/results_layout.h for /summary
-// and /steps, sweep_map_content() for the map), written to HDF5 only when
-// asked. Bad input raises ValueError with the command line's message. MPI is
+// The Python module `cdea` (pybind11): `cdea run` (time runs too), `cdea
+// shoot` and `cdea sweep` in-process (app/session.h), their results as numpy
+// arrays with the names and units of the results files
+// (output/results_layout.h for /summary and /steps, sweep_map_content() for
+// the map), written to HDF5 only when asked. Bad input raises ValueError with the command line's message. MPI is
 // not started (only the Trilinos KLU solver starts it, when it needs it).
 // Documented in doc/python.md.
 
@@ -207,7 +207,11 @@ namespace
         throw py::index_error("step " + std::to_string(step) + " is not one of the " +
                               std::to_string(n) + " steps");
       const StepFields &f = record.fields[std::size_t(step)];
-      py::dict          fields;
+      if (f.R.empty())
+        throw py::index_error("step " + std::to_string(step) +
+                              " has no fields: a time run keeps them at the steps its results "
+                              "file has a /steps group for (field_steps)");
+      py::dict fields;
       for (const FieldDataset &d : field_datasets())
         if (d.values)
           fields[d.name.c_str()] =
@@ -215,7 +219,21 @@ namespace
         else
           fields[d.name.c_str()] = integer_array(std::vector<double>(f.ring.begin(), f.ring.end()),
                                                  {py::ssize_t(f.ring.size())});
+      // The viscous stretches of a time run, as the file stores them.
+      if (!f.xi1.empty())
+        for (const auto &[name, xi] : {std::pair{"xi1", &f.xi1}, std::pair{"xi2", &f.xi2}})
+          fields[name] = real_array(*xi, {py::ssize_t(xi->size())});
       return fields;
+    }
+
+    /// The steps fields() has: every step, or for a time run those of /steps.
+    std::vector<std::size_t> field_steps() const
+    {
+      std::vector<std::size_t> steps;
+      for (std::size_t i = 0; i < record.fields.size(); ++i)
+        if (!record.fields[i].R.empty())
+          steps.push_back(i);
+      return steps;
     }
 
     py::object onset() const
@@ -234,10 +252,12 @@ namespace
     {
       py::dict attributes;
       std::vector<SummaryAttribute> all = onset_attributes(record.result.onset, record.n_rings);
-      for (const auto &more :
-           {limit_point_attributes(record.result.limit_points, record.n_rings),
-            breakdown_attributes(record.result.breakdown)})
-        all.insert(all.end(), more.begin(), more.end());
+      std::vector<std::vector<SummaryAttribute>> more = {
+        breakdown_attributes(record.result.breakdown)};
+      if (!record.time_run) // a time run's file has no limit points
+        more.push_back(limit_point_attributes(record.result.limit_points, record.n_rings));
+      for (const auto &some : more)
+        all.insert(all.end(), some.begin(), some.end());
       for (const SummaryAttribute &a : all)
         attributes[a.name.c_str()] = attribute_value(a);
       return attributes;
@@ -366,7 +386,10 @@ PYBIND11_MODULE(cdea, m)
                            "rings)")
     .def("fields", &Run::fields, py::arg("step"),
          "dict of numpy arrays along the meridian: the datasets of /steps/NNNNNN (negative "
-         "steps count from the end)")
+         "steps count from the end; a time run has them at field_steps only)")
+    .def_property_readonly("field_steps", &Run::field_steps,
+                           "the steps with fields: all of them, or for a time run those its "
+                           "results file has a /steps group for")
     .def_property_readonly("onset", &Run::onset,
                            "None, or dict voltage_kV, radius_mm, load_factor of the loss of "
                            "tension")
@@ -375,7 +398,7 @@ PYBIND11_MODULE(cdea, m)
     .def_property_readonly("columns", &Run::columns,
                            "dict name -> (unit, description) of the /summary columns")
     .def_property_readonly("completed", [](const Run &r) { return r.record.result.completed; },
-                           "True if the run reached the end of its voltage path")
+                           "True if the run reached the end of its voltage path (or waveform)")
     .def_property_readonly("message", [](const Run &r) { return r.record.result.message; },
                            "why the run stopped early ('' if it did not)")
     .def_property_readonly("end", [](const Run &r) { return r.record.result.end; },
@@ -424,7 +447,7 @@ PYBIND11_MODULE(cdea, m)
                               "dict {'Subsection/Entry': value} set after it.";
   const std::tuple<const char *, RunMethod, const char *> runs[] = {
     {"run", RunMethod::finite_elements,
-     "`cdea run` in-process: the FE model along the load stages. "},
+     "`cdea run` in-process: the FE model along the load stages (in time if Time/Enabled). "},
     {"shoot", RunMethod::shooting,
      "`cdea shoot` in-process: the shooting model on the same scene. "}};
   for (const auto &[name, method, what] : runs)

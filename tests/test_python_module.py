@@ -357,9 +357,3 @@ def test_threads_give_the_serial_results():
         for name in a.summary:
             assert_same(b.summary[name], a.summary[name], name)
 
-
-def test_time_runs_are_refused_in_process():
-    """A time run is not silently run quasi-static: ValueError naming Time/Enabled."""
-    with pytest.raises(ValueError) as raised:
-        cdea.run(os.path.join(SRC, "prm", "default.prm"), overrides={"Time/Enabled": "true"})
-    assert "Time/Enabled" in str(raised.value)

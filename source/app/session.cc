@@ -3,6 +3,7 @@
 #include <cdea/app/commands.h>
 #include <cdea/app/pump.h>
 #include <cdea/app/session.h>
+#include <cdea/app/time_run.h>
 #include <cdea/output/results_file.h>
 #include <cdea/output/state_check.h>
 #include <cdea/shooting/shooting_model.h>
@@ -69,10 +70,24 @@ namespace cdea
     return in;
   }
 
+  std::vector<TimeStepper::PostprocessorFactory> run_postprocessors(const Parameters &p,
+                                                                    const Scene      &scene)
+  {
+    const double area = tube_area(p), frame_radius = scene.frame_radius;
+    return {[area] { return std::make_unique<EnclosedVolume>(area); },
+            [frame_radius] { return std::make_unique<NonPhysicalCheck>(frame_radius); }};
+  }
+
   void add_run_postprocessors(LoadStepper &stepper, const Parameters &p, const Scene &scene)
   {
-    stepper.add_postprocessor(std::make_unique<EnclosedVolume>(tube_area(p)));
-    stepper.add_postprocessor(std::make_unique<NonPhysicalCheck>(scene.frame_radius));
+    for (const auto &make : run_postprocessors(p, scene))
+      stepper.add_postprocessor(make());
+  }
+
+  void add_run_postprocessors(TimeStepper &stepper, const Parameters &p, const Scene &scene)
+  {
+    for (const auto &make : run_postprocessors(p, scene))
+      stepper.add_postprocessor(make);
   }
 
   void write_summary_attributes(ResultsFile &file, const std::vector<SummaryAttribute> &attributes)
@@ -88,8 +103,7 @@ namespace cdea
   {
     const Parameters &p = input.parameters;
     if (p.time.enabled)
-      throw InputError("Time/Enabled = true: time runs are not available in-process yet; run "
-                       "them with 'cdea run FILE.prm', or set it to false here");
+      return time_run_in_memory(input);
     RunRecord         record;
     record.n_rings    = input.scene.n_rings();
     record.parameters = input.text;
@@ -132,14 +146,18 @@ namespace cdea
 
   void write_run(const RunRecord &record, const std::string &path)
   {
-    ResultsFile file(path, record.parameters, record.n_rings, {{"method", record.method}});
+    std::vector<std::pair<std::string, std::string>> root_attributes = {{"method", record.method}};
+    root_attributes.insert(root_attributes.end(), record.root_attributes.begin(),
+                           record.root_attributes.end());
+    ResultsFile file(path, record.parameters, record.n_rings, root_attributes);
     for (const SummaryColumn &c : record.columns)
       file.describe_column(c.name, c.unit, c.description);
     for (std::size_t i = 0; i < record.steps.size(); ++i)
       file.append(record.steps[i], record.fields[i], record.steps[i].columns);
     file.write_onset(record.result.onset);
-    write_summary_attributes(file,
-                             limit_point_attributes(record.result.limit_points, record.n_rings));
+    if (!record.time_run)
+      write_summary_attributes(file,
+                               limit_point_attributes(record.result.limit_points, record.n_rings));
     write_summary_attributes(file, breakdown_attributes(record.result.breakdown));
     const std::string status =
       record.result.completed ?

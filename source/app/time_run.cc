@@ -1,6 +1,5 @@
 #include <cdea/app/commands.h>
 #include <cdea/app/parameters.h>
-#include <cdea/app/pump.h>
 #include <cdea/app/time_run.h>
 #include <cdea/format.h>
 #include <cdea/app/run_output.h>
@@ -18,6 +17,9 @@ namespace cdea
 {
   namespace
   {
+    /// The root attribute `method` of a time run's results file.
+    const char *const time_method = "finite elements in time";
+
     double column(const StepSummary &s, const std::string &name)
     {
       return summary_column(s, name);
@@ -30,26 +32,70 @@ namespace cdea
     }
   } // namespace
 
+  TimeRunSetup set_up_time_run(const Parameters &p, const Scene &scene)
+  {
+    TimeRunSetup run;
+    run.settings = time_settings(p, scene);
+    run.model    = make_fe_model(p, scene);
+    run.model->set_material_law(material_law(p, scene));
+    run.stepper =
+      std::make_unique<TimeStepper>(scene, *run.model, stepping_settings(p), run.settings);
+    add_run_postprocessors(*run.stepper, p, scene);
+    run.root_attributes = {{"material_model", to_string(p.viscous_material.model)},
+                           {"waveform", to_string(p.time.waveform)},
+                           {"time_scheme", to_string(p.time.scheme)}};
+    return run;
+  }
+
+  RunRecord time_run_in_memory(const RunInput &input)
+  {
+    TimeRunSetup run = set_up_time_run(input.parameters, input.scene);
+    TimeStepper &stepper = *run.stepper;
+    RunRecord    record;
+    record.method          = time_method;
+    record.root_attributes = run.root_attributes;
+    record.time_run        = true;
+    record.n_rings         = input.scene.n_rings();
+    record.parameters      = input.text;
+    record.results_path    = input.parameters.results_path();
+    record.columns         = stepper.columns();
+    stepper.on_step        = [&](const StepSummary &s) {
+      record.steps.push_back(s);
+      record.fields.push_back(stepper.fields_wanted() ? stepper.step_fields() : StepFields());
+    };
+    const auto start = std::chrono::steady_clock::now();
+    try
+      {
+        record.result = stepper.run();
+      }
+    catch (const std::exception &e)
+      {
+        // The steps so far stay; the run says why it ended.
+        record.result.completed = false;
+        record.result.message   = std::string("error: ") + e.what();
+        record.result.steps     = static_cast<unsigned int>(record.steps.size());
+      }
+    record.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return record;
+  }
+
   int run_time(const Parameters &p, const Scene &scene, const std::string &prm_text)
   {
-    const TimeSettings settings = time_settings(p, scene);
-    const auto         model    = make_fe_model(p, scene);
-    model->set_material_law(material_law(p, scene));
+    TimeRunSetup        run      = set_up_time_run(p, scene);
+    const TimeSettings &settings = run.settings;
+    MembraneModel      *model    = run.model.get();
+    TimeStepper        &stepper  = *run.stepper;
 
-    const std::string            path = p.results_path();
-    const auto output = RunOutput::open(
-      path, prm_text, scene.n_rings(),
-      {{"method", "finite elements in time"},
-       {"material_model", to_string(p.viscous_material.model)},
-       {"waveform", to_string(p.time.waveform)},
-       {"time_scheme", to_string(p.time.scheme)}});
+    const std::string path = p.results_path();
+    std::vector<std::pair<std::string, std::string>> root_attributes = {
+      {"method", time_method}};
+    root_attributes.insert(root_attributes.end(), run.root_attributes.begin(),
+                           run.root_attributes.end());
+    const auto output = RunOutput::open(path, prm_text, scene.n_rings(), root_attributes);
     if (!output)
       return exit_input_error;
     ResultsFile *const file = &output->file();
-
-    TimeStepper stepper(scene, *model, stepping_settings(p), settings);
-    const double area = tube_area(p);
-    stepper.add_postprocessor([area] { return std::make_unique<EnclosedVolume>(area); });
     for (const SummaryColumn &c : stepper.columns())
       file->describe_column(c.name, c.unit, c.description);
 

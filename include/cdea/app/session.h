@@ -15,8 +15,10 @@
 #include <cdea/output/results_layout.h>
 #include <cdea/scene.h>
 #include <cdea/solver/load_stepper.h>
+#include <cdea/solver/time_stepper.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cdea
@@ -57,10 +59,15 @@ namespace cdea
   Parameters load_stepping_parameters(const Parameters &p, const std::string &command,
                                       std::string &note);
 
-  /// The postprocessors of `cdea run` and `cdea shoot` beyond the stepper's
-  /// standard ones: the enclosed volume (with the Reservoir's level tube) and
-  /// the check for non-physical states.
+  /// The postprocessors of `cdea run` (quasi-static and in time) and `cdea
+  /// shoot` beyond the steppers' standard ones: the enclosed volume (with the
+  /// Reservoir's level tube) and the check for non-physical states.
+  std::vector<TimeStepper::PostprocessorFactory> run_postprocessors(const Parameters &p,
+                                                                    const Scene      &scene);
+
+  /// Registers run_postprocessors() with @p stepper.
   void add_run_postprocessors(LoadStepper &stepper, const Parameters &p, const Scene &scene);
+  void add_run_postprocessors(TimeStepper &stepper, const Parameters &p, const Scene &scene);
 
   /// Writes the /summary attributes @p attributes (doubles; rows == 0: 1D).
   void write_summary_attributes(ResultsFile &file, const std::vector<SummaryAttribute> &attributes);
@@ -68,7 +75,12 @@ namespace cdea
   /// A run kept in memory.
   struct RunRecord
   {
-    std::string  method;     ///< "finite elements" or "shooting" (root attribute)
+    std::string method; ///< "finite elements", "shooting" or "finite elements in time"
+    /// Root attributes of the results file besides method and parameters.
+    std::vector<std::pair<std::string, std::string>> root_attributes;
+    /// A time run: its file has no limit-point attributes, and /steps groups
+    /// for some rows only (the others' fields are empty here).
+    bool         time_run = false;
     std::string  parameters; ///< every parameter (root attribute)
     unsigned int n_rings = 0;
     std::string  results_path; ///< where the command would write the results
@@ -83,8 +95,8 @@ namespace cdea
     double                   seconds = 0.; ///< wall time of the load stages
   };
 
-  /// The load stages of @p input with the model of @p method, every
-  /// converged step kept; nothing is printed or written.
+  /// The load stages of @p input with the model of @p method (a time run if
+  /// Time/Enabled), every converged step kept; nothing is printed or written.
   RunRecord run_in_memory(const RunInput &input, RunMethod method);
 
   /// Writes @p record through ResultsFile as the command writes it: root
