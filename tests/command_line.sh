@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The command line around the solvers: cdea --version; print-parameters --json
+# The command line around the solvers: cdea --version and --help (which lists
+# every command); print-parameters --json
 # (deal.II's JSON form) holding every entry of the .prm form with the same
 # default; 'cdea run' under mpirun with two ranks refuses (one message, exit 1,
 # nothing written) and runs with one; the Trilinos KLU solver, which starts
@@ -8,6 +9,10 @@ source "$(dirname "$0")/script_helpers.bash"
 
 version=$("$exe" --version) && [[ "$version" =~ ^cdea\ [0-9]+\.[0-9]+\.[0-9]+\ \(deal\.II\ 9\.[0-9.]+\)$ ]] &&
   ok "--version: $version" || fail "--version: '$version'"
+
+help=$("$exe" --help)
+[[ "$help" == *"cdea --version"* && "$help" == *"cdea print-parameters --json"* ]] &&
+  ok "--help lists --version and print-parameters --json" || fail "--help: $help"
 
 "$exe" print-parameters > defaults.prm && "$exe" print-parameters --json > defaults.json &&
 "$PYTHON" - <<'PY' && ok "print-parameters --json: the same entries and defaults as the .prm form" || fail "JSON defaults"
