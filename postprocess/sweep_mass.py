@@ -9,6 +9,9 @@
 #     PYTHONPATH=build/python /usr/bin/python3 postprocess/sweep_mass.py \
 #         [--out FILE.png] [--masses 100,200,300] [--prm FILE.prm]
 #
+# In Jupyter, start the kernel in the repository or in postprocess/, or set
+# CDEA_SOURCE_DIR to the repository's folder (where prm/ and build/ are).
+#
 # Left: the stroke against the voltage for each mass, the wrinkling onset
 # marked. Right: what the mass does at the end of the path: the disk's
 # deflection before any voltage, the stroke at 5 kV and the smallest hoop
@@ -25,7 +28,25 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-REPO = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+
+
+def source_dir():
+    """The repository (its prm/ and build/python/): $CDEA_SOURCE_DIR if set, else
+    the folder above this script; a cell run in Jupyter (or by exec) has no
+    __file__, so then the working directory or the one above it (a notebook
+    opened in postprocess/), whichever holds prm/default.prm."""
+    if os.environ.get("CDEA_SOURCE_DIR"):
+        return os.path.abspath(os.environ["CDEA_SOURCE_DIR"])
+    if "__file__" in globals():
+        return os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+    for folder in (os.getcwd(), os.path.dirname(os.getcwd())):
+        if os.path.isfile(os.path.join(folder, "prm", "default.prm")):
+            return folder
+    sys.exit("sweep_mass.py: cannot find the repository (prm/default.prm) from the working "
+             "directory %s: set CDEA_SOURCE_DIR to the repository's folder" % os.getcwd())
+
+
+REPO = source_dir()
 try:
     import cdea
 except ImportError:  # not on PYTHONPATH: the module of this checkout's build
@@ -101,7 +122,9 @@ second.axhline(0, color="tab:red", lw=0.5)
 second.set_ylabel("smallest hoop stress s2 (kPa)", color="tab:red")
 lines = right.get_legend_handles_labels()
 more = second.get_legend_handles_labels()
-right.legend(lines[0] + more[0], lines[1] + more[1], fontsize=8, loc="upper left")
+# Below the axes: inside, the legend would hide the first masses' points.
+right.legend(lines[0] + more[0], lines[1] + more[1], fontsize=8, loc="upper center",
+             bbox_to_anchor=(0.5, -0.16), ncol=3)
 right.set_title("what the mass does")
 right.grid(alpha=0.3)
 fig.tight_layout()
