@@ -15,6 +15,7 @@ grey. A run without limit points (load stepping, or a path that ends before
 the fold) is drawn as well.
 """
 import argparse
+import os
 import sys
 
 import matplotlib
@@ -118,6 +119,8 @@ def main():
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8, loc="upper left")
     fig.tight_layout()
+    folder = os.path.dirname(os.path.abspath(args.out))
+    os.makedirs(folder, exist_ok=True)
     fig.savefig(args.out, dpi=110)
     print(args.out)
 

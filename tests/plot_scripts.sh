@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The plotting scripts on real runs of cdea: plot_stability.py on a run that
-# passes no fold (no limit points: an empty attribute) and on the arc-length
+# passes no fold (no limit points: an empty attribute; also into a folder
+# that does not exist yet) and on the arc-length
 # run through both folds with the relaxed run on top; plot_run.py on that run
 # (its far branch reaches r = 100 mm: non-physical states are drawn, not cut
 # off) and on two-ring runs, whose displacement is plotted against the outer
@@ -18,6 +19,9 @@ sed -e 's/set Voltage path (kV)   = 5, 5; 5, 6.5/set Voltage path (kV)   = 5, 5;
 "$PYTHON" "$src/postprocess/plot_stability.py" nofold.png results/default.h5 > s1.txt 2>&1 &&
   [ -s nofold.png ] && ok "plot_stability.py on a run without limit points" ||
   { fail "plot_stability.py without a fold:"; cat s1.txt; }
+"$PYTHON" "$src/postprocess/plot_stability.py" new/folder/nofold.png results/default.h5 > s3.txt 2>&1 &&
+  [ -s new/folder/nofold.png ] && ok "plot_stability.py creates the output folder" ||
+  { fail "plot_stability.py into a new folder:"; cat s3.txt; }
 "$PYTHON" "$src/postprocess/plot_stability.py" folds.png results/fold-full.h5 \
   results/relaxed-full.h5 > s2.txt 2>&1 && [ -s folds.png ] &&
   ok "plot_stability.py through both folds, relaxed run on top" ||
