@@ -34,7 +34,7 @@ j='s/Jlim                = 270/Jlim                = 9.53/'
 scene jlim "$j";            last jlim run
 scene jlim-loose "$j" 1e-7; last jlim-loose run
 scene jlim "$j";            last jlim shoot
-echo "  Gent factor Jlim / (Jlim - I1 + 3) = $(echo 'scale=1; 9.53 / (9.53 - 9.5256)' | bc)"
+echo "  Gent factor Jlim / (Jlim - I1 + 3) = $(python3 -c 'print("%.1f" % (9.53 / (9.53 - 9.5256)))')"
 
 echo "2. pre-stretch 10: 200 kV is above the voltage ceiling; 90 kV"
 p='s/Prestretch          = 2.5/Prestretch          = 10/'

@@ -54,7 +54,7 @@ wait_for_steps a.out 5
 start=$(date +%s.%N)
 "$exe" run other.prm > b.out 2> b.err
 rc=$?
-took=$(echo "$(date +%s.%N) - $start" | bc)
+took=$("$PYTHON" -c 'import sys; print("%.2f" % (float(sys.argv[1]) - float(sys.argv[2])))' "$(date +%s.%N)" "$start")
 if [ $rc -eq 1 ] && grep -q "another cdea process (pid $first) is writing out/long.h5" b.err; then
   ok "second writer refused with exit 1 in $took s: $(cat b.err)"
 else fail "second writer: exit $rc, $(cat b.err)"; fi
