@@ -136,23 +136,38 @@ def line_label(name):
 def draw_map(fig, ax, mp, stroke=False):
     """The map of one file on @p ax: displacement (or the stroke, displacement
     minus its zero-voltage value, with @p stroke), both lines with their
-    maxima, and the region past the red line hatched: there the outer ring
-    has lost tension, so those layouts and voltages are not usable."""
+    maxima, and the region past the red line grey and hatched: there the
+    outer ring has lost tension, so those layouts and voltages are not usable
+    (and take no part in the colour scale)."""
     values = mp.disp - mp.zero_disp if stroke else mp.disp
     quantity = "stroke" if stroke else "displacement"
-    data = np.ma.masked_invalid(values)
+    red_outer = mp.line["red"][0]
+    # The colour scale spans the usable cells only (up to the red line), so
+    # that they get the whole range; the cells past it are grey.
+    past = np.isfinite(red_outer)[:, None] & (mp.outer[None, :] > red_outer[:, None])
+    usable = np.ma.masked_where(past | ~np.isfinite(values), values)
+    unusable = np.ma.masked_where(~past | ~np.isfinite(values), np.zeros_like(values))
+    if usable.count() == 0:  # every cell past the red line: scale on them all
+        usable = np.ma.masked_invalid(values)
+    low, high = float(usable.min()), float(usable.max())
+    grey = matplotlib.colors.ListedColormap(["0.8"])
     if len(mp.outer) > 1 and len(mp.rv) > 1:
-        mesh = ax.pcolormesh(mp.outer, mp.rv, data, shading="nearest", cmap="viridis")
-        levels = np.arange(np.floor(np.nanmin(values)), np.ceil(np.nanmax(values)) + 1, 1.0)
+        mesh = ax.pcolormesh(mp.outer, mp.rv, usable, shading="nearest", cmap="viridis",
+                             vmin=low, vmax=high)
+        if unusable.count():
+            ax.pcolormesh(mp.outer, mp.rv, unusable, shading="nearest", cmap=grey)
+        levels = np.arange(np.floor(low), np.ceil(high) + 1, 1.0)
         if len(levels) > 1:
-            cs = ax.contour(mp.outer, mp.rv, data, levels=levels, colors="white",
+            cs = ax.contour(mp.outer, mp.rv, usable, levels=levels, colors="white",
                             linewidths=0.5, alpha=0.6)
             ax.clabel(cs, fmt="%g", fontsize=7)
     else:
-        mesh = ax.scatter(np.repeat(mp.outer[None, :], len(mp.rv), 0),
-                          np.repeat(mp.rv[:, None], len(mp.outer), 1), c=data, cmap="viridis")
-    fig.colorbar(mesh, ax=ax, label=f"{quantity} (mm)")
-    red_outer = mp.line["red"][0]
+        x = np.repeat(mp.outer[None, :], len(mp.rv), 0)
+        y = np.repeat(mp.rv[:, None], len(mp.outer), 1)
+        mesh = ax.scatter(x, y, c=usable, cmap="viridis", vmin=low, vmax=high)
+        if unusable.count():
+            ax.scatter(x[past], y[past], c="0.8")
+    fig.colorbar(mesh, ax=ax, label=f"{quantity} (mm), up to the red line")
     if np.any(np.isfinite(red_outer)):
         # Past the red line, up to the end of the grid (or where the row
         # stopped): greyed and hatched.
