@@ -24,12 +24,14 @@ The paper's "out-of-plane displacement" is the stroke: the disk's deflection
 minus its value at 0 V under the same weight (doc/validation.md, section 5).
 Wrinkled parts (lost tension) are shaded red; states cdea flags as
 non-physical (/summary/nonphysical) are drawn dashed. --measured overlays
-points from a CSV file with the columns figure, series, x, y (figure: 4a, 4b,
-6a, 6b, 9 or 11; x and y in the units of that figure's axes; lines starting
-with # are comments); postprocess/paper_measured.csv holds the measured values
+points from a CSV file with the columns figure, series, x, y (figure: a panel
+of MEASURED_PANELS, 3a to 11; x and y in the units of that panel's axes, 8a
+and 8b: outer voltage in kV and r_v/a; lines starting with # are comments;
+another figure is an error); postprocess/paper_measured.csv holds the measured values
 the paper quotes in its text. --quick uses coarser design maps (the lines
 and the experiments' numbers are located exactly either way). Prints the
-comparison with the paper's experiments (+58.2 %, +19.4 %).
+comparison with the paper's experiments (+58.2 %, +19.4 %), the largest
+stroke on the red line (figure 9) and the pump's levels (figure 11).
 
 Needs Debian's python3-h5py, python3-numpy and python3-matplotlib.
 """
@@ -55,6 +57,9 @@ import plot_run  # noqa: E402
 
 PROG = "paper_figures.py"
 FIGURES = ("3", "4", "6", "7", "8", "9", "11")
+# The panels --measured can overlay points on (the CSV's figure column).
+MEASURED_PANELS = ("3a", "3b", "4a", "4b", "6a", "6b", "7a", "7b", "7c", "7d", "8a", "8b",
+                   "9", "11")
 LAYOUTS = (1.4, 1.7, 2.0)  # the paper's r_v/a
 A_MM = 14.0  # disk radius a
 
@@ -140,11 +145,16 @@ def read_measured(path):
     points = {}
     for k, row in enumerate(csv.DictReader(lines)):
         try:
-            points.setdefault(row["figure"].strip(), []).append(
-                (row["series"].strip(), float(row["x"]), float(row["y"])))
+            key = row["figure"].strip()
+            point = (row["series"].strip(), float(row["x"]), float(row["y"]))
         except (KeyError, TypeError, ValueError, AttributeError):
             raise FigureError(f"{path}: data line {k + 1} is not 'figure,series,x,y' "
                               "with numbers x and y") from None
+        if key not in MEASURED_PANELS:
+            raise FigureError(f"{path}: data line {k + 1}: figure '{key}' is not a panel "
+                              f"measured points are drawn on (choose from "
+                              f"{', '.join(MEASURED_PANELS)})")
+        points.setdefault(key, []).append(point)
     return points
 
 
@@ -203,7 +213,9 @@ def meridian(ax, run, row, colors, label):
     for ring, idx in plot_run.ring_segments(f):
         ax.plot(x[idx], y[idx], color=colors[ring], lw=1.6, label=label if ring == last else None,
                 ls="--" if run.nonphysical[row] else "-")
-    ax.plot([0, x[0]], [y[0], y[0]], color="black", lw=4, solid_capstyle="butt", zorder=5)
+    # Thin and in the state's colour (the outer ring's, which differs between
+    # states): the disks of neighbouring states lie close.
+    ax.plot([0, x[0]], [y[0], y[0]], color=colors[-1], lw=2, solid_capstyle="butt", zorder=5)
 
 
 def configuration_axes(ax, title):
@@ -214,7 +226,7 @@ def configuration_axes(ax, title):
     ax.set_ylabel("z / a (down)")
     ax.set_title(title, fontsize=10)
     ax.grid(alpha=0.3)
-    ax.plot([], [], color="black", lw=4, label="rigid disk")
+    ax.plot([], [], color="0.3", lw=2, label="rigid disk (colour of its state)")
     ax.plot([], [], color="tab:red", lw=9, alpha=0.3, label="wrinkled (s2 < 0)")
     ax.legend(fontsize=7.5, loc="lower right")
 
@@ -228,12 +240,14 @@ def figure3(runs, measured, out):
     shades = plt.get_cmap("viridis")(np.linspace(0, 0.9, len(equal)))
     for v, color, row in zip(equal, shades, rows_at(run, [[v, v] for v in equal])):
         meridian(ax, run, row, [color, color], f"Φ = {v} kV")
+    overlay(ax, measured, "3a")
     configuration_axes(ax, "(a) r_v/a = 1.7, the same voltage on both rings")
     outer = [5.0, 5.5, 6.0, 6.5]
     hues = plt.get_cmap("autumn")(np.linspace(0, 0.75, len(outer)))
     for v, color, row in zip(outer, hues, rows_at(run, [[5, v] for v in outer])):
         meridian(ax=bx, run=run, row=row, colors=["tab:blue", color],
                  label=f"Φi = 5 kV (blue), Φo = {v:g} kV")
+    overlay(bx, measured, "3b")
     configuration_axes(bx, "(b) inner ring 5 kV, outer ring 5 to 6.5 kV")
     fig.tight_layout()
     save(fig, out, "3")
@@ -308,6 +322,14 @@ def experiments(runs):
     print(f"  measured (paper, section 4): +58.2 % at r_v/a = 1.4 over both at 5.0 kV -> cdea "
           f"{100 * (red[1.4][1] / both[5.0] - 1):+.2f} %; +19.4 % at r_v/a = 1.7 over both at "
           f"5.5 kV -> cdea {100 * (red[1.7][1] / both[5.5] - 1):+.2f} %")
+    # The measured increases are of the stroke; the displacement including
+    # the sag under the weight rises much less.
+    sag = float(full.displacement_mm[full.end_of_load_stage()])
+    with_sag = [100 * ((red[rv][1] + sag) / (both[v] + sag) - 1) for rv, v in ((1.4, 5.0),
+                                                                               (1.7, 5.5))]
+    print(f"  displacement including the {sag:.2f} mm sag under the weight: "
+          f"{with_sag[0]:+.2f} % at r_v/a = 1.4 over both at 5.0 kV, {with_sag[1]:+.2f} % at "
+          "1.7 over both at 5.5 kV")
     return both, red
 
 
@@ -368,6 +390,7 @@ def figure7(runs, measured, out):
             for ring, idx in plot_run.ring_segments(f):
                 ax.plot(x[idx], f[key][idx] * factor, color=color, lw=1.5,
                         label=label if ring == 0 else None)
+        overlay(ax, measured, "7" + letter)
         ax.set_ylabel(ylabel)
         ax.set_title(f"({letter})", fontsize=10, loc="left")
         ax.grid(alpha=0.3)
@@ -388,6 +411,7 @@ def figure8(runs, measured, out):
     for ax, inner, letter in zip(axes, (5.0, 5.5), "ab"):
         mp = runs.sweep(inner)
         plot_map.draw_map(fig, ax, mp, stroke=True)
+        overlay(ax, measured, "8" + letter)
         ax.set_title(f"({letter}) inner ring {inner:g} kV: stroke; * = largest increase on a "
                      "line", fontsize=10)
         ax.set_ylabel("r_v / a")
@@ -396,8 +420,14 @@ def figure8(runs, measured, out):
 
 def figure9(runs, measured, out):
     fig, ax = plt.subplots(figsize=(6.5, 4.4))
+    print("Figure 9: the largest stroke on the red line (loss of tension), per map row:")
     for inner, red, blue in ((5.0, "tab:red", "tab:blue"), (5.5, "tab:orange", "tab:cyan")):
         mp = runs.sweep(inner)
+        on_red = mp.line_disp["red"] - mp.zero_disp
+        if np.any(np.isfinite(on_red)):
+            i = int(np.nanargmax(on_red))
+            print(f"  inner {inner:g} kV: {on_red[i]:.3f} mm at r_v/a = {mp.rv[i]:g} "
+                  f"(outer {mp.line['red'][0][i]:.4f} kV)")
         for name, color, ls in (("red", red, "-"), ("blue", blue, "--")):
             values = mp.line_disp[name] - mp.zero_disp
             ax.plot(mp.rv, values, ls, color=color, lw=1.6, marker="o", ms=3,
@@ -418,7 +448,12 @@ def figure9(runs, measured, out):
 
 def figure11(runs, measured, out):
     fig, ax = plt.subplots(figsize=(6.5, 4.4))
-    plot_pump.draw(ax, [runs.pump()], paper=False)
+    pump = runs.pump()
+    print("Figure 11: the pump's level difference at the waypoints of prm/pump.prm:")
+    for i in pump.waypoints():
+        print(f"  inner {pump.volts[i, 0]:.1f} kV, outer {pump.volts[i, -1]:.1f} kV: "
+              f"{pump.drop[i]:.1f} mm")
+    plot_pump.draw(ax, [pump], paper=False)
     overlay(ax, measured, "11")
     ax.set_ylabel("water level difference (mm)")
     ax.set_title("Pump module, inner ring 4.0 kV (dashed: both rings ramped together)",

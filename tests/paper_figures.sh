@@ -5,8 +5,10 @@
 # by root finding (independent of the map's grid), so the numbers must equal
 # the independent values of bench_failure_modes (doc/validation.md, section
 # 5): +54.01 % at r_v/a = 1.4 over both rings at 5.0 kV, +19.44 % at 1.7 over
-# both at 5.5 kV, stroke 5.5448 mm at 5 kV. Also: bad --only and a bad CSV
-# give exit 1 and a message.
+# both at 5.5 kV, stroke 5.5448 mm at 5 kV; the displacement including the sag
+# rises by +12.59 % and +5.56 %; the pump's levels of figure 11 (30.6 and
+# 42.1 mm, doc/pump.md). Also: bad --only, a bad CSV and a CSV naming a figure
+# no points are drawn on give exit 1 and a message, and write nothing.
 source "$(dirname "$0")/script_helpers.bash"
 
 script="$src/postprocess/paper_figures.py"
@@ -29,6 +31,14 @@ case "$line" in
     ok "experiments: $line" ;;
   *) fail "experiments line: '$line'" ;;
 esac
+grep -q "sag under the weight: +12.59 % at r_v/a = 1.4 over both at 5.0 kV, +5.56 % at 1.7" \
+  "$work/out.txt" && ok "displacement with the sag: +12.59 %, +5.56 %" ||
+  fail "sag line: '$(grep 'sag under' "$work/out.txt")'"
+grep -q "inner 4.0 kV, outer 4.0 kV: 30.6 mm" "$work/out.txt" &&
+  grep -q "inner 4.0 kV, outer 5.0 kV: 42.1 mm" "$work/out.txt" &&
+  ok "figure 11 levels: 30.6 and 42.1 mm" || fail "figure 11 levels: $(grep -A3 'Figure 11' "$work/out.txt")"
+grep -A2 "Figure 9:" "$work/out.txt" | grep -q "inner 5 kV: .* mm at r_v/a = " &&
+  ok "figure 9 maxima printed" || fail "figure 9 lines: $(grep -A2 'Figure 9' "$work/out.txt")"
 
 "$PYTHON" "$script" --only 5 --cdea "$exe" --work "$work/r2" --out "$work/f2" > /dev/null 2> "$work/e2.txt" &&
   fail "--only 5 exits 0" || { grep -q "no figure 5" "$work/e2.txt" && ok "--only 5 rejected" || fail "message: $(cat "$work/e2.txt")"; }
@@ -36,5 +46,13 @@ printf 'figure,series,x,y\n11,bad,four,24\n' > "$work/bad.csv"
 "$PYTHON" "$script" --only 11 --measured "$work/bad.csv" --cdea "$exe" --work "$work/r3" --out "$work/f3" \
   > /dev/null 2> "$work/e3.txt" &&
   fail "a bad CSV exits 0" || { grep -q "data line 1" "$work/e3.txt" && ok "bad CSV rejected: $(cat "$work/e3.txt")" || fail "message: $(cat "$work/e3.txt")"; }
+
+printf 'figure,series,x,y\n11,ok,4,24\n5,unknown figure,1,2\n' > "$work/key.csv"
+"$PYTHON" "$script" --only 11 --measured "$work/key.csv" --cdea "$exe" --work "$work/r4" --out "$work/f4" \
+  > /dev/null 2> "$work/e4.txt" &&
+  fail "an unknown figure in the CSV exits 0" ||
+  { grep -q "data line 2: figure '5' is not a panel .*3a, 3b, 4a, 4b, 6a, 6b, 7a, 7b, 7c, 7d, 8a, 8b, 9, 11" "$work/e4.txt" &&
+    [ ! -e "$work/r4" ] && [ ! -e "$work/f4" ] &&
+    ok "unknown figure in the CSV rejected: $(cat "$work/e4.txt")" || fail "message: $(cat "$work/e4.txt")"; }
 
 finish
