@@ -25,10 +25,13 @@ namespace cdea
       return summary_column(s, name);
     }
 
-    std::string fixed_or_dash(const double value, const int decimals, const int width)
+    /// One cell of the progress table: a blank, then the value right-aligned in
+    /// @p width - 1 characters ("-" if it is NaN), so that columns never run
+    /// together however wide a value grows.
+    std::string cell(const double value, const int decimals, const int width)
     {
-      return std::isnan(value) ? std::string(width - 1, ' ') + "-" :
-                                 format_fixed(value, decimals, width);
+      return ' ' + (std::isnan(value) ? std::string(width - 2, ' ') + "-" :
+                                        format_fixed(value, decimals, width - 1));
     }
   } // namespace
 
@@ -114,22 +117,23 @@ namespace cdea
               << std::setw(7 * n) << "V (kV)" << std::setw(12) << "disp (mm)" << std::setw(12)
               << "stroke (mm)" << std::setw(11) << "level (mm)" << std::setw(11) << "v (mm/s)"
               << std::setw(11) << "min s2/mu" << std::setw(5) << "its" << '\n';
-    StepSummary last;
+    StepSummary  last;
+    unsigned int newton_iterations_of_steps = 0;
     stepper.on_step = [&](const StepSummary &s) {
       file->append(s, stepper.fields_wanted() ? stepper.step_fields() : StepFields(), s.columns);
       last = s;
       RunOutput::stop_point();
       std::ostringstream v;
       for (const double x : s.voltages)
-        v << format_fixed(x * 1e-3, 3, 7);
+        v << cell(x * 1e-3, 3, 7);
       std::cout << std::setw(6) << file->n_steps() - 1 << std::setw(12)
                 << (s.stage == Stage::voltage ? "time" : stage_name(s.stage))
-                << fixed_or_dash(column(s, "time_s"), 4, 11) << v.str()
-                << format_fixed(s.displacement * 1e3, 5, 12) << fixed_or_dash(s.stroke * 1e3, 5, 12)
-                << fixed_or_dash(column(s, "level_drop_mm"), 3, 11)
-                << fixed_or_dash(column(s, "disk_velocity_mm_per_s"), 2, 11)
-                << format_fixed(s.s2_min / scene.material.shear_modulus, 4, 11) << std::setw(5)
+                << cell(column(s, "time_s"), 4, 11) << v.str() << cell(s.displacement * 1e3, 5, 12)
+                << cell(s.stroke * 1e3, 5, 12) << cell(column(s, "level_drop_mm"), 3, 11)
+                << cell(column(s, "disk_velocity_mm_per_s"), 2, 11)
+                << cell(s.s2_min / scene.material.shear_modulus, 4, 11) << ' ' << std::setw(4)
                 << s.newton_iterations << '\n';
+      newton_iterations_of_steps += s.newton_iterations;
     };
     stepper.on_onset = [&](const OnsetRecord &onset) {
       file->write_onset(onset);
@@ -157,19 +161,25 @@ namespace cdea
     const RunResult result = output->guard([&] { return stepper.run(); });
     const double    seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // A value that a run stopped early never reached prints as "-", not "nan".
+    const auto number = [](const double value, const int digits) {
+      return std::isnan(value) ? std::string("-") : format_number(value, digits);
+    };
     std::cout << "\nFinal state: t = " << format_number(stepper.time(), 8) << " s, voltages "
               << format_kV(last.voltages) << ", displacement "
               << format_number(last.displacement * 1e3, 8) << " mm, stroke "
-              << format_number(last.stroke * 1e3, 8) << " mm, level drop "
-              << format_number(column(last, "level_drop_mm"), 6) << " mm\n"
+              << number(last.stroke * 1e3, 8) << " mm, level drop "
+              << number(column(last, "level_drop_mm"), 6) << " mm\n"
               << "  energy since t = 0: electrical work "
-              << format_number(column(last, "electrical_work_mJ"), 6) << " mJ, stored "
-              << format_number(column(last, "stored_energy_change_mJ"), 6) << " mJ, dissipated "
-              << format_number(column(last, "dissipated_energy_mJ"), 6) << " mJ\n"
+              << number(column(last, "electrical_work_mJ"), 6) << " mJ, stored "
+              << number(column(last, "stored_energy_change_mJ"), 6) << " mJ, dissipated "
+              << number(column(last, "dissipated_energy_mJ"), 6) << " mJ\n"
               << "  disk's natural frequency sqrt(k/m) / 2 pi: "
-              << format_number(frequency_start, 4) << " Hz at the start, "
-              << format_number(frequency(), 4) << " Hz at the end\n"
-              << result.steps << " steps, " << result.newton_iterations << " Newton iterations, "
+              << number(frequency_start, 4) << " Hz at the start, " << number(frequency(), 4)
+              << " Hz at the end\n"
+              << result.steps << " steps, "
+              << (result.completed ? result.newton_iterations : newton_iterations_of_steps)
+              << " Newton iterations, "
               << std::setprecision(3) << seconds << " s" << std::endl;
     return output->finish(result);
   }
