@@ -17,7 +17,8 @@ every file,
     the mean displacement over its first and over its last second (which
     averages out most of the disk's ringing), the creep between them and, with
     --elastic, the quasi-static displacement at the same voltages and what is
-    still to creep at the end of the hold;
+    still to creep at the end of the hold, and the disk's ringing: its
+    amplitude about the creep over the last second and its decay rate;
   - for a square waveform, each cycle's level drop at the end of its on half
     (state B) and of its off half (state A), each averaged over the last tenth
     of the period, and their difference, and the frequency and amplitude of
@@ -114,8 +115,8 @@ class TimeRun:
     def cycles(self):
         """(k, level B, level A, displacement B, displacement A) per cycle of a
         square wave: state B is the end of the on half, A the end of the off
-        half, each the mean over the last tenth of the period (which averages
-        the disk's ringing out)."""
+        half, each the mean in time over the last tenth of the period (which
+        averages the disk's ringing out)."""
         if self.waveform != "square" or not np.isfinite(self.frequency):
             return []
         period = 1.0 / self.frequency
@@ -125,7 +126,8 @@ class TimeRun:
             values = []
             for end in ends:
                 window = (self.t > end - 0.1 * period - 1e-9) & (self.t <= end + 1e-9)
-                values.append((self.level[window].mean(), self.disp[window].mean()))
+                values.append((time_mean(self.t[window], self.level[window]),
+                               time_mean(self.t[window], self.disp[window])))
             rows.append((k + 1, values[0][0], values[1][0], values[0][1], values[1][1]))
         return rows
 
@@ -140,11 +142,42 @@ class TimeRun:
         tc = t[cross] - x[cross] * (t[cross + 1] - t[cross]) / (x[cross + 1] - x[cross])
         return (len(tc) - 1) / (2 * (tc[-1] - tc[0])), 0.5 * np.ptp(self.disp[window])
 
+    def hold_ringing(self, i, j):
+        """The disk's ringing in the hold of rows i..j: half the peak-to-peak
+        displacement about a straight line (which takes out the creep) over
+        the hold's last second, and the exponential decay rate (1/s) of that
+        amplitude fitted over the 1 s windows of the hold's second half (NaN
+        if the hold is shorter than 4 s or does not ring)."""
+        def amplitude(start, end):
+            window = (self.t >= start) & (self.t <= end)
+            if window.sum() < 3:
+                return float("nan")
+            t, x = self.t[window], self.disp[window]
+            return 0.5 * np.ptp(x - np.polyval(np.polyfit(t, x, 1), t))
+        t0, t1 = self.t[i], self.t[j]
+        last = amplitude(t1 - 1.0, t1)
+        starts = np.arange(0.5 * (t0 + t1), t1 - 1.0 + 1e-9, 1.0)
+        if t1 - t0 < 4.0 or len(starts) < 2:
+            return last, float("nan")
+        amps = np.array([amplitude(a, a + 1.0) for a in starts])
+        if not np.all(amps > 0):
+            return last, float("nan")
+        return last, -np.polyfit(starts, np.log(amps), 1)[0]
+
     def amplitude(self):
         """Half the peak-to-peak displacement over the last drive period."""
         period = 1.0 / self.frequency
         last = self.t >= self.t[-1] - period * (1 - 1e-9)
         return 0.5 * (self.disp[last].max() - self.disp[last].min())
+
+
+def time_mean(t, x):
+    """Mean of x over [t[0], t[-1]] by the trapezoidal rule: a plain mean of
+    the rows would weigh the window's ends by the time step, an error of first
+    order in the step where the disk rings."""
+    if len(t) < 2:
+        return float(np.mean(x))
+    return float(np.sum(0.5 * (x[1:] + x[:-1]) * np.diff(t)) / (t[-1] - t[0]))
 
 
 def save(fig, path):
@@ -249,14 +282,15 @@ def report(run, min_hold, curve):
     holds = run.holds(min_hold)
     if holds:
         print("  hold  voltages (kV)     end (s)  first 1 s (mm)  last 1 s (mm)  creep (mm)"
-              "  quasi-static (mm)  still to creep (mm)")
+              "  quasi-static (mm)  still to creep (mm)  ringing last 1 s (mm)  decay (1/s)")
         for k, (i, j) in enumerate(holds):
             v = ", ".join(f"{x:.2f}" for x in run.volts[i])
             early = run.disp[i:j + 1][run.t[i:j + 1] <= run.t[i] + 1.0].mean()
             late = run.disp[i:j + 1][run.t[i:j + 1] >= run.t[j] - 1.0].mean()
             qs = quasi_static_at(curve, run.volts[j])
+            ring, decay = run.hold_ringing(i, j)
             print(f"  {k + 1:4d}  {v:16s} {run.t[j]:8.2f} {early:15.5f} {late:14.5f}"
-                  f" {late - early:11.5f} {qs:18.5f} {qs - late:20.5f}")
+                  f" {late - early:11.5f} {qs:18.5f} {qs - late:20.5f} {ring:22.6f} {decay:12.4f}")
     cycles = run.cycles()
     if cycles:
         # Ringing: the displacement over each half after its edge (+10 % of

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Time-dependent runs from the command line (doc/time.md):
-#  - bad Material/Model and Time entries: exit 1, a message naming the
+#  - bad Material/Model and Time entries (a malformed first table row, a
+#    directory as table, more than 1e7 steps): exit 1, a message naming the
 #    parameter, no results file;
 #  - short runs of every waveform (ramp-hold with inertia and a rest time,
 #    square, sine, a table with a header): exit 0, one /summary row per time
@@ -66,6 +67,20 @@ printf '0, 0\n1, -2\n' > negative.csv
 bad table-negative  "$(sub Time 'Waveform = table\n  set Table file = negative.csv')" "voltages must not be negative"
 printf '0, 0\n1, two\n' > text.csv
 bad table-text      "$(sub Time 'Waveform = table\n  set Table file = text.csv')" "text.csv', line 2: 'two' is not a number"
+# A malformed first row is an error, not a header (its 0.5 s row would be lost).
+printf '0.5, 3x\n1, 2\n' > first-row.csv
+bad table-first-row "$(sub Time 'Waveform = table\n  set Table file = first-row.csv')" "first-row.csv', line 1: '3x' is not a number"
+here=$(pwd -P)
+bad table-relative  "$(sub Time 'Waveform = table\n  set Table file = nowhere.csv')" "cannot read 'nowhere.csv' (relative to the working directory: $here/nowhere.csv)"
+mkdir -p folder.csv
+bad table-directory "$(sub Time 'Waveform = table\n  set Table file = folder.csv')" "cannot read 'folder.csv' (relative to the working directory: $here/folder.csv): it is a directory"
+# Run length: more than 1e7 steps is refused, naming the entries that set it.
+printf '0, 0\n1e300, 2\n' > forever.csv
+bad steps-table     "$(sub Time 'Waveform = table\n  set Table file = forever.csv')" "over Time/Time step (s) = 0.02"
+bad steps-table-src "$(sub Time 'Waveform = table\n  set Table file = forever.csv')" "the last time in Time/Table file"
+bad steps-hold      "$(sub Time 'Hold time (s) = 1e6')" "the run would take 5e+07 time steps, more than 1e+07: its duration 1e+06 s (Time/Ramp time (s) + Time/Hold time (s))"
+bad steps-rest      "$(sub Time 'Rest time before voltage (s) = 3e5')" "+ Time/Rest time before voltage (s)) over Time/Time step (s)"
+bad steps-cycles    "$(sub Time 'Waveform = sine\n  set Cycles = 10000000\n  set Frequency (Hz) = 0.5')" "(Time/Cycles / Time/Frequency (Hz))"
 
 # The other commands refuse time runs.
 base shoot > shoot.prm
@@ -136,8 +151,11 @@ for name, rest, t_end, breakpoints in [("ramp-hold", 0.1, 0.5, [0.0, 0.2, 0.5]),
               "xi1, xi2 in the fields" if viscous else "no xi for the elastic law")
         if viscous:
             xi1, lam1 = group["xi1"][...], group["lambda1"][...]
-            check(np.all(xi1 > 1) and np.all(xi1 < lam1.max() + 1e-9),
-                  "1 < xi1 < the largest meridian stretch")
+            # The dashpot follows the stretch from behind: where the stretch
+            # has come back (end of a sine), xi1 may exceed it a little.
+            check(np.all(xi1 > 1) and np.all(xi1 < 1.01 * lam1.max()),
+                  f"1 < xi1 < 1.01 x the largest meridian stretch (xi1 up to {xi1.max():.4f}, "
+                  f"lambda1 up to {lam1.max():.4f})")
             check(np.abs(xi1 - lam1).max() > 1e-3, "the dashpot lags the stretch")
         for c in ("electrical_work_mJ", "stored_energy_change_mJ", "dissipated_energy_mJ"):
             check(c in s, f"/summary/{c}")

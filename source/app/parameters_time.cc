@@ -7,6 +7,7 @@
 #include <cdea/material/two_network_gent.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -69,8 +70,9 @@ namespace cdea
       prm.declare_entry("Table file", "", Anything(),
                         "table: a CSV file (relative to the working directory) of rows 'time_s, "
                         "one voltage per ring (kV)' with increasing times from 0; '#' lines and a "
-                        "header line are skipped. The voltages are linear between rows and start "
-                        "from 0 V at t = 0 when the first row is later.");
+                        "first line that starts with a name (a header) are skipped. The voltages "
+                        "are linear between rows and start from 0 V at t = 0 when the first row "
+                        "is later.");
       prm.declare_entry("Time step (s)", "0.01", Double(),
                         "Largest time step; steps are halved where Newton needs it and land on "
                         "every ramp end and square edge.");
@@ -174,6 +176,18 @@ namespace cdea
       return value;
     }
 
+    /// The table file as messages name it: a relative path with the path it
+    /// resolves to from the working directory.
+    std::string describe_file(const std::string &file)
+    {
+      const std::filesystem::path path(file);
+      std::error_code             error;
+      const auto                  resolved = std::filesystem::absolute(path, error);
+      if (path.is_absolute() || error)
+        return "'" + file + "'";
+      return "'" + file + "' (relative to the working directory: " + resolved.string() + ")";
+    }
+
     /// Rows of the table file: times (s) and voltages (V) per ring.
     void read_table(const std::string &file, const unsigned int n_rings,
                     std::vector<double> &times, std::vector<std::vector<double>> &volts)
@@ -181,11 +195,14 @@ namespace cdea
       const std::string name = "Time/Table file";
       if (file.empty())
         throw InputError(name + " must be given for Time/Waveform = table");
+      std::error_code error;
+      if (std::filesystem::is_directory(file, error))
+        throw InputError(name + ": cannot read " + describe_file(file) + ": it is a directory");
       std::ifstream in(file);
       if (!in)
-        throw InputError(name + ": cannot read '" + file + "'");
+        throw InputError(name + ": cannot read " + describe_file(file));
       std::string  line;
-      unsigned int number = 0;
+      unsigned int number         = 0;
       bool         header_allowed = true; // the first non-comment line may be a header
       while (std::getline(in, line))
         {
@@ -195,20 +212,17 @@ namespace cdea
             continue;
           while (!line.empty() && (line.back() == '\r' || line.back() == ' '))
             line.pop_back();
-          const std::string where = name + " '" + file + "', line " + std::to_string(number);
-          std::vector<double> row;
-          try
+          // A header starts with a name; a row that starts like a number and
+          // does not parse is a mistake in the data, not a header.
+          const bool header = std::string("0123456789+-.").find(line[first]) == std::string::npos;
+          if (header && header_allowed)
             {
-              row = parse_number_list(line, where);
-            }
-          catch (const InputError &)
-            {
-              if (!header_allowed)
-                throw;
               header_allowed = false;
               continue;
             }
-          header_allowed = false;
+          header_allowed          = false;
+          const std::string where = name + " '" + file + "', line " + std::to_string(number);
+          const std::vector<double> row = parse_number_list(line, where);
           if (row.size() != n_rings + 1)
             throw InputError(where + ": expected time and " + std::to_string(n_rings) +
                              " voltage(s), got " + std::to_string(row.size()) + " value(s)");
@@ -226,13 +240,18 @@ namespace cdea
           times.push_back(row[0]);
           volts.push_back(v);
         }
+      if (in.bad())
+        throw InputError(name + ": cannot read " + describe_file(file));
       if (times.empty())
-        throw InputError(name + " '" + file + "' has no rows of numbers");
+        throw InputError(name + " " + describe_file(file) + " has no rows of numbers");
     }
   } // namespace
 
   void validate_time(const Parameters &p)
   {
+    // Ten million steps take hours and a results file of gigabytes: far more
+    // than any scene needs, and most likely a mistyped duration.
+    constexpr double max_time_steps = 1e7;
     const auto &m = p.viscous_material;
     const auto &t = p.time;
     if (m.model == MaterialModel::viscoelastic)
@@ -257,10 +276,12 @@ namespace cdea
     require_positive(t.min_time_step_s, "Time/Min time step (s)");
     if (t.min_time_step_s > t.time_step_s)
       throw InputError("Time/Min time step (s) must not exceed Time/Time step (s)");
-    rest_time(t);
     if (!(t.fields_interval_s >= 0.))
       throw InputError("Time/Fields interval (s) must be zero or positive, got " +
                        format_number(t.fields_interval_s));
+    // How long the run is, to bound its number of steps.
+    double      duration = 0.;
+    std::string duration_entries;
     switch (t.waveform)
       {
         case WaveformKind::ramp_hold:
@@ -268,6 +289,8 @@ namespace cdea
           if (!(t.hold_time_s >= 0.))
             throw InputError("Time/Hold time (s) must be zero or positive, got " +
                              format_number(t.hold_time_s));
+          duration         = t.ramp_time_s + t.hold_time_s;
+          duration_entries = "Time/Ramp time (s) + Time/Hold time (s)";
           break;
         case WaveformKind::square:
           require_positive(t.frequency_Hz, "Time/Frequency (Hz)");
@@ -276,18 +299,36 @@ namespace cdea
             throw InputError("Time/Rise time (s) must be shorter than half a period, 1 / (2 "
                              "Frequency) = " + format_number(0.5 / t.frequency_Hz) + " s, got " +
                              format_number(t.rise_time_s));
+          duration         = t.cycles / t.frequency_Hz;
+          duration_entries = "Time/Cycles / Time/Frequency (Hz)";
           break;
         case WaveformKind::sine:
           require_positive(t.frequency_Hz, "Time/Frequency (Hz)");
+          duration         = t.cycles / t.frequency_Hz;
+          duration_entries = "Time/Cycles / Time/Frequency (Hz)";
           break;
         case WaveformKind::table:
           {
             std::vector<double>              times;
             std::vector<std::vector<double>> volts;
             read_table(t.table_file, p.scene().n_rings(), times, volts);
+            duration         = times.back();
+            duration_entries = "the last time in Time/Table file";
           }
           break;
       }
+    const double rest = rest_time(t);
+    if (std::isfinite(rest))
+      {
+        duration += rest;
+        duration_entries += " + Time/Rest time before voltage (s)";
+      }
+    if (!(duration / t.time_step_s <= max_time_steps))
+      throw InputError("the run would take " + format_number(duration / t.time_step_s) +
+                       " time steps, more than " + format_number(max_time_steps) +
+                       ": its duration " + format_number(duration) + " s (" + duration_entries +
+                       ") over Time/Time step (s) = " + format_number(t.time_step_s) +
+                       "; shorten the run or raise the time step");
   }
 
   std::shared_ptr<const MembraneLaw> material_law(const Parameters &p, const Scene &scene)

@@ -15,15 +15,14 @@ namespace cdea
   {
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
-    /// The law's plain response at a point of the current state. Internal
-    /// variables are those of the state (at point @p q of the cell's energy
-    /// rule, the nearest one for other points), held fixed.
+    /// The law's plain response at a point of the current state, with the
+    /// state's internal variables held fixed.
     struct PointEvaluator
     {
       const Discretization &mesh;
       const MembraneTerm   &membrane;
       const MembraneLaw    &plain_law, &relaxed_law;
-      std::vector<double>   scratch;
+      std::vector<double>   interpolated, scratch;
 
       PointEvaluator(const Discretization &mesh, const MembraneTerm &membrane,
                      const MembraneLaw &plain_law, const MembraneLaw &relaxed_law)
@@ -31,10 +30,12 @@ namespace cdea
         , membrane(membrane)
         , plain_law(plain_law)
         , relaxed_law(relaxed_law)
+        , interpolated(membrane.n_internal())
         , scratch(membrane.n_internal())
       {}
 
-      InternalStep step(const unsigned int cell, const unsigned int q)
+      /// At point @p q of the cell's energy rule: the stored variables.
+      InternalStep at_quadrature_point(const unsigned int cell, const unsigned int q)
       {
         const unsigned int m = membrane.n_internal();
         if (m == 0)
@@ -44,18 +45,54 @@ namespace cdea
                 TimeScheme::backward_euler};
       }
 
-      LawResponse plain(const PointKinematics &p, const unsigned int cell, const unsigned int q)
+      /// At point @p p, reference coordinate @p t in [0, 1] of cell @p c with
+      /// local dof values @p x. A viscous law stores xi1, xi2 first
+      /// (two_network_gent.h): what is interpolated through the cell's
+      /// quadrature points (Lagrange) is spring B's elastic log-stretch
+      /// ln(xi / lambda), not xi itself, so that the stress of network B at
+      /// the point belongs to the stretches there, and vanishes exactly
+      /// where network B has relaxed (xi = lambda at the quadrature points).
+      InternalStep at_point(const unsigned int c, const double *x, const double t,
+                            const PointKinematics &p)
+      {
+        const unsigned int m = membrane.n_internal();
+        if (m == 0)
+          return {};
+        const ShapeTable  &rule = mesh.energy_rule;
+        const unsigned int n    = rule.size();
+        std::fill(interpolated.begin(), interpolated.end(), 0.);
+        for (unsigned int q = 0; q < n; ++q)
+          {
+            double weight = 1.;
+            for (unsigned int j = 0; j < n; ++j)
+              if (j != q)
+                weight *= (t - rule.points[j]) / (rule.points[q] - rule.points[j]);
+            const double *stored =
+              membrane.internal_current.data() + (std::size_t(c) * n + q) * m;
+            const PointKinematics g = kinematics(mesh, rule, q, mesh.cells[c], x);
+            interpolated[0] += weight * std::log(stored[0] / g.l1);
+            interpolated[1] += weight * std::log(stored[1] / g.l2);
+            for (unsigned int i = 2; i < m; ++i)
+              interpolated[i] += weight * stored[i];
+          }
+        interpolated[0] = p.l1 * std::exp(interpolated[0]);
+        interpolated[1] = p.l2 * std::exp(interpolated[1]);
+        return {interpolated.data(), scratch.data(), 0., TimeScheme::backward_euler};
+      }
+
+      LawResponse plain(const PointKinematics &p, const unsigned int cell,
+                        const InternalStep &step)
       {
         LawResponse r;
-        plain_law.evaluate(membrane.law_input(p, mesh.cells[cell].ring), step(cell, q),
-                           law_stress, r);
+        plain_law.evaluate(membrane.law_input(p, mesh.cells[cell].ring), step, law_stress, r);
         return r;
       }
 
-      LawResponse relaxed(const PointKinematics &p, const unsigned int cell, const unsigned int q)
+      LawResponse relaxed(const PointKinematics &p, const unsigned int cell,
+                          const InternalStep &step)
       {
         LawResponse r;
-        relaxed_law.evaluate(membrane.law_input(p, mesh.cells[cell].ring), step(cell, q),
+        relaxed_law.evaluate(membrane.law_input(p, mesh.cells[cell].ring), step,
                              law_stress | law_tangent, r);
         return r;
       }
@@ -91,7 +128,7 @@ namespace cdea
     // record the zone, and whether the relaxed law is still admissible there
     // (elliptic, natural width found).
     const auto note = [&](const PointKinematics &p, const double s2, const unsigned int c,
-                          const unsigned int q) {
+                          const InternalStep &step) {
       if (s2 < h.s2_min)
         {
           h.s2_min        = s2;
@@ -99,7 +136,7 @@ namespace cdea
         }
       if (!m.relaxed || !(s2 < 0.))
         return;
-      const LawResponse e = at.relaxed(p, c, q);
+      const LawResponse e = at.relaxed(p, c, step);
       h.wrinkled_zone_inner = std::isnan(h.wrinkled_zone_inner) ? p.R :
                                                                   std::min(h.wrinkled_zone_inner, p.R);
       h.wrinkled_zone_outer = std::isnan(h.wrinkled_zone_outer) ? p.R :
@@ -127,15 +164,17 @@ namespace cdea
         for (unsigned int q = 0; q < mesh.energy_rule.size(); ++q)
           {
             const PointKinematics p = kinematics(mesh, mesh.energy_rule, q, cell, local.data());
-            note(p, at.plain(p, c, q).stress.s2, c, q);
+            const InternalStep    step = at.at_quadrature_point(c, q);
+            note(p, at.plain(p, c, step).stress.s2, c, step);
           }
         // Each ring's inner edge, on that ring's side (its first element).
         if (int(cell.ring) != previous_ring)
           {
             const PointKinematics p  = kinematics(mesh, mesh.left_end, 0, cell, local.data());
-            const double          s2 = at.plain(p, c, 0).stress.s2;
+            const InternalStep    step = at.at_point(c, local.data(), mesh.left_end.points[0], p);
+            const double          s2   = at.plain(p, c, step).stress.s2;
             h.s2_ring_inner[cell.ring] = s2;
-            note(p, s2, c, 0);
+            note(p, s2, c, step);
             previous_ring = cell.ring;
           }
       }
@@ -162,14 +201,11 @@ namespace cdea
         for (unsigned int k = (int(cell.ring) != previous_ring ? 0 : 1); k < t.size(); ++k)
           {
             const PointKinematics p = kinematics(mesh, t, k, cell, local.data());
-            // The nearest quadrature point holds the internal variables.
-            const unsigned int q =
-              std::min<unsigned int>(mesh.energy_rule.size() - 1,
-                                     std::lround(t.points[k] * (mesh.energy_rule.size() - 1)));
-            NominalStress s = at.plain(p, c, q).stress;
+            const InternalStep    step = at.at_point(c, local.data(), t.points[k], p);
+            NominalStress         s    = at.plain(p, c, step).stress;
             if (m.relaxed && s.s2 < 0.)
               {
-                const LawResponse e = at.relaxed(p, c, q);
+                const LawResponse e = at.relaxed(p, c, step);
                 if (e.tension == TensionState::wrinkled)
                   s = e.stress;
               }
@@ -184,14 +220,10 @@ namespace cdea
             f.Phi.push_back(Phi);
             f.E.push_back(Phi * p.l1 * p.l2 / H);
             f.ring.push_back(cell.ring);
-            // A viscous law stores xi1, xi2 first (two_network_gent.h).
-            if (m.membrane.n_internal() >= 2)
+            if (step.old)
               {
-                const double *xi = m.membrane.internal_current.data() +
-                                   (std::size_t(c) * mesh.energy_rule.size() + q) *
-                                     m.membrane.n_internal();
-                f.xi1.push_back(xi[0]);
-                f.xi2.push_back(xi[1]);
+                f.xi1.push_back(step.old[0]);
+                f.xi2.push_back(step.old[1]);
               }
           }
         previous_ring = cell.ring;
