@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Time-dependent runs from the command line (doc/time.md):
 #  - bad Material/Model and Time entries (a malformed first table row, a
-#    directory as table, more than 1e7 steps): exit 1, a message naming the
+#    directory as table, more than 1e6 steps, entries outside the ranges the
+#    solver can meet): exit 1, a message naming the
 #    parameter, no results file;
 #  - short runs of every waveform (ramp-hold with inertia and a rest time,
 #    square, sine, a table with a header): exit 0, one /summary row per time
@@ -42,9 +43,13 @@ bad() {
 
 sub() { printf 'subsection %s\\n  set %s\\nend' "$1" "$2"; }
 bad model-unknown   "$(sub Material 'Model = plastic')" "Model"
-bad mu-b-zero       "$(sub Material 'Network B shear modulus (kPa) = 0')" "Material/Network B shear modulus (kPa) must be positive"
-bad jlim-b-negative "$(sub Material 'Network B Jlim = -3')" "Material/Network B Jlim must be positive"
-bad tau-zero        "$(sub Material 'Relaxation time (s) = 0')" "Material/Relaxation time (s) must be positive"
+bad mu-b-zero       "$(sub Material 'Network B shear modulus (kPa) = 0')" "Material/Network B shear modulus (kPa) must be between 1e-6 and 1e4 times Material/Shear modulus (kPa) (2.51e-05 to 251000 kPa), got 0"
+bad mu-b-huge       "$(sub Material 'Network B shear modulus (kPa) = 1e306')" "Material/Network B shear modulus (kPa) must be between 1e-6 and 1e4"
+bad jlim-b-negative "$(sub Material 'Network B Jlim = -3')" "Material/Network B Jlim must be between 1e-12 and 1e12, got -3"
+bad tau-zero        "$(sub Material 'Relaxation time (s) = 0')" "Material/Relaxation time (s) must be between 1e-12 and 1e12 s, got 0"
+bad tau-huge        "$(sub Material 'Relaxation time (s) = 1e306')" "Material/Relaxation time (s) must be between 1e-12 and 1e12 s, got 1e+306"
+bad rest-huge       "$(sub Time 'Rest time before voltage (s) = 1e306')" "Time/Rest time before voltage (s) must be 'relaxed' or at most 1e12 s, got 1e+306"
+bad rise-tiny       "$(sub Time 'Waveform = square\n  set Rise time (s) = 1e-300')" "Time/Rise time (s) must be at least Time/Min time step (s) = 1e-08 s"
 bad visco-no-time   "$(sub Time 'Enabled = false')" "Material/Model = viscoelastic needs Time/Enabled = true"
 bad visco-relaxed   "$(sub Wrinkling 'Model = relaxed')" "Wrinkling/Model = relaxed needs Material/Model = elastic"
 bad arc-length      "$(sub Solver 'Continuation = arc length')" "Solver/Continuation = load stepping"
@@ -66,6 +71,8 @@ bad table-columns   "$(sub Time 'Waveform = table\n  set Table file = columns.cs
 printf '0, 0\n1, -2\n' > negative.csv
 bad table-negative  "$(sub Time 'Waveform = table\n  set Table file = negative.csv')" "voltages must not be negative"
 printf '0, 0\n1, two\n' > text.csv
+printf '0, 0\n1, 1e306\n' > huge.csv
+bad table-ceiling   "$(sub Time 'Waveform = table\n  set Table file = huge.csv')" "huge.csv', line 2: 1e+306 kV is above the voltage ceiling of 1600 kV"
 bad table-text      "$(sub Time 'Waveform = table\n  set Table file = text.csv')" "text.csv', line 2: 'two' is not a number"
 # A malformed first row is an error, not a header (its 0.5 s row would be lost).
 printf '0.5, 3x\n1, 2\n' > first-row.csv
@@ -74,11 +81,11 @@ here=$(pwd -P)
 bad table-relative  "$(sub Time 'Waveform = table\n  set Table file = nowhere.csv')" "cannot read 'nowhere.csv' (relative to the working directory: $here/nowhere.csv)"
 mkdir -p folder.csv
 bad table-directory "$(sub Time 'Waveform = table\n  set Table file = folder.csv')" "cannot read 'folder.csv' (relative to the working directory: $here/folder.csv): it is a directory"
-# Run length: more than 1e7 steps is refused, naming the entries that set it.
+# Run length: more than 1e6 steps is refused, naming the entries that set it.
 printf '0, 0\n1e300, 2\n' > forever.csv
 bad steps-table     "$(sub Time 'Waveform = table\n  set Table file = forever.csv')" "over Time/Time step (s) = 0.02"
 bad steps-table-src "$(sub Time 'Waveform = table\n  set Table file = forever.csv')" "the last time in Time/Table file"
-bad steps-hold      "$(sub Time 'Hold time (s) = 1e6')" "the run would take 5e+07 time steps, more than 1e+07: its duration 1e+06 s (Time/Ramp time (s) + Time/Hold time (s))"
+bad steps-hold      "$(sub Time 'Hold time (s) = 1e6')" "the run would take 5e+07 time steps, more than 1e+06: its duration 1e+06 s (Time/Ramp time (s) + Time/Hold time (s))"
 bad steps-rest      "$(sub Time 'Rest time before voltage (s) = 3e5')" "+ Time/Rest time before voltage (s)) over Time/Time step (s)"
 bad steps-cycles    "$(sub Time 'Waveform = sine\n  set Cycles = 10000000\n  set Frequency (Hz) = 0.5')" "(Time/Cycles / Time/Frequency (Hz))"
 

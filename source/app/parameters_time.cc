@@ -3,6 +3,7 @@
 #include <cdea/app/parameters.h>
 #include <cdea/app/parameters_time.h>
 #include <cdea/app/pump.h>
+#include <cdea/app/validation.h>
 #include <cdea/format.h>
 #include <cdea/material/two_network_gent.h>
 
@@ -188,10 +189,13 @@ namespace cdea
       return "'" + file + "' (relative to the working directory: " + resolved.string() + ")";
     }
 
-    /// Rows of the table file: times (s) and voltages (V) per ring.
-    void read_table(const std::string &file, const unsigned int n_rings,
-                    std::vector<double> &times, std::vector<std::vector<double>> &volts)
+    /// Rows of the table file: times (s) and voltages (V) per ring, each
+    /// voltage at most @p ceiling (V; the film's, as for the voltage path).
+    void read_table(const std::string &file, const Scene &scene, std::vector<double> &times,
+                    std::vector<std::vector<double>> &volts)
     {
+      const unsigned int n_rings = scene.n_rings();
+      const double       ceiling = voltage_ceiling(scene);
       const std::string name = "Time/Table file";
       if (file.empty())
         throw InputError(name + " must be given for Time/Waveform = table");
@@ -235,6 +239,10 @@ namespace cdea
               if (x < 0.)
                 throw InputError(where + ": voltages must not be negative, got " +
                                  format_number(x));
+              if (!(x <= ceiling * 1e-3))
+                throw InputError(where + ": " + format_number(x) + " kV is above the voltage "
+                                 "ceiling of " + format_number(ceiling * 1e-3) + " kV for this "
+                                 "film (as for Electrodes/Voltage path (kV))");
               x *= 1e3;
             }
           times.push_back(row[0]);
@@ -249,16 +257,32 @@ namespace cdea
 
   void validate_time(const Parameters &p)
   {
-    // Ten million steps take hours and a results file of gigabytes: far more
-    // than any scene needs, and most likely a mistyped duration.
-    constexpr double max_time_steps = 1e7;
+    // A million steps (as for the quasi-static path) is three times the
+    // longest documented scene (doc/time.md, 0.01 Hz at 1.25 ms) and keeps the
+    // results held in memory below a gigabyte; more is most likely a mistyped
+    // duration.
+    constexpr double max_time_steps = 1e6;
     const auto &m = p.viscous_material;
     const auto &t = p.time;
     if (m.model == MaterialModel::viscoelastic)
       {
-        require_positive(m.network_b_shear_modulus_kPa, "Material/Network B shear modulus (kPa)");
-        require_positive(m.network_b_jlim, "Material/Network B Jlim");
-        require_positive(m.relaxation_time_s, "Material/Relaxation time (s)");
+        // Bounds the solver can meet: network B more than 1e4 times as stiff
+        // as network A leaves no equilibrium under the dead load (measured at
+        // 1e5), and relaxation times outside 1e-12..1e12 s are below the
+        // smallest time step or beyond any run's duration.
+        const double mu_a = p.material.shear_modulus_kPa;
+        const double mu_b = m.network_b_shear_modulus_kPa;
+        if (!(mu_b >= 1e-6 * mu_a && mu_b <= 1e4 * mu_a))
+          throw InputError("Material/Network B shear modulus (kPa) must be between 1e-6 and 1e4 "
+                           "times Material/Shear modulus (kPa) (" + format_number(1e-6 * mu_a) +
+                           " to " + format_number(1e4 * mu_a) + " kPa), got " +
+                           format_number(mu_b));
+        if (!(m.network_b_jlim >= 1e-12 && m.network_b_jlim <= 1e12))
+          throw InputError("Material/Network B Jlim must be between 1e-12 and 1e12, got " +
+                           format_number(m.network_b_jlim));
+        if (!(m.relaxation_time_s >= 1e-12 && m.relaxation_time_s <= 1e12))
+          throw InputError("Material/Relaxation time (s) must be between 1e-12 and 1e12 s, got " +
+                           format_number(m.relaxation_time_s));
         if (!t.enabled)
           throw InputError("Material/Model = viscoelastic needs Time/Enabled = true (a "
                            "quasi-static run has no time for the dashpots; its long-time limit "
@@ -294,7 +318,10 @@ namespace cdea
           break;
         case WaveformKind::square:
           require_positive(t.frequency_Hz, "Time/Frequency (Hz)");
-          require_positive(t.rise_time_s, "Time/Rise time (s)");
+          if (!(t.rise_time_s >= t.min_time_step_s))
+            throw InputError("Time/Rise time (s) must be at least Time/Min time step (s) = " +
+                             format_number(t.min_time_step_s) + " s (an edge needs a step), got " +
+                             format_number(t.rise_time_s));
           if (!(t.rise_time_s < 0.5 / t.frequency_Hz))
             throw InputError("Time/Rise time (s) must be shorter than half a period, 1 / (2 "
                              "Frequency) = " + format_number(0.5 / t.frequency_Hz) + " s, got " +
@@ -311,13 +338,16 @@ namespace cdea
           {
             std::vector<double>              times;
             std::vector<std::vector<double>> volts;
-            read_table(t.table_file, p.scene().n_rings(), times, volts);
+            read_table(t.table_file, p.scene(), times, volts);
             duration         = times.back();
             duration_entries = "the last time in Time/Table file";
           }
           break;
       }
     const double rest = rest_time(t);
+    if (std::isfinite(rest) && rest > 1e12)
+      throw InputError("Time/Rest time before voltage (s) must be 'relaxed' or at most 1e12 s, "
+                       "got " + format_number(rest));
     if (std::isfinite(rest))
       {
         duration += rest;
@@ -374,7 +404,7 @@ namespace cdea
           {
             std::vector<double>              times;
             std::vector<std::vector<double>> volts;
-            read_table(t.table_file, scene.n_rings(), times, volts);
+            read_table(t.table_file, scene, times, volts);
             s.waveform = Waveform::table(times, volts);
           }
           break;
