@@ -115,11 +115,12 @@ namespace cdea::shooting
         fhi = f(hi);
         d *= 2.;
       }
-    // The project's bracketed root finder, to rounding level (its residual
-    // check below is far looser).
+    // The toolbox's safeguarded Newton to rounding level (the derivative is
+    // cheap here; TOMS 748 without it made shooting runs up to 10 % slower).
+    const auto df = [&](const double l1) { return law.tangent(l1, l2).s11; };
     BracketedRootSettings settings;
     settings.max_evaluations = 200;
-    const BracketedRoot root  = find_bracketed_root(f, lo, flo, hi, fhi, settings);
+    const BracketedRoot root  = find_bracketed_root_newton(f, df, lo, flo, hi, fhi, settings);
     const double        x     = root.x;
     const double        scale = std::abs(target) + law.constants().shear_modulus;
     if (!(std::abs(root.f) <= 1e-9 * scale))
