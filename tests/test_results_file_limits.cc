@@ -73,13 +73,14 @@ int main()
         catch (const cdea::OutputError &)
           {
           }
-        const auto done = file.finish("stopped");
-        // Exit code: steps in the file, or 100 + steps appended if none.
+        const unsigned int held = file.n_steps(); // a failed append's step is held too
+        const auto         done = file.finish("stopped");
+        // Exit code: steps in the file, or 100 + steps held if none or all.
         // (Whether a checkpoint hits the limit during the appends depends on
         // timing; the final file does, as 40 steps need about 100 kB.)
-        _exit(done.written && done.steps_written > 0 && done.steps_written < appended ?
+        _exit(done.written && done.steps_written > 0 && done.steps_written < held ?
                 int(done.steps_written) :
-                100 + int(appended));
+                100 + int(held));
       }
     int status = 0;
     waitpid(child, &status, 0);
