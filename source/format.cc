@@ -1,5 +1,6 @@
 #include <cdea/format.h>
 
+#include <cstdio>
 #include <iomanip>
 #include <sstream>
 
@@ -32,5 +33,12 @@ namespace cdea
     std::ostringstream o;
     o << std::fixed << std::setprecision(decimals) << std::setw(width) << value;
     return o.str();
+  }
+
+  std::string exact_number(const double value)
+  {
+    char buffer[40];
+    std::snprintf(buffer, sizeof buffer, "%.17g", value);
+    return buffer;
   }
 } // namespace cdea

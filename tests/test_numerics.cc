@@ -41,7 +41,26 @@ int main()
     check(rev.converged && std::abs(rev.f) <= 1e-6, "reversed bracket, |f| tolerance");
     // No sign change: not converged, said why.
     const auto none = find_bracketed_root(f, 0., f(0.), 0.5, f(0.5), s);
-    check(!none.converged && !none.message.empty(), "no sign change is reported");
+    check(!none.converged && !none.message.empty() && none.status == RootStatus::no_sign_change,
+          "no sign change is reported, with its status");
+    check(r.status == RootStatus::converged, "a converged search has the status converged");
+
+    // The safeguarded Newton on the same bracket, either way round (f falls:
+    // the bracket's low end has f > 0), to rounding level in a few steps.
+    const auto df = [](const double x) { return -std::sin(x) - 1.; };
+    calls         = 0;
+    const auto newton = find_bracketed_root_newton(f, df, 0., f(0.), 1., f(1.), s);
+    check(newton.converged && newton.status == RootStatus::converged, "Newton converges");
+    check_close(newton.x, 0.7390851332151607, 4e-16, "Newton: the root to rounding");
+    check(calls <= 10, "Newton: " + std::to_string(calls) + " evaluations (quadratic)");
+    const auto newton_reversed = find_bracketed_root_newton(f, df, 1., f(1.), 0., f(0.), s);
+    check_close(newton_reversed.x, 0.7390851332151607, 4e-16, "Newton, reversed bracket");
+    // A derivative of the wrong sign (here: none at all) falls back to bisection.
+    const auto flat   = [](const double) { return 0.; };
+    const auto halved = find_bracketed_root_newton(f, flat, 0., f(0.), 1., f(1.), s);
+    check_close(halved.x, 0.7390851332151607, 1e-15, "Newton without a derivative: bisection");
+    const auto newton_none = find_bracketed_root_newton(f, df, 0., f(0.), 0.5, f(0.5), s);
+    check(newton_none.status == RootStatus::no_sign_change, "Newton: no sign change reported");
   }
   {
     // Evaluations fail beyond x = 0.6 (NaN): the root 0.5 of x - 0.5 is still

@@ -2,15 +2,13 @@
 // C API and checks names, shapes, types, units, unit conversions, values and
 // attributes; checks that the journal of a process killed right after an
 // append rebuilds a complete file (also with a torn or corrupted last
-// record), that an older file stays untouched until finish(), that a second
-// writer is refused, that a file size limit leaves the steps that fit, and
-// that bad paths and bad input are reported.
+// record) and that an older file stays untouched until finish() while a
+// second writer is refused. Limits and bad input: test_results_file_limits.cc.
 
 #include <cdea/output/results_file.h>
 #include <cdea/output/safe_files.h>
 
 #include <hdf5.h>
-#include <sys/resource.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -28,92 +26,13 @@
 
 #include "check.h"
 
+#include "results_file_demo.h"
+
 using namespace cdea_test;
+using namespace results_file_demo;
 
 namespace
 {
-  const double nan_value = std::numeric_limits<double>::quiet_NaN();
-
-  const std::string parameters_text =
-    "subsection Material\n  set Shear modulus (kPa) = 25.1\nend\n";
-
-  // ---------------------------------------------------------------- data
-  cdea::StepSummary demo_summary(const unsigned int i)
-  {
-    cdea::StepSummary s;
-    s.stage             = i == 0 ? cdea::Stage::dead_load : cdea::Stage::voltage;
-    s.load_factor       = 0.25 + 0.5 * i;
-    s.voltages          = {1000. * i + 100., 2000. * i + 300.};
-    s.mass              = 0.28 + 0.01 * i;
-    s.displacement      = (18.2 + i) * 1e-3;
-    s.stroke            = i == 0 ? nan_value : 0.5e-3 * i;
-    s.s2_min            = -1000. + 3000. * i;
-    s.s2_ring_inner     = {67000. + 10. * i, 12000. - 20. * i};
-    s.wrinkled          = i == 2;
-    s.newton_iterations = 3 + i;
-    return s;
-  }
-
-  unsigned int demo_n_samples(const unsigned int i) { return 4 + i; }
-
-  cdea::StepFields demo_fields(const unsigned int i)
-  {
-    cdea::StepFields  f;
-    const auto        s = demo_summary(i);
-    const unsigned int n = demo_n_samples(i);
-    for (unsigned int j = 0; j < n; ++j)
-      {
-        const int ring = j < n / 2 ? 0 : 1;
-        f.R.push_back((5.6 + 0.3 * j + 0.01 * i) * 1e-3);
-        f.r.push_back(1.3 * f.R.back() + 1e-6 * i);
-        f.z.push_back(-(2. + j + 0.1 * i) * 1e-3);
-        f.theta.push_back(0.1 * j + 0.01 * i);
-        f.lambda1.push_back(2.5 + 0.01 * j + 0.001 * i);
-        f.lambda2.push_back(2.4 - 0.02 * j + 0.002 * i);
-        f.s1.push_back(50000. + 100. * j + i);
-        f.s2.push_back(20000. - 5000. * j + i);
-        f.E.push_back(5e6 * (1. + 0.1 * j) + i);
-        f.Phi.push_back(s.voltages[ring]);
-        f.ring.push_back(ring);
-      }
-    return f;
-  }
-
-  std::vector<std::pair<std::string, double>> demo_extra(const unsigned int i)
-  {
-    // volume_mm3 appears from the second step on; energy_mJ only in the first.
-    if (i == 0)
-      return {{"energy_mJ", 7.5}};
-    return {{"volume_mm3", 1234.5 + i}};
-  }
-
-  const std::vector<std::pair<std::string, std::string>> demo_root_attributes = {
-    {"solver", "shooting"}, {"prm_file", "prm/test.prm"}};
-
-  cdea::OnsetRecord demo_onset()
-  {
-    cdea::OnsetRecord o;
-    o.found    = true;
-    o.voltages = {5432.1, 6543.2};
-    o.radius   = 19.6e-3;
-    return o;
-  }
-
-  void write_demo(const std::string &path, const unsigned int n_steps, const bool with_onset)
-  {
-    cdea::ResultsFile file(path, parameters_text, 2, demo_root_attributes);
-    file.describe_column("volume_mm3", "mm3", "enclosed volume");
-    for (unsigned int i = 0; i < n_steps; ++i)
-      file.append(demo_summary(i), demo_fields(i), demo_extra(i));
-    file.set_summary_attribute("limit_point_kV", {1., 2., 3.});
-    file.set_summary_attribute("limit_point_kV", {6.5, 7.25}); // overwrite, new length
-    if (with_onset)
-      file.write_onset(demo_onset());
-    const auto done = file.finish("complete");
-    check(done.written && done.file == path && done.steps_written == n_steps,
-          "finish() writes every step to the path");
-  }
-
   // ---------------------------------------------------------------- reading
   struct Array
   {
@@ -439,20 +358,6 @@ namespace
       }
     H5Fclose(file);
   }
-
-  bool throws_runtime_error_naming(const std::string &path)
-  {
-    try
-      {
-        cdea::ResultsFile file(path, parameters_text, 2);
-      }
-    catch (const std::runtime_error &e)
-      {
-        std::cout << "  (message: " << e.what() << ")\n";
-        return std::string(e.what()).find(path) != std::string::npos;
-      }
-    return false;
-  }
 } // namespace
 
 int main()
@@ -562,132 +467,6 @@ int main()
     check(read_bytes(older) != before && !fs::exists(older + ".lock") &&
             !fs::exists(older + ".journal"),
           "finish() replaced the older file and removed the lock and journal");
-  }
-
-  // 2d. A file size limit (a full disk): a step whose checkpoint does not
-  //     fit raises OutputError; finish() writes the leading steps that fit.
-  {
-    const std::string limited = (base / "limited.h5").string();
-    std::cout.flush();
-    const pid_t child = fork();
-    if (child == 0)
-      {
-        std::signal(SIGXFSZ, SIG_IGN);
-        setenv("CDEA_CHECKPOINT_SECONDS", "0", 1);
-        const rlimit limit = {60000, 60000};
-        setrlimit(RLIMIT_FSIZE, &limit);
-        cdea::ResultsFile file(limited, parameters_text, 2, demo_root_attributes);
-        unsigned int      appended = 0;
-        try
-          {
-            for (; appended < 40; ++appended)
-              file.append(demo_summary(appended % 3), demo_fields(appended % 3));
-          }
-        catch (const cdea::OutputError &)
-          {
-          }
-        const auto done = file.finish("stopped");
-        // Exit code: steps in the file, or 100 + steps appended if none.
-        // (Whether a checkpoint hits the limit during the appends depends on
-        // timing; the final file does, as 40 steps need about 100 kB.)
-        _exit(done.written && done.steps_written > 0 && done.steps_written < appended ?
-                int(done.steps_written) :
-                100 + int(appended));
-      }
-    int status = 0;
-    waitpid(child, &status, 0);
-    const int steps = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    check(steps > 0 && steps < 40, "60 kB file size limit: finish() wrote " +
-                                     std::to_string(steps) + " steps that fit, no crash");
-    const hid_t f = H5Fopen(limited.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-    check(f >= 0 && fs::file_size(limited) <= 60000, "that file opens and is within the limit");
-    if (f >= 0)
-      H5Fclose(f);
-  }
-
-  // 3. Unwritable paths: a directory under a regular file, and a path that is
-  //    a directory.
-  {
-    std::ofstream(base / "plain_file") << "not a directory\n";
-  }
-  check(throws_runtime_error_naming((base / "plain_file" / "sub" / "r.h5").string()),
-        "path under a regular file throws std::runtime_error naming the path");
-  check(throws_runtime_error_naming((base / "nested").string()),
-        "path that is a directory throws std::runtime_error naming the path");
-
-  // 4. Bad input is rejected before anything is written.
-  {
-    const std::string bad_path = (base / "bad.h5").string();
-    cdea::ResultsFile file(bad_path, parameters_text, 2);
-    file.append(demo_summary(0), demo_fields(0));
-    auto wrong_rings = demo_summary(1);
-    wrong_rings.voltages.pop_back();
-    bool thrown = false;
-    try
-      {
-        file.append(wrong_rings, demo_fields(1));
-      }
-    catch (const std::invalid_argument &)
-      {
-        thrown = true;
-      }
-    check(thrown, "wrong number of ring voltages throws std::invalid_argument");
-    auto ragged = demo_fields(1);
-    ragged.s2.pop_back();
-    thrown = false;
-    try
-      {
-        file.append(demo_summary(1), ragged);
-      }
-    catch (const std::invalid_argument &)
-      {
-        thrown = true;
-      }
-    check(thrown, "fields of different lengths throw std::invalid_argument");
-    thrown = false;
-    try
-      {
-        file.append(demo_summary(1), demo_fields(1), {{"stage", 1.}});
-      }
-    catch (const std::invalid_argument &)
-      {
-        thrown = true;
-      }
-    check(thrown, "extra column with a standard name throws std::invalid_argument");
-    check(file.n_steps() == 1, "rejected appends leave one step");
-    file.append(demo_summary(1), demo_fields(1));
-    check(file.n_steps() == 2, "a good append after rejected ones works");
-    bool zero_rings_thrown = false;
-    try
-      {
-        cdea::ResultsFile zero((base / "zero.h5").string(), parameters_text, 0);
-      }
-    catch (const std::invalid_argument &)
-      {
-        zero_rings_thrown = true;
-      }
-    check(zero_rings_thrown, "n_rings = 0 throws std::invalid_argument");
-  }
-
-  // 5. Move construction keeps the file usable; with checkpoints due at
-  //    every step another process can read the checkpoint while the writer
-  //    is open.
-  {
-    setenv("CDEA_CHECKPOINT_SECONDS", "0", 1);
-    const std::string moved_path = (base / "moved.h5").string();
-    cdea::ResultsFile a(moved_path, parameters_text, 2);
-    cdea::ResultsFile b(std::move(a));
-    b.append(demo_summary(0), demo_fields(0));
-    check(b.n_steps() == 1 && b.n_rings() == 2, "moved-to ResultsFile appends");
-    check(b.checkpoint_path() == (base / "moved.partial.h5").string() &&
-            fs::exists(b.checkpoint_path()),
-          "checkpoint moved.partial.h5 written");
-    if (fs::exists("/usr/bin/h5dump"))
-      check(std::system(("/usr/bin/h5dump -H " + b.checkpoint_path() + " > " +
-                         (base / "h5dump.log").string() + " 2>&1")
-                          .c_str()) == 0,
-            "h5dump reads the checkpoint while the writer is open");
-    unsetenv("CDEA_CHECKPOINT_SECONDS");
   }
 
   return finish();

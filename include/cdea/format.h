@@ -14,4 +14,7 @@ namespace cdea
   std::string format_number(double value, int digits = 6);
   /// A number with @p decimals digits after the point, right-aligned in @p width.
   std::string format_fixed(double value, int decimals, int width = 0);
+  /// A number with 17 significant digits, read back as the same double (for
+  /// parameter files written by cdea).
+  std::string exact_number(double value);
 } // namespace cdea

@@ -2,10 +2,9 @@
 
 #include <cdea/app/parameters.h>
 #include <cdea/app/parameters_design.h>
+#include <cdea/output/safe_files.h>
 
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 namespace cdea
@@ -26,13 +25,6 @@ namespace cdea
     return choice == DesignAlgorithm::mma ? "MMA" : "SLSQP";
   }
 
-  std::string exact_number(const double value)
-  {
-    char buffer[40];
-    std::snprintf(buffer, sizeof buffer, "%.17g", value);
-    return buffer;
-  }
-
   void write_changed_parameters(const std::string &prm_file, const std::string &path,
                                 const std::vector<ParameterChange> &changes,
                                 const std::string                  &comment)
@@ -46,18 +38,13 @@ namespace cdea
         prm.set(c.entry, c.value);
         prm.leave_subsection();
       }
-    const std::string temporary = path + ".tmp";
-    {
-      std::ofstream out(temporary);
-      out << comment;
-      prm.print_parameters(out, ParameterHandler::ShortText);
-      if (!out)
-        throw std::runtime_error("cannot write '" + path + "'");
-    }
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
-    if (error)
-      throw std::runtime_error("cannot write '" + path + "': " + error.message());
+    std::ostringstream text;
+    text << comment;
+    prm.print_parameters(text, ParameterHandler::ShortText);
+    const std::string  bytes = text.str();
+    const WriteOutcome out   = replace_file(path, {bytes.begin(), bytes.end()}, true);
+    if (!out.ok)
+      throw std::runtime_error("cannot write '" + path + "': " + out.message);
   }
 
   namespace parameters

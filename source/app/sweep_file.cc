@@ -4,14 +4,14 @@
 // stamps), so a serial and a distributed run of the same map give the same file.
 
 #include <cdea/app/sweep.h>
+#include <cdea/format.h>
 #include <cdea/output/hdf5_support.h>
 #include <cdea/output/safe_files.h>
 
 #include <hdf5.h>
 
 #include <algorithm>
-
-#include <sstream>
+#include <limits>
 #include <stdexcept>
 
 #ifndef CDEA_VERSION
@@ -25,88 +25,7 @@ namespace cdea
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
     using hdf5::ErrorPrintingOff;
-
     using hdf5::Handle;
-
-    /// The map's datasets, on the shared checked writer.
-    class Writer : public hdf5::Writer
-    {
-    public:
-      explicit Writer(const std::string &path)
-        : hdf5::Writer("cannot write '" + path + "'")
-      {}
-
-      /// A dataset of doubles (row-major @p dims) with unit and description.
-      void dataset(const hid_t file, const std::string &name, const std::vector<hsize_t> &dims,
-                   const std::vector<double> &values, const std::string &unit,
-                   const std::string &description) const
-      {
-        Handle space(check(H5Screate_simple(int(dims.size()), dims.data(), nullptr),
-                           "H5Screate_simple"),
-                     H5Sclose);
-        Handle dcpl(check(H5Pcreate(H5P_DATASET_CREATE), "H5Pcreate"), H5Pclose);
-        check_status(H5Pset_obj_track_times(dcpl, false), "H5Pset_obj_track_times");
-        Handle set(check(H5Dcreate2(file, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT,
-                                    dcpl, H5P_DEFAULT),
-                         "H5Dcreate2(" + name + ")"),
-                   H5Dclose);
-        if (!values.empty())
-          check_status(H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                                values.data()),
-                       "H5Dwrite(" + name + ")");
-        describe(set, unit, description);
-      }
-
-      void int_dataset(const hid_t file, const std::string &name, const std::vector<int> &values,
-                       const std::string &description) const
-      {
-        const hsize_t dims[1] = {values.size()};
-        Handle space(check(H5Screate_simple(1, dims, nullptr), "H5Screate_simple"), H5Sclose);
-        Handle dcpl(check(H5Pcreate(H5P_DATASET_CREATE), "H5Pcreate"), H5Pclose);
-        check_status(H5Pset_obj_track_times(dcpl, false), "H5Pset_obj_track_times");
-        Handle set(check(H5Dcreate2(file, name.c_str(), H5T_STD_I32LE, space, H5P_DEFAULT,
-                                    dcpl, H5P_DEFAULT),
-                         "H5Dcreate2(" + name + ")"),
-                   H5Dclose);
-        if (!values.empty())
-          check_status(H5Dwrite(set, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                                values.data()),
-                       "H5Dwrite(" + name + ")");
-        describe(set, "1", description);
-      }
-
-      void string_dataset(const hid_t file, const std::string &name,
-                          const std::vector<std::string> &values,
-                          const std::string              &description) const
-      {
-        Handle type(check(H5Tcopy(H5T_C_S1), "H5Tcopy"), H5Tclose);
-        check_status(H5Tset_size(type, H5T_VARIABLE), "H5Tset_size");
-        check_status(H5Tset_cset(type, H5T_CSET_UTF8), "H5Tset_cset");
-        const hsize_t dims[1] = {values.size()};
-        Handle space(check(H5Screate_simple(1, dims, nullptr), "H5Screate_simple"), H5Sclose);
-        Handle dcpl(check(H5Pcreate(H5P_DATASET_CREATE), "H5Pcreate"), H5Pclose);
-        check_status(H5Pset_obj_track_times(dcpl, false), "H5Pset_obj_track_times");
-        Handle set(check(H5Dcreate2(file, name.c_str(), type, space, H5P_DEFAULT, dcpl,
-                                    H5P_DEFAULT),
-                         "H5Dcreate2(" + name + ")"),
-                   H5Dclose);
-        std::vector<const char *> pointers;
-        for (const auto &s : values)
-          pointers.push_back(s.c_str());
-        if (!values.empty())
-          check_status(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, pointers.data()),
-                       "H5Dwrite(" + name + ")");
-        describe(set, "", description);
-      }
-    };
-
-    std::string format(const double x)
-    {
-      std::ostringstream o;
-      o.precision(12);
-      o << x;
-      return o.str();
-    }
   } // namespace
 
   MapFileContent sweep_map_content(const SweepMap &map, const std::string &parameter_text)
@@ -137,7 +56,7 @@ namespace cdea
     {
       std::string values;
       for (std::size_t i = 0; i < s.ring_edge_values.size(); ++i)
-        values += (i ? ", " : "") + format(s.ring_edge_values[i]);
+        values += (i ? ", " : "") + format_number(s.ring_edge_values[i], 12);
       text("ring_edge_values", values);
     }
 
@@ -268,7 +187,7 @@ namespace cdea
     const MapFileContent content = sweep_map_content(map, parameter_text);
 
     ErrorPrintingOff quiet;
-    Writer           w(path);
+    const hdf5::Writer w("cannot write '" + path + "'");
     // In memory, then written whole and renamed onto the path: an older map
     // stays until the new one is complete. No modification times in the
     // object headers: the same map gives the same bytes.
@@ -288,8 +207,8 @@ namespace cdea
         w.int_dataset(file, d.name, std::vector<int>(d.values.begin(), d.values.end()),
                       d.description);
       else
-        w.dataset(file, d.name, std::vector<hsize_t>(d.dims.begin(), d.dims.end()), d.values,
-                  d.unit, d.description);
+        w.double_dataset(file, d.name, std::vector<hsize_t>(d.dims.begin(), d.dims.end()),
+                         d.values, d.unit, d.description);
     const WriteOutcome out = replace_file(path, hdf5::file_image(file, w.name()), true);
     if (!out.ok)
       throw std::runtime_error("cannot write '" + path + "': " + out.message);

@@ -49,6 +49,20 @@ namespace cdea
     return {};
   }
 
+  void CellKernel::set_load(const LoadState &load)
+  {
+    for (const auto &term : terms)
+      term->set_load(load);
+  }
+
+  std::string CellKernel::reject_state(const AssembledSystem &system) const
+  {
+    for (const auto &term : terms)
+      if (std::string why = term->reject_state(system); !why.empty())
+        return why;
+    return {};
+  }
+
   bool CellKernel::assemble(const Eigen::VectorXd &x, unsigned int flags,
                             AssembledSystem &system)
   {
@@ -69,7 +83,12 @@ namespace cdea
           system.tangent.set_zero();
       }
     if (flags & assemble_parameter_derivatives)
-      system.parameter_residual.assign(layout.size(), Eigen::VectorXd::Zero(N));
+      {
+        // Kept across calls: zeroed, not reallocated.
+        system.parameter_residual.resize(layout.size());
+        for (Eigen::VectorXd &column : system.parameter_residual)
+          column.setZero(N);
+      }
     if (flags & assemble_volume)
       {
         system.volume_gradient.setZero(N);

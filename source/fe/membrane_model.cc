@@ -3,8 +3,6 @@
 #include <cdea/solver/arc_length.h>
 #include <cdea/solver/band_eigenvalue.h>
 
-#include <Eigen/Eigenvalues>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -17,19 +15,19 @@ namespace cdea
     : scene(scene_in)
     , newton_settings(newton)
     , mesh(scene_in, disc)
-    , kernel(mesh, scene_in.n_rings())
-    , membrane(kernel.add_term(std::make_unique<MembraneTerm>(
-        scene_in, mesh, std::make_shared<GentDielectricLaw>(scene_in.material))))
-    , dead_load(kernel.add_term(std::make_unique<DeadLoadTerm>()))
-    , volume_term(kernel.add_term(std::make_unique<EnclosedVolumeTerm>()))
-    , water(kernel.add_term(std::make_unique<WaterTerm>()))
-    , inertia(kernel.add_term(std::make_unique<InertiaTerm>()))
     , plain_law(std::make_shared<GentDielectricLaw>(scene_in.material))
     , relaxed_law(std::make_shared<TensionField>(plain_law))
+    , kernel(mesh, scene_in.n_rings())
+    , membrane(kernel.add_term(std::make_unique<MembraneTerm>(scene_in, mesh, plain_law)))
     , solution(Eigen::VectorXd::Zero(mesh.n_dofs()))
     , solver(make_tangent_solver(LinearSolver::banded_lu))
   {
-    membrane.set_law(plain_law);
+    // The terms add into each cell in this order (fixed: it decides the last
+    // bits of every sum).
+    kernel.add_term(std::make_unique<DeadLoadTerm>());
+    kernel.add_term(std::make_unique<EnclosedVolumeTerm>());
+    kernel.add_term(std::make_unique<WaterTerm>());
+    kernel.add_term(std::make_unique<InertiaTerm>());
   }
 
   void MembraneModel::Impl::set_load(const LoadState &new_load)
@@ -37,11 +35,7 @@ namespace cdea
     load = new_load;
     if (load.voltages.size() != scene.n_rings())
       load.voltages.assign(scene.n_rings(), 0.);
-    membrane.set_voltages(load.voltages);
-    dead_load.set_force(load.force);
-    water.set_gravity_share(load.stage == Stage::prestretch ? 0. :
-                            load.stage == Stage::dead_load  ? load.load_factor :
-                                                              1.);
+    kernel.set_load(load);
     tangent_is_current = false;
   }
 
@@ -117,22 +111,6 @@ namespace cdea
     solve_tangent(-r, dx);
   }
 
-  namespace
-  {
-    /// Smallest eigenvalue of the symmetric part of K restricted to @p free.
-    double dense_min_eigenvalue(const std::vector<std::vector<double>> &K,
-                                const std::vector<unsigned int>        &free)
-    {
-      const int       n = free.size();
-      Eigen::MatrixXd Kf(n, n);
-      for (int i = 0; i < n; ++i)
-        for (int j = 0; j < n; ++j)
-          Kf(i, j) = 0.5 * (K[free[i]][free[j]] + K[free[j]][free[i]]);
-      return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Kf, Eigen::EigenvaluesOnly)
-        .eigenvalues()(0);
-    }
-  } // namespace
-
   MembraneModel::MembraneModel(const Scene &scene, const FeDiscretization &discretization,
                                const NewtonSettings &newton)
     : impl(std::make_unique<Impl>(scene, discretization, newton))
@@ -185,13 +163,14 @@ namespace cdea
     settings.update_scale   = impl->scene.disk_radius;
     LineSearchNewton newton(settings);
     SolveReport      report = newton.solve(*impl, impl->solution);
-    if (report.converged && impl->water.water_weight() > 0. && free_surface_height() < 0.)
-      {
-        // The water model assumes a full cone under a free surface in the tube.
-        report.converged = false;
-        report.message   = "the water (WaterLoad) no longer fills the cone: its free surface "
-                           "would lie below the frame plane";
-      }
+    // Newton's last evaluation was at the converged state: a term may reject
+    // it (the water's free surface below the frame plane).
+    if (report.converged)
+      if (std::string why = impl->kernel.reject_state(impl->system); !why.empty())
+        {
+          report.converged = false;
+          report.message   = why;
+        }
     if (!report.converged)
       {
         impl->set_load(old_load);
@@ -211,22 +190,21 @@ namespace cdea
 
   double MembraneModel::energy() const
   {
-    AssembledSystem s;
-    impl->kernel.assemble(impl->solution, assemble_energy, s);
-    return s.energy;
+    impl->kernel.assemble(impl->solution, assemble_energy, impl->query);
+    return impl->query.energy;
   }
 
   std::vector<double> MembraneModel::residual_vector() const
   {
-    AssembledSystem s;
-    impl->kernel.assemble(impl->solution, assemble_residual, s);
-    return {s.residual.data(), s.residual.data() + s.residual.size()};
+    const Eigen::VectorXd &r = impl->query.residual;
+    impl->kernel.assemble(impl->solution, assemble_residual, impl->query);
+    return {r.data(), r.data() + r.size()};
   }
 
   std::vector<std::vector<double>> MembraneModel::tangent_matrix() const
   {
-    AssembledSystem s;
-    impl->kernel.assemble(impl->solution, assemble_tangent, s);
+    const AssembledSystem &s = impl->query;
+    impl->kernel.assemble(impl->solution, assemble_tangent, impl->query);
     const unsigned int               n = n_dofs();
     std::vector<std::vector<double>> K(n, std::vector<double>(n, 0.));
     for (unsigned int i = 0; i < n; ++i)
@@ -240,23 +218,18 @@ namespace cdea
 
   double MembraneModel::min_tangent_eigenvalue()
   {
-    if (impl->water.water_weight() > 0.)
-      {
-        // The free surface couples every dof: the dense symmetric solver.
-        const auto K = tangent_matrix();
-        std::vector<unsigned int> free;
-        for (unsigned int i = 0; i < n_dofs(); ++i)
-          if (std::find(impl->mesh.constrained.begin(), impl->mesh.constrained.end(), i) ==
-              impl->mesh.constrained.end())
-            free.push_back(i);
-        return dense_min_eigenvalue(K, free);
-      }
     if (!impl->tangent_is_current)
       {
         impl->assemble_constrained(impl->solution, assemble_residual | assemble_tangent);
         impl->tangent_is_current = true;
       }
-    return smallest_symmetric_eigenvalue(impl->system.tangent, impl->mesh.constrained);
+    const AssembledSystem &s = impl->system;
+    // A rank-one coupling (the water's free surface) fills the matrix: the
+    // dense solver on the band plus the rank-one term.
+    if (s.rank_one_coupling != 0.)
+      return smallest_symmetric_eigenvalue(s.tangent, s.rank_one_coupling, s.volume_gradient,
+                                           impl->mesh.constrained);
+    return smallest_symmetric_eigenvalue(s.tangent, impl->mesh.constrained);
   }
 
   void MembraneModel::set_relaxed(const bool relaxed)
@@ -283,23 +256,24 @@ namespace cdea
 
   void MembraneModel::set_water_load(const WaterLoad &water)
   {
-    impl->water.set_water(water);
-    impl->set_load(impl->load);
+    impl->kernel.term<WaterTerm>().set_water(water);
+    impl->tangent_is_current = false;
   }
 
-  const WaterLoad &MembraneModel::water_load() const { return impl->water.water(); }
+  const WaterLoad &MembraneModel::water_load() const
+  {
+    return impl->kernel.term<WaterTerm>().water();
+  }
 
   double MembraneModel::free_surface_height() const
   {
-    const WaterLoad &w = impl->water.water();
-    return (w.water_volume - enclosed_volume()) / w.tube_area;
+    return impl->kernel.term<WaterTerm>().free_surface_height(enclosed_volume());
   }
 
   double MembraneModel::enclosed_volume() const
   {
-    AssembledSystem s;
-    impl->kernel.assemble(impl->solution, assemble_volume, s);
-    return s.volume;
+    impl->kernel.assemble(impl->solution, assemble_volume, impl->query);
+    return impl->query.volume;
   }
 
   std::vector<double> MembraneModel::solution() const

@@ -21,15 +21,15 @@ namespace cdea
     const Scene          scene;
     const NewtonSettings newton_settings;
     const Discretization mesh;
-    CellKernel           kernel;
-    MembraneTerm        &membrane;
-    DeadLoadTerm        &dead_load;
-    EnclosedVolumeTerm  &volume_term;
-    WaterTerm           &water;
-    InertiaTerm         &inertia;
-
+    /// The elastic law (or the one set by set_material_law()) and its
+    /// tension-field relaxation; declared before the terms that use them.
     std::shared_ptr<const MembraneLaw> plain_law, relaxed_law;
     bool                               relaxed = false;
+
+    /// The terms, each registered once; the others than the membrane are
+    /// reached through kernel.term<Type>() where a model method needs one.
+    CellKernel    kernel;
+    MembraneTerm &membrane;
 
     LoadState       load;
     Eigen::VectorXd solution;
@@ -38,6 +38,9 @@ namespace cdea
     /// the current state (solution and load).
     AssembledSystem system;
     bool            tangent_is_current = false;
+    /// Work storage of the queries (energy, residual, tangent, volume), kept
+    /// across calls and apart from the system Newton uses.
+    AssembledSystem query;
     LinearSolver                   linear_solver = LinearSolver::banded_lu;
     std::unique_ptr<TangentSolver> solver;
     ShermanMorrison                free_surface;

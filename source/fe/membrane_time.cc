@@ -18,22 +18,14 @@ namespace cdea
     /// Calls f(cell, q, kinematics, quadrature weight 2 pi H R h w_q) at every
     /// point of the energy rule of @p x.
     template <typename F>
-    void for_each_point(const Discretization &mesh, const Eigen::VectorXd &x,
-                        const double thickness, F &&f)
+    void for_each_weighted_point(const Discretization &mesh, const Eigen::VectorXd &x,
+                                 const double thickness, F &&f)
     {
-      std::vector<double> local(mesh.dofs_per_cell());
-      for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-        {
-          const unsigned int *dofs = mesh.dofs_of(c);
-          for (unsigned int i = 0; i < local.size(); ++i)
-            local[i] = x[dofs[i]];
-          const MeshCell &cell = mesh.cells[c];
-          for (unsigned int q = 0; q < mesh.energy_rule.size(); ++q)
-            {
-              const PointKinematics p = kinematics(mesh, mesh.energy_rule, q, cell, local.data());
-              f(c, q, p, 2. * M_PI * thickness * p.R * cell.h * mesh.energy_rule.weights[q]);
-            }
-        }
+      const ShapeTable &rule = mesh.energy_rule;
+      for_each_point(mesh, rule, x,
+                     [&](const unsigned int c, const unsigned int q, const PointKinematics &p) {
+                       f(c, q, p, 2. * M_PI * thickness * p.R * mesh.cells[c].h * rule.weights[q]);
+                     });
     }
   } // namespace
 
@@ -65,7 +57,7 @@ namespace cdea
 
   void MembraneModel::set_inertia(const InertiaStep &inertia)
   {
-    impl->inertia.set_step(inertia);
+    impl->kernel.term<InertiaTerm>().set_step(inertia);
     impl->tangent_is_current = false;
   }
 
@@ -83,7 +75,7 @@ namespace cdea
     if (n == 0)
       return;
     const unsigned int per_cell = impl->mesh.energy_rule.size();
-    for_each_point(impl->mesh, impl->solution, impl->scene.material.thickness,
+    for_each_weighted_point(impl->mesh, impl->solution, impl->scene.material.thickness,
                    [&](const unsigned int c, const unsigned int q, const PointKinematics &p,
                        double) {
                      m.law().relaxed_internal_variables(
@@ -100,7 +92,7 @@ namespace cdea
     double        D = 0.;
     if (m.n_internal() == 0)
       return D;
-    for_each_point(impl->mesh, impl->solution, impl->scene.material.thickness,
+    for_each_weighted_point(impl->mesh, impl->solution, impl->scene.material.thickness,
                    [&](const unsigned int c, const unsigned int q, const PointKinematics &,
                        const double w) { D += w * m.law().dissipation(m.internal_step(c, q)); });
     return D;
@@ -117,7 +109,7 @@ namespace cdea
     // Q_k = -int dW/dPhi dV over ring k (the ideal dielectric's W is
     // quadratic in Phi, so (1/2) Phi Q is its electrostatic energy).
     MembraneTerm &membrane = m.membrane;
-    for_each_point(m.mesh, m.solution, m.scene.material.thickness,
+    for_each_weighted_point(m.mesh, m.solution, m.scene.material.thickness,
                    [&](const unsigned int c, const unsigned int q, const PointKinematics &p,
                        const double w) {
                      const unsigned int ring = m.mesh.cells[c].ring;
@@ -135,17 +127,18 @@ namespace cdea
     // (dt = 0) and no inertia: elastic energy - F z(A) + water potential.
     const double              dt      = membrane.time_step();
     const TimeScheme          scheme  = membrane.time_scheme();
-    const InertiaStep         inertia = m.inertia.step();
+    InertiaTerm              &inertia_term = m.kernel.term<InertiaTerm>();
+    const InertiaStep         inertia      = inertia_term.step();
     const std::vector<double> current = membrane.internal_current;
     membrane.set_time_step(0., scheme);
     membrane.set_voltages(std::vector<double>(m.scene.n_rings(), 0.));
-    m.inertia.set_step(InertiaStep());
+    inertia_term.set_step(InertiaStep());
     AssembledSystem s;
     m.kernel.assemble(m.solution, assemble_energy, s);
     budget.mechanical = s.energy;
     membrane.set_time_step(dt, scheme);
     membrane.set_voltages(m.load.voltages);
-    m.inertia.set_step(inertia);
+    inertia_term.set_step(inertia);
     membrane.internal_current = current;
     return budget;
   }
@@ -157,13 +150,14 @@ namespace cdea
     Impl             &m       = *impl;
     const double      dt      = m.membrane.time_step();
     const TimeScheme  scheme  = m.membrane.time_scheme();
-    const InertiaStep inertia = m.inertia.step();
+    InertiaTerm      &inertia_term = m.kernel.term<InertiaTerm>();
+    const InertiaStep inertia      = inertia_term.step();
     const std::vector<double> current = m.membrane.internal_current;
     m.membrane.set_time_step(0., scheme);
-    m.inertia.set_step(InertiaStep());
+    inertia_term.set_step(InertiaStep());
     const auto K = tangent_matrix();
     m.membrane.set_time_step(dt, scheme);
-    m.inertia.set_step(inertia);
+    inertia_term.set_step(inertia);
     m.membrane.internal_current = current;
 
     const unsigned int        z = m.mesh.z_inner;

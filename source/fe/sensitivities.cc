@@ -234,19 +234,17 @@ namespace cdea
     for (const auto &p : parameters_)
       columns.push_back(kernel_column(p, layout, m.scene));
 
-    std::vector<double> local(n), gradient_s2(n), gradient_E(n), explicit_s2(layout.size()),
+    std::vector<double> gradient_s2(n), gradient_E(n), explicit_s2(layout.size()),
       explicit_E(layout.size());
     std::vector<double> s2, field;
     std::vector<Eigen::VectorXd> d_s2, d_field;
     PointValues                  out;
 
-    // One point at xi of cell c (shape values @p value, d/dxi @p derivative).
-    const auto point = [&](const unsigned int c, const ShapeTable &table, const unsigned int q) {
+    // Point q of @p table in cell c, where the solution has the kinematics @p p.
+    const auto point = [&](const unsigned int c, const ShapeTable &table, const unsigned int q,
+                           const PointKinematics &p) {
       const MeshCell     &cell = mesh.cells[c];
       const unsigned int *dofs = mesh.dofs_of(c);
-      for (unsigned int i = 0; i < n; ++i)
-        local[i] = m.solution[dofs[i]];
-      const PointKinematics p   = kinematics(mesh, table, q, cell, local.data());
       const double          xi  = table.points[q];
       const double          Phi = m.load.voltages[cell.ring];
       const LawInput        at  = m.membrane.law_input(p, cell.ring);
@@ -309,17 +307,21 @@ namespace cdea
       d_field.push_back(std::move(dE));
     };
 
-    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-      for (unsigned int q = 0; q < mesh.energy_rule.size(); ++q)
-        point(c, mesh.energy_rule, q);
+    for_each_point(mesh, mesh.energy_rule, m.solution,
+                   [&](const unsigned int c, const unsigned int q, const PointKinematics &p) {
+                     point(c, mesh.energy_rule, q, p);
+                   });
     out.n_quadrature_points = s2.size();
-    int previous_ring       = -1;
-    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
-      if (int(mesh.cells[c].ring) != previous_ring)
-        {
-          point(c, mesh.left_end, 0);
-          previous_ring = mesh.cells[c].ring;
-        }
+    // Then the inner edge of each ring (the left end of its first cell).
+    int previous_ring = -1;
+    for_each_point(mesh, mesh.left_end, m.solution,
+                   [&](const unsigned int c, const unsigned int q, const PointKinematics &p) {
+                     if (int(mesh.cells[c].ring) != previous_ring)
+                       {
+                         point(c, mesh.left_end, q, p);
+                         previous_ring = mesh.cells[c].ring;
+                       }
+                   });
 
     const unsigned int n_points = s2.size();
     out.s2                      = Eigen::Map<Eigen::VectorXd>(s2.data(), n_points);

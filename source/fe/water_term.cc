@@ -46,6 +46,34 @@ namespace cdea
     return true;
   }
 
+  void WaterTerm::set_water(const WaterLoad &water)
+  {
+    settings = water;
+    weight   = settings.enabled ? gravity_share * settings.density * settings.gravity : 0.;
+  }
+
+  void WaterTerm::set_load(const LoadState &load)
+  {
+    gravity_share = load.stage == Stage::prestretch ? 0. :
+                    load.stage == Stage::dead_load  ? load.load_factor :
+                                                      1.;
+    set_water(settings);
+  }
+
+  double WaterTerm::free_surface_height(const double volume) const
+  {
+    return (settings.water_volume - volume) / settings.tube_area;
+  }
+
+  std::string WaterTerm::reject_state(const AssembledSystem &system) const
+  {
+    if (weight > 0. && (system.flags & assemble_volume) &&
+        free_surface_height(system.volume) < 0.)
+      return "the water (WaterLoad) no longer fills the cone: its free surface would lie "
+             "below the frame plane";
+    return {};
+  }
+
   unsigned int WaterTerm::extra_flags(const unsigned int flags) const
   {
     return weight > 0. && (flags & (assemble_energy | assemble_residual | assemble_tangent)) ?

@@ -51,6 +51,7 @@ namespace cdea
     if (f_lo == 0. || f_hi == 0. || std::abs(result.f) <= settings.f_tolerance)
       {
         result.converged = true;
+        result.status    = RootStatus::converged;
         result.lo        = lo;
         result.hi        = hi;
         return result;
@@ -58,6 +59,7 @@ namespace cdea
     if ((f_lo > 0.) == (f_hi > 0.))
       {
         result.message = "the interval does not bracket a sign change";
+        result.status  = RootStatus::no_sign_change;
         result.lo      = lo;
         result.hi      = hi;
         return result;
@@ -92,18 +94,22 @@ namespace cdea
               evaluate, increasing ? lo : hi, increasing ? hi : lo, increasing ? f_lo : f_hi,
               increasing ? f_hi : f_lo, narrow, iterations);
             result.converged = narrow(bracket.first, bracket.second);
-            if (!result.converged)
+            if (result.converged)
+              result.status = RootStatus::converged;
+            else
               result.message = "the bracket did not shrink to the tolerance";
             break;
           }
         catch (const SmallEnough &)
           {
             result.converged = true;
+            result.status    = RootStatus::converged;
             break;
           }
         catch (const OutOfEvaluations &)
           {
             result.message = "out of evaluations (" + std::to_string(settings.max_evaluations) + ")";
+            result.status  = RootStatus::out_of_evaluations;
             break;
           }
         catch (const FailedEvaluation &failure)
@@ -112,6 +118,7 @@ namespace cdea
             if (settings.stop_on_failure)
               {
                 result.message = "an evaluation failed";
+                result.status  = RootStatus::failed_evaluation;
                 break;
               }
             // Shrink towards the side that can be evaluated and go on there.
@@ -122,12 +129,70 @@ namespace cdea
             if (narrow(lo, hi))
               {
                 result.message = "evaluations fail arbitrarily close to the last good point";
+                result.status  = RootStatus::failed_evaluation;
                 break;
               }
           }
       }
     result.lo = std::min(bracket_lo, bracket_hi);
     result.hi = std::max(bracket_lo, bracket_hi);
+    return result;
+  }
+
+  BracketedRoot find_bracketed_root_newton(const std::function<double(double)> &f,
+                                           const std::function<double(double)> &df, double lo,
+                                           double f_lo, double hi, double f_hi,
+                                           const BracketedRootSettings &settings)
+  {
+    BracketedRoot result;
+    if ((f_lo > 0.) == (f_hi > 0.) && f_lo != 0. && f_hi != 0.)
+      {
+        result.message = "the interval does not bracket a sign change";
+        result.status  = RootStatus::no_sign_change;
+        result.x       = std::abs(f_lo) < std::abs(f_hi) ? lo : hi;
+        result.f       = std::min(std::abs(f_lo), std::abs(f_hi));
+        result.lo      = std::min(lo, hi);
+        result.hi      = std::max(lo, hi);
+        return result;
+      }
+    // Orient the bracket: f(a) <= 0 <= f(b), whichever way round a and b are.
+    double       a = f_lo <= 0. ? lo : hi, b = f_lo <= 0. ? hi : lo;
+    const bool   rising = a < b;
+    const double eps    = std::numeric_limits<double>::epsilon();
+    double       x      = std::abs(f_lo) < std::abs(f_hi) ? lo : hi;
+    if (f_lo == 0. || f_hi == 0.)
+      a = b = x;
+    bool done = a == b;
+    for (unsigned int step = 0; step < settings.max_evaluations && !done; ++step)
+      {
+        const double fx = f(x);
+        ++result.evaluations;
+        if (fx == 0.)
+          break;
+        (fx < 0. ? a : b) = x;
+        const double dfx        = df(x);
+        double       next       = x - fx / dfx;
+        const double inner      = std::min(a, b), outer = std::max(a, b);
+        const bool   right_sign = rising ? dfx > 0. : dfx < 0.;
+        if (!right_sign || !(next > inner) || !(next < outer))
+          next = 0.5 * (a + b);
+        done = std::abs(next - x) <= 4. * eps * std::abs(x) ||
+               outer - inner <= 4. * eps * std::abs(x);
+        x = next;
+      }
+    result.x = x;
+    result.f = f(x);
+    ++result.evaluations;
+    result.lo = std::min(a, b);
+    result.hi = std::max(a, b);
+    const bool narrow = result.f == 0. || std::abs(result.f) <= settings.f_tolerance ||
+                        result.hi - result.lo <= std::max(settings.x_tolerance,
+                                                          4. * eps * std::abs(x)) ||
+                        done;
+    result.converged = narrow;
+    result.status    = narrow ? RootStatus::converged : RootStatus::out_of_evaluations;
+    if (!narrow)
+      result.message = "out of evaluations (" + std::to_string(settings.max_evaluations) + ")";
     return result;
   }
 } // namespace cdea

@@ -84,12 +84,18 @@ namespace cdea::hdf5
     check_status(H5Awrite(attribute, memory_type, data), "H5Awrite(" + name + ")");
   }
 
-  void Writer::string_attribute(const hid_t object, const std::string &name,
-                                const std::string &value) const
+  Handle Writer::text_type() const
   {
     Handle type(check(H5Tcopy(H5T_C_S1), "H5Tcopy"), H5Tclose);
     check_status(H5Tset_size(type, H5T_VARIABLE), "H5Tset_size");
     check_status(H5Tset_cset(type, H5T_CSET_UTF8), "H5Tset_cset");
+    return type;
+  }
+
+  void Writer::string_attribute(const hid_t object, const std::string &name,
+                                const std::string &value) const
+  {
+    const Handle type = text_type();
     Handle      space(check(H5Screate(H5S_SCALAR), "H5Screate"), H5Sclose);
     const char *pointer = value.c_str();
     write_attribute(object, name, type, type, space, &pointer);
@@ -136,6 +142,66 @@ namespace cdea::hdf5
   {
     string_attribute(object, "unit", unit);
     string_attribute(object, "description", description);
+  }
+
+  Handle Writer::write_dataset(const hid_t parent, const std::string &name,
+                               const hid_t file_type, const hid_t memory_type,
+                               const std::vector<hsize_t> &dims, const void *data,
+                               const bool empty) const
+  {
+    Handle space(check(dims.empty() ? H5Screate(H5S_SCALAR) :
+                                      H5Screate_simple(int(dims.size()), dims.data(), nullptr),
+                       "H5Screate"),
+                 H5Sclose);
+    Handle properties(check(H5Pcreate(H5P_DATASET_CREATE), "H5Pcreate"), H5Pclose);
+    check_status(H5Pset_obj_track_times(properties, false), "H5Pset_obj_track_times");
+    Handle set(check(H5Dcreate2(parent, name.c_str(), file_type, space, H5P_DEFAULT, properties,
+                                H5P_DEFAULT),
+                     "H5Dcreate2(" + name + ")"),
+               H5Dclose);
+    if (!empty)
+      check_status(H5Dwrite(set, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data),
+                   "H5Dwrite(" + name + ")");
+    return set;
+  }
+
+  void Writer::double_dataset(const hid_t parent, const std::string &name,
+                              const std::vector<hsize_t> &dims, const std::vector<double> &values,
+                              const std::string &unit, const std::string &description) const
+  {
+    const Handle set = write_dataset(parent, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims,
+                                     values.data(), values.empty());
+    describe(set, unit, description);
+  }
+
+  void Writer::int_dataset(const hid_t parent, const std::string &name,
+                           const std::vector<int> &values, const std::string &description) const
+  {
+    const Handle set = write_dataset(parent, name, H5T_STD_I32LE, H5T_NATIVE_INT,
+                                     {values.size()}, values.data(), values.empty());
+    describe(set, "1", description);
+  }
+
+  void Writer::string_dataset(const hid_t parent, const std::string &name,
+                              const std::vector<std::string> &values,
+                              const std::string              &description) const
+  {
+    std::vector<const char *> pointers;
+    for (const std::string &s : values)
+      pointers.push_back(s.c_str());
+    const Handle type = text_type();
+    const Handle set =
+      write_dataset(parent, name, type, type, {values.size()}, pointers.data(), values.empty());
+    describe(set, "", description);
+  }
+
+  void Writer::group(const hid_t parent, const std::string &name) const
+  {
+    Handle properties(check(H5Pcreate(H5P_GROUP_CREATE), "H5Pcreate"), H5Pclose);
+    check_status(H5Pset_obj_track_times(properties, false), "H5Pset_obj_track_times");
+    Handle created(check(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, properties, H5P_DEFAULT),
+                         "H5Gcreate2(" + name + ")"),
+                   H5Gclose);
   }
 
   Handle create_memory_file(const std::string &context, const bool track_times)

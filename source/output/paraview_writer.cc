@@ -3,12 +3,12 @@
 // little- or big-endian bytes, each block preceded by its byte count (UInt64),
 // and a Collection (PVD) listing one file per time.
 #include <cdea/output/paraview_writer.h>
+#include <cdea/output/safe_files.h>
 
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -246,13 +246,14 @@ namespace cdea
           xml << data.take_xml() << "      </Cells>\n    </Piece>\n";
         }
       xml << "  </UnstructuredGrid>\n  <AppendedData encoding=\"raw\">\n   _";
-      std::ofstream out(path, std::ios::binary);
-      out << xml.str();
-      out.write(data.bytes.data(), static_cast<std::streamsize>(data.bytes.size()));
-      out << "\n  </AppendedData>\n</VTKFile>\n";
-      out.close();
-      if (!out)
-        throw std::runtime_error("cannot write the ParaView file '" + path + "'");
+      const std::string head = xml.str(), tail = "\n  </AppendedData>\n</VTKFile>\n";
+      std::vector<char> file(head.begin(), head.end());
+      file.insert(file.end(), data.bytes.begin(), data.bytes.end());
+      file.insert(file.end(), tail.begin(), tail.end());
+      // Not synced: a step's file is written again if the run is repeated.
+      const WriteOutcome out = replace_file(path, file, false);
+      if (!out.ok)
+        throw std::runtime_error("cannot write the ParaView file '" + path + "': " + out.message);
     }
   } // namespace
 
@@ -308,8 +309,7 @@ namespace cdea
   void ParaViewWriter::write_collection(const std::string &path,
                                         const std::string &vtu_folder) const
   {
-    const std::string  temporary = path + ".tmp";
-    std::ofstream      out(temporary);
+    std::ostringstream out;
     out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\""
         << byte_order() << "\">\n  <Collection>\n";
     for (std::size_t k = 0; k < times.size(); ++k)
@@ -318,12 +318,11 @@ namespace cdea
           << ".vtu\"/>\n"
           << std::setfill(' ');
     out << "  </Collection>\n</VTKFile>\n";
-    out.close();
-    std::error_code error;
-    if (out)
-      fs::rename(temporary, path, error);
-    if (!out || error)
-      throw std::runtime_error("cannot write the ParaView collection '" + path + "'");
+    const std::string  text    = out.str();
+    const WriteOutcome written = replace_file(path, {text.begin(), text.end()}, false);
+    if (!written.ok)
+      throw std::runtime_error("cannot write the ParaView collection '" + path +
+                               "': " + written.message);
   }
 
   void ParaViewWriter::finish()

@@ -1,3 +1,4 @@
+#include <cdea/numerics/bracketed_root.h>
 #include <cdea/shooting/dormand_prince.h>
 #include <cdea/shooting/meridian.h>
 
@@ -114,32 +115,15 @@ namespace cdea::shooting
         fhi = f(hi);
         d *= 2.;
       }
-    if (flo == 0.)
-      hi = lo;
-
-    // Safeguarded Newton (bisection whenever Newton leaves the bracket).
-    double x = std::abs(flo) < std::abs(fhi) ? lo : hi;
-    for (unsigned int it = 0; it < 200 && hi > lo; ++it)
-      {
-        const double fx = f(x);
-        if (fx == 0.)
-          break;
-        if (fx < 0.)
-          lo = x;
-        else
-          hi = x;
-        const double dfx = law.tangent(x, l2).s11;
-        double       xn  = x - fx / dfx;
-        if (!(dfx > 0.) || !(xn > lo) || !(xn < hi))
-          xn = 0.5 * (lo + hi);
-        const bool done = std::abs(xn - x) <= 4. * std::numeric_limits<double>::epsilon() * x ||
-                          hi - lo <= 4. * std::numeric_limits<double>::epsilon() * x;
-        x = xn;
-        if (done)
-          break;
-      }
-    const double scale = std::abs(target) + law.constants().shear_modulus;
-    if (!(std::abs(f(x)) <= 1e-9 * scale))
+    // The toolbox's safeguarded Newton to rounding level (the derivative is
+    // cheap here; TOMS 748 without it made shooting runs up to 10 % slower).
+    const auto df = [&](const double l1) { return law.tangent(l1, l2).s11; };
+    BracketedRootSettings settings;
+    settings.max_evaluations = 200;
+    const BracketedRoot root  = find_bracketed_root_newton(f, df, lo, flo, hi, fhi, settings);
+    const double        x     = root.x;
+    const double        scale = std::abs(target) + law.constants().shear_modulus;
+    if (!(std::abs(root.f) <= 1e-9 * scale))
       {
         set(why, "the s1 equation for lambda1 did not converge");
         return std::nullopt;

@@ -50,15 +50,17 @@ namespace cdea::shooting
       RootResult done(const Point &p)
       {
         res.converged = true;
+        res.status    = RootStatus::converged;
         res.x         = p.x;
         res.f         = p.f;
         res.message.clear();
         return res;
       }
 
-      RootResult fail(const std::string &why)
+      RootResult fail(const RootStatus status, const std::string &why)
       {
         res.converged = false;
+        res.status    = budget_exhausted ? RootStatus::out_of_evaluations : status;
         if (have_best)
           {
             res.x = best.x;
@@ -92,7 +94,7 @@ namespace cdea::shooting
         if (res.evaluations >= opt.max_evaluations)
           {
             budget_exhausted = true;
-            return fail("no convergence");
+            return fail(RootStatus::not_converged, "no convergence");
           }
         BracketedRootSettings settings;
         settings.f_tolerance     = opt.residual_tolerance;
@@ -107,13 +109,15 @@ namespace cdea::shooting
         if (small(p))
           return done(p);
         if (budget_exhausted || (!r.converged && !r.failed_evaluation))
-          return fail("no convergence");
+          return fail(RootStatus::not_converged, "no convergence");
         if (r.failed_evaluation)
-          return fail("the integration fails inside the bracket");
+          return fail(RootStatus::failed_evaluation,
+                      "the integration fails inside the bracket");
         // The bracket collapsed to rounding level.
         if (std::abs(p.f) <= opt.collapse_tolerance)
           return done(p);
-        return fail("the residual changes sign without vanishing (discontinuity)");
+        return fail(RootStatus::not_converged,
+                    "the residual changes sign without vanishing (discontinuity)");
       }
 
       RootResult run(const double x0)
@@ -162,7 +166,7 @@ namespace cdea::shooting
               }
           }
         if (budget_exhausted)
-          return fail("no convergence");
+          return fail(RootStatus::not_converged, "no convergence");
 
         // Bracket phase: grow [x0 - d, x0 + d] until the residual changes sign
         // between neighbouring valid points on one side.
@@ -179,7 +183,7 @@ namespace cdea::shooting
               prev[side]   = x;
               const auto p = eval(x);
               if (budget_exhausted)
-                return fail("no bracket found");
+                return fail(RootStatus::no_sign_change, "no bracket found");
               if (!p)
                 continue;
               if (small(*p))
@@ -188,7 +192,8 @@ namespace cdea::shooting
                 return bracketed(*near[side], *p);
               near[side] = p;
             }
-        return fail("no sign change of the residual near the guess");
+        return fail(RootStatus::no_sign_change,
+                    "no sign change of the residual near the guess");
       }
 
     private:

@@ -43,7 +43,7 @@ namespace cdea::shooting
       if (!root.converged)
         {
           sol.message = root.message + (load.force > 0. ? " (theta0)" : " (lambda1 at A)");
-          if (root.message.find("no sign change") != std::string::npos)
+          if (root.status == RootStatus::no_sign_change)
             sol.message += "; the equilibrium branch may have passed a fold (limit point): "
                            "take a smaller load step or use arc-length continuation";
           if (!last_failure.empty())

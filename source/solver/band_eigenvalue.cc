@@ -1,5 +1,7 @@
 #include <cdea/solver/band_eigenvalue.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -54,5 +56,25 @@ namespace cdea
     dsbevx_(&jobz, &range, &uplo, &n, &kd, ab.data(), &ldab, &q, &ldq, &vl, &vu, &il, &iu,
             &abstol, &found, w.data(), &z, &ldz, work.data(), iwork.data(), ifail.data(), &info);
     return info == 0 && found == 1 ? w[0] : std::numeric_limits<double>::quiet_NaN();
+  }
+
+  double smallest_symmetric_eigenvalue(const BandMatrix &A, const double k,
+                                       const Eigen::VectorXd           &g,
+                                       const std::vector<unsigned int> &excluded)
+  {
+    std::vector<unsigned int> kept;
+    for (unsigned int i = 0; i < A.size(); ++i)
+      if (std::find(excluded.begin(), excluded.end(), i) == excluded.end())
+        kept.push_back(i);
+    const int       n = kept.size();
+    Eigen::MatrixXd S(n, n);
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b)
+        {
+          const unsigned int i = kept[a], j = kept[b];
+          S(a, b) = 0.5 * ((A.entry(i, j) + k * g[i] * g[j]) + (A.entry(j, i) + k * g[j] * g[i]));
+        }
+    return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(S, Eigen::EigenvaluesOnly)
+      .eigenvalues()(0);
   }
 } // namespace cdea

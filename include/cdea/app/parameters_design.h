@@ -4,6 +4,8 @@
 // text here; optimize_settings() and fit_settings() check them and name the
 // parameter in every message.
 
+#include <cdea/format.h> // exact_number() for the parameter files the commands write
+
 #include <string>
 #include <vector>
 
@@ -43,9 +45,6 @@ namespace cdea
   void write_changed_parameters(const std::string &prm_file, const std::string &path,
                                 const std::vector<ParameterChange> &changes,
                                 const std::string                  &comment);
-
-  /// A number with 17 significant digits (read back as the same double).
-  std::string exact_number(double value);
 
   namespace parameters
   {

@@ -15,10 +15,12 @@
 
 #include <cdea/fe/discretization.h>
 #include <cdea/solver/band_matrix.h>
+#include <cdea/solver/equilibrium_model.h>
 
 #include <Eigen/Core>
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -132,6 +134,16 @@ namespace cdea
       (void)flags;
       (void)system;
     }
+    /// The load changed: take from it what the term needs (voltages, force,
+    /// the stage's share of gravity).
+    virtual void set_load(const LoadState &load) { (void)load; }
+    /// After a converged solve, with the assembly of the converged state: why
+    /// that state lies outside the term's model (empty if it does not).
+    virtual std::string reject_state(const AssembledSystem &system) const
+    {
+      (void)system;
+      return {};
+    }
   };
 
   class CellKernel
@@ -152,6 +164,22 @@ namespace cdea
     /// into @p system as @p flags ask (plus what the terms require). Returns
     /// false, with a NaN residual, if a term was outside its range.
     bool assemble(const Eigen::VectorXd &x, unsigned int flags, AssembledSystem &system);
+
+    /// The registered term of type @p Term (the first, if several).
+    template <typename Term>
+    Term &term() const
+    {
+      for (const auto &t : terms)
+        if (auto *found = dynamic_cast<Term *>(t.get()))
+          return *found;
+      throw std::logic_error("CellKernel::term: no such term registered");
+    }
+
+    /// Pass the load to every term.
+    void set_load(const LoadState &load);
+    /// The first term's reason to reject the converged state in @p system
+    /// (empty if every term accepts it).
+    std::string reject_state(const AssembledSystem &system) const;
 
     const ParameterLayout &parameters() const { return layout; }
 

@@ -126,4 +126,20 @@ namespace cdea
     p.l2 = p.r / p.R;
     return p;
   }
+
+  /// Calls f(c, q, kinematics) at every point q of @p rule in every cell c,
+  /// cell by cell, for the global dof values @p x (any vector with x[i]).
+  template <typename Vector, typename F>
+  void for_each_point(const Discretization &mesh, const ShapeTable &rule, const Vector &x, F &&f)
+  {
+    std::vector<double> local(mesh.dofs_per_cell());
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        const unsigned int *dofs = mesh.dofs_of(c);
+        for (unsigned int i = 0; i < local.size(); ++i)
+          local[i] = x[dofs[i]];
+        for (unsigned int q = 0; q < rule.size(); ++q)
+          f(c, q, kinematics(mesh, rule, q, mesh.cells[c], local.data()));
+      }
+  }
 } // namespace cdea

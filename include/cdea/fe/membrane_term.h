@@ -43,6 +43,7 @@ namespace cdea
 
     /// The voltage of each ring (V).
     void set_voltages(const std::vector<double> &voltages);
+    void set_load(const LoadState &load) override { set_voltages(load.voltages); }
     /// The time step of the internal variables (0: they stay as they are).
     void set_time_step(double dt, TimeScheme scheme);
     double     time_step() const { return dt; }
@@ -85,6 +86,7 @@ namespace cdea
   {
   public:
     void set_force(const double f) { force = f; }
+    void set_load(const LoadState &load) override { set_force(load.force); }
     bool add_cell(const CellInput &cell, unsigned int flags, CellScratch &scratch,
                   CellContribution &contribution) override;
 

@@ -42,11 +42,20 @@ namespace cdea
   class WaterTerm final : public CellTerm
   {
   public:
-    void             set_water(const WaterLoad &water) { settings = water; }
+    void             set_water(const WaterLoad &water);
     const WaterLoad &water() const { return settings; }
-    /// rho g times the stage's share of gravity.
-    void   set_gravity_share(double share) { weight = settings.enabled ? share * settings.density * settings.gravity : 0.; }
+    /// rho g times the load stage's share of gravity (0 without water).
     double water_weight() const { return weight; }
+    /// Height of the free surface above the frame plane at the enclosed
+    /// volume @p volume: (water_volume - V) / tube_area.
+    double free_surface_height(double volume) const;
+
+    /// Gravity is off in stage 0, ramped by the load factor in stage 1 and
+    /// full in stage 2.
+    void set_load(const LoadState &load) override;
+    /// The model assumes a full cone under the free surface: a state whose
+    /// free surface lies below the frame plane is rejected.
+    std::string reject_state(const AssembledSystem &system) const override;
 
     unsigned int extra_flags(unsigned int flags) const override;
     bool         add_cell(const CellInput &cell, unsigned int flags, CellScratch &scratch,
@@ -55,6 +64,7 @@ namespace cdea
 
   private:
     WaterLoad settings;
-    double    weight = 0.;
+    double    gravity_share = 0.;
+    double    weight        = 0.;
   };
 } // namespace cdea

@@ -1,11 +1,11 @@
 #pragma once
 // Small helpers for the source files that call the HDF5 C API directly
-// (results file, design-map file): HDF5 errors become one-line messages for
-// exceptions instead of error stacks printed to stderr; one attribute writer
-// for both files; files built in memory (the core driver without backing
-// store), so that HDF5 itself never writes to disk and a file on disk is
-// always a complete image written by cdea (see atomic_file.h). Includes
-// hdf5.h: not for headers.
+// (results file, map file, Hdf5Writer): HDF5 errors become one-line messages
+// for exceptions instead of error stacks printed to stderr; one attribute and
+// dataset writer for every file; files built in memory (the core driver
+// without backing store), so that HDF5 itself never writes to disk and a file
+// on disk is always a complete image written by cdea through replace_file()
+// (safe_files.h). Includes hdf5.h: not for headers.
 
 #include <hdf5.h>
 
@@ -119,12 +119,32 @@ namespace cdea::hdf5
     /// The attributes "unit" and "description" of a dataset.
     void describe(hid_t object, const std::string &unit, const std::string &description) const;
 
+    /// Datasets at @p name below @p parent, without object time stamps, with
+    /// "unit" and "description"; @p dims row-major, their product the number
+    /// of values (empty @p dims: a scalar). Integers have the unit "1",
+    /// strings (variable-length UTF-8) none.
+    void double_dataset(hid_t parent, const std::string &name, const std::vector<hsize_t> &dims,
+                        const std::vector<double> &values, const std::string &unit,
+                        const std::string &description) const;
+    void int_dataset(hid_t parent, const std::string &name, const std::vector<int> &values,
+                     const std::string &description) const;
+    void string_dataset(hid_t parent, const std::string &name,
+                        const std::vector<std::string> &values,
+                        const std::string              &description) const;
+    /// A group at @p name below @p parent (its parents must exist), without
+    /// object time stamps.
+    void group(hid_t parent, const std::string &name) const;
+
     const std::string &name() const { return context; }
 
   private:
     std::string context;
     void write_attribute(hid_t object, const std::string &name, hid_t file_type,
                          hid_t memory_type, hid_t space, const void *data) const;
+    Handle write_dataset(hid_t parent, const std::string &name, hid_t file_type,
+                       hid_t memory_type, const std::vector<hsize_t> &dims,
+                       const void *data, bool empty) const;
+    Handle text_type() const;
   };
 
   /// A new, empty HDF5 file that lives in memory only; @p track_times false

@@ -1,11 +1,12 @@
 #pragma once
 // A small writer of complete HDF5 files (attributes, datasets of doubles,
 // integers and strings, groups), for results written once at the end of a
-// command. The file is first written under a temporary name next to the
-// target and renamed onto it by commit(), so that an existing file is only
-// replaced by a complete new one; a writer destroyed before commit() removes
-// its temporary file. Object time stamps are off: the same content gives the
-// same bytes. Every failure throws std::runtime_error naming the target path.
+// command, on the checked writer of hdf5_support.h. The file is built in
+// memory and commit() writes it whole through replace_file() (safe_files.h),
+// so that an existing file is only replaced by a complete new one; a writer
+// destroyed before commit() leaves nothing on disk. Object time stamps are
+// off: the same content gives the same bytes. Every failure throws
+// std::runtime_error naming the target path.
 
 #include <memory>
 #include <string>
@@ -16,7 +17,7 @@ namespace cdea
   class Hdf5Writer
   {
   public:
-    /// Creates the parent directory if needed and opens the temporary file.
+    /// Creates the parent directory if needed and starts the file in memory.
     explicit Hdf5Writer(const std::string &path);
     ~Hdf5Writer();
     Hdf5Writer(const Hdf5Writer &)            = delete;
@@ -42,7 +43,7 @@ namespace cdea
     void dataset(const std::string &path, const std::vector<std::string> &values,
                  const std::string &description);
 
-    /// Close the temporary file and rename it onto the target.
+    /// Write the file to the target path (replacing it whole).
     void commit();
 
     const std::string &path() const { return target; }

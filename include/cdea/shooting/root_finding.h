@@ -9,6 +9,8 @@
 // limit) and then closed the same way. There is deliberately no global scan: a far root may belong to a
 // non-physical branch.
 
+#include <cdea/numerics/bracketed_root.h>
+
 #include <functional>
 #include <optional>
 #include <string>
@@ -32,6 +34,7 @@ namespace cdea::shooting
   struct RootResult
   {
     bool         converged   = false;
+    RootStatus   status      = RootStatus::not_converged;
     double       x           = 0.;
     double       f           = 0.;
     unsigned int evaluations = 0;
