@@ -123,6 +123,7 @@ namespace cdea
 
   FitSettings fit_settings(const Parameters &p)
   {
+    require_quasi_static_elastic(p, "fit");
     const std::string name = "Calibration/Free parameters";
     static const std::pair<const char *, ParameterKind> kinds[] = {
       {"shear modulus", ParameterKind::shear_modulus},
