@@ -1,5 +1,6 @@
 #include <cdea/format.h>
 
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -32,5 +33,19 @@ namespace cdea
     std::ostringstream o;
     o << std::fixed << std::setprecision(decimals) << std::setw(width) << value;
     return o.str();
+  }
+
+  std::string format_fixed_or_dash(const double value, const int decimals)
+  {
+    return std::isnan(value) ? "-" : format_fixed(value, decimals);
+  }
+
+  std::string format_fixed_list(const std::vector<double> &values, const int decimals,
+                                const double factor)
+  {
+    std::string s;
+    for (std::size_t i = 0; i < values.size(); ++i)
+      s += (i ? " " : "") + format_fixed(values[i] * factor, decimals);
+    return s;
   }
 } // namespace cdea

@@ -14,4 +14,12 @@ namespace cdea
   std::string format_number(double value, int digits = 6);
   /// A number with @p decimals digits after the point, right-aligned in @p width.
   std::string format_fixed(double value, int decimals, int width = 0);
+
+  // Tables of the design commands and the sweep.
+  /// format_fixed, but "-" for NaN (a value that could not be computed).
+  std::string format_fixed_or_dash(double value, int decimals);
+  /// @p values times @p factor, each with @p decimals digits after the point,
+  /// separated by spaces ("5.0000 6.3824").
+  std::string format_fixed_list(const std::vector<double> &values, int decimals,
+                                double factor = 1.);
 } // namespace cdea

@@ -7,8 +7,6 @@
 #include <cdea/app/parameters.h>
 #include <cdea/format.h>
 
-#include <mpi.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -160,40 +158,19 @@ namespace cdea
       std::string text;
       for (const auto &r : mine)
         text += serialize(r);
-      int              length = int(text.size());
-      std::vector<int> lengths(mpi::size()), displacements(mpi::size(), 0);
-      MPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
-      for (unsigned int r = 1; r < mpi::size(); ++r)
-        displacements[r] = displacements[r - 1] + lengths[r - 1];
-      std::string all(mpi::rank() == 0 ? std::size_t(displacements.back() + lengths.back()) : 0,
-                      '\0');
-      MPI_Gatherv(text.data(), length, MPI_CHAR, all.data(), lengths.data(),
-                  displacements.data(), MPI_CHAR, 0, MPI_COMM_WORLD);
+      const std::vector<std::string> per_rank = mpi::gather_bytes(text);
       if (mpi::rank() != 0)
         return mine;
       std::vector<StartResult> results;
-      std::istringstream       in(all);
-      while (in >> std::ws && in.peek() != EOF)
-        results.push_back(deserialize(in));
+      for (const std::string &bytes : per_rank)
+        {
+          std::istringstream in(bytes);
+          while (in >> std::ws && in.peek() != EOF)
+            results.push_back(deserialize(in));
+        }
       std::sort(results.begin(), results.end(),
                 [](const StartResult &a, const StartResult &b) { return a.start < b.start; });
       return results;
-    }
-
-    std::string kV_list(const std::vector<double> &volts)
-    {
-      std::string s;
-      for (std::size_t i = 0; i < volts.size(); ++i)
-        s += (i ? " " : "") + format_fixed(volts[i] * 1e-3, 4);
-      return s;
-    }
-
-    std::string edge_list(const std::vector<double> &edges)
-    {
-      std::string s;
-      for (std::size_t i = 0; i < edges.size(); ++i)
-        s += (i ? " " : "") + format_fixed(edges[i], 4);
-      return s;
     }
   } // namespace
 
@@ -235,8 +212,7 @@ namespace cdea
         probe.close();
         std::filesystem::remove(prm_path + ".probe", error);
       }
-    if (mpi::size() > 1)
-      MPI_Bcast(&writable, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    mpi::broadcast(writable);
     if (!writable)
       return exit_input_error;
 
@@ -308,14 +284,14 @@ namespace cdea
         std::cout << std::setw(5) << r.start << std::setw(14)
                   << (r.at_best.ok ? format_fixed(r.objective, 6) : std::string("-"))
                   << std::setw(12) << format_number(r.worst_constraint, 3) << std::setw(6)
-                  << r.evaluations << std::setw(8) << r.solves << "  " << edge_list(r.best.edges)
-                  << " | " << kV_list(r.best.voltages) << " | " << r.status << '\n';
+                  << r.evaluations << std::setw(8) << r.solves << "  " << format_fixed_list(r.best.edges, 4)
+                  << " | " << format_fixed_list(r.best.voltages, 4, 1e-3) << " | " << r.status << '\n';
       }
     const StartResult      &best = run.starts[run.best];
     const LayoutEvaluation &e    = best.at_best;
     std::cout << "\nOptimum (start " << best.start << ", " << (best.converged ? "converged" : "NOT converged")
-              << "):\n  ring edges (r/a): " << edge_list(best.best.edges)
-              << "\n  voltages (kV):    " << kV_list(best.best.voltages) << std::setprecision(7)
+              << "):\n  ring edges (r/a): " << format_fixed_list(best.best.edges, 4)
+              << "\n  voltages (kV):    " << format_fixed_list(best.best.voltages, 4, 1e-3) << std::setprecision(7)
               << "\n  displacement " << e.displacement * 1e3 << " mm, stroke " << e.stroke * 1e3
               << " mm, enclosed volume change " << e.volume_change * 1e9 << " mm^3\n";
     if (e.ok && e.points.s2.size())
@@ -331,7 +307,7 @@ namespace cdea
     try
       {
         write_optimum_file(h5_path, run, s, base, text);
-        write_replay_parameters(prm_file, prm_path, best.best, p.output.base_name);
+        write_replay_parameters(prm_file, prm_path, best.best, p.output.base_name, s.max_field);
       }
     catch (const std::exception &error)
       {
