@@ -439,7 +439,8 @@ namespace cdea
     // tolerance), where the replay by `cdea run` would see s2 just below
     // zero. One Gauss-Newton step on the active constraints, to a small
     // margin inside, moves it onto the boundary; kept only if it is
-    // feasible and loses no more than a relative 1e-7 of the objective.
+    // feasible and loses no more than a relative 1e-5 of the objective
+    // (the step is of the size of the violation, at most 1e-6).
     {
       const LayoutEvaluation at = evaluator.evaluate(best);
       if (at.ok)
@@ -476,7 +477,7 @@ namespace cdea
                   const double moved_objective =
                     (stroke ? there.stroke : there.volume_change) / scale;
                   if (c.maxCoeff() <= 0. &&
-                      moved_objective >= objective - 1e-7 * std::abs(objective))
+                      moved_objective >= objective - 1e-5 * std::abs(objective))
                     best = candidate;
                 }
             }
