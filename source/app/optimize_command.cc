@@ -174,6 +174,34 @@ namespace cdea
     }
   } // namespace
 
+  OptimizationRun optimize_layouts(const Parameters &p, const Scene &base,
+                                   const OptimizationSettings                    &s,
+                                   const std::function<void(const HistoryRow &)>  &on_evaluation,
+                                   const std::function<void(const StartResult &)> &on_start)
+  {
+    const auto       start_time = std::chrono::steady_clock::now();
+    SteppingSettings stepping   = stepping_settings(p);
+    stepping.arc_length         = false;
+    stepping.stability_check    = false;
+    stepping.breakdown_field    = 0.;
+    LayoutEvaluator evaluator(base, s, fe_discretization(p), newton_settings(p), stepping);
+    const auto      layouts = starting_layouts(s);
+    std::vector<StartResult> mine;
+    for (unsigned int k = mpi::rank(); k < layouts.size(); k += mpi::size())
+      {
+        mine.push_back(optimize_from(base, s, evaluator, k, layouts[k], on_evaluation));
+        if (on_start)
+          on_start(mine.back());
+      }
+    OptimizationRun run;
+    run.starts = gather(mine);
+    if (mpi::rank() == 0)
+      run.best = best_start(run.starts);
+    run.ranks   = mpi::size();
+    run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
+    return run;
+  }
+
   int run_optimize(const std::string &prm_file)
   {
     const bool           root = mpi::rank() == 0;
@@ -236,39 +264,25 @@ namespace cdea
                   << "  free variables (kV, r/a)\n";
       }
 
-    SteppingSettings stepping = stepping_settings(p);
-    stepping.arc_length       = false;
-    stepping.stability_check  = false;
-    stepping.breakdown_field  = 0.;
-    LayoutEvaluator evaluator(base, s, fe_discretization(p), newton_settings(p), stepping);
-    const auto      layouts = starting_layouts(s);
-    std::vector<StartResult> mine;
-    for (unsigned int k = mpi::rank(); k < layouts.size(); k += mpi::size())
-      {
-        const auto progress = [&](const HistoryRow &h) {
-          if (!root)
-            return;
-          std::cout << std::setw(5) << h.start << std::setw(6) << h.evaluation << std::setw(14)
-                    << (std::isnan(h.objective) ? std::string("failed") :
-                                                  format_fixed(h.objective, 6))
-                    << std::setw(12) << format_number(h.worst_constraint, 3) << " ";
-          for (const double v : h.free_values)
-            std::cout << ' ' << format_fixed(v, 4);
-          if (!h.message.empty())
-            std::cout << "  (" << h.message << ")";
-          std::cout << std::endl;
-        };
-        mine.push_back(optimize_from(base, s, evaluator, k, layouts[k], progress));
-        if (root)
-          std::cout << "start " << k << ": " << mine.back().status << std::endl;
-      }
-
-    OptimizationRun run;
-    run.starts = gather(mine);
+    const auto progress = [&](const HistoryRow &h) {
+      if (!root)
+        return;
+      std::cout << std::setw(5) << h.start << std::setw(6) << h.evaluation << std::setw(14)
+                << (std::isnan(h.objective) ? std::string("failed") : format_fixed(h.objective, 6))
+                << std::setw(12) << format_number(h.worst_constraint, 3) << " ";
+      for (const double v : h.free_values)
+        std::cout << ' ' << format_fixed(v, 4);
+      if (!h.message.empty())
+        std::cout << "  (" << h.message << ")";
+      std::cout << std::endl;
+    };
+    const auto start_done = [&](const StartResult &r) {
+      if (root)
+        std::cout << "start " << r.start << ": " << r.status << std::endl;
+    };
+    OptimizationRun run = optimize_layouts(p, base, s, progress, start_done);
     if (!root)
       return exit_success;
-    run.best    = best_start(run.starts);
-    run.ranks   = mpi::size();
     run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
 
     std::cout << "\n" << std::setw(5) << "start" << std::setw(14)

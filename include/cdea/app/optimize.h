@@ -188,6 +188,14 @@ namespace cdea
   /// first-order residual; if none is feasible, the least infeasible one.
   unsigned int best_start(const std::vector<StartResult> &starts);
 
+  /// Every start of @p settings (under mpirun: dealt round-robin to the
+  /// ranks, gathered on rank 0, where the best is chosen), told about every
+  /// evaluation and every finished start of this rank. No output.
+  OptimizationRun optimize_layouts(const Parameters &p, const Scene &base,
+                                   const OptimizationSettings &settings,
+                                   const std::function<void(const HistoryRow &)>  &on_evaluation = {},
+                                   const std::function<void(const StartResult &)> &on_start = {});
+
   /// <Base name>_optimum.h5 (layout in doc/optimization.md), replaced only
   /// once complete. Throws std::runtime_error naming the file.
   void write_optimum_file(const std::string &path, const OptimizationRun &run,
