@@ -5,7 +5,7 @@
 # and the parameter file with the fitted values, postprocess/plot_fit.py on
 # the result; parameters the data cannot separate are named in a warning;
 # bad data exit 1 with one message naming file, line and column, and write
-# nothing.
+# nothing; so do a time run and the viscoelastic law, naming the parameter.
 source "$(dirname "$0")/script_helpers.bash"
 
 sed 's/set Directory           = results/set Directory = out/' "$src/prm/fit-example.prm" > fit.prm

@@ -2,9 +2,11 @@
 # `cdea optimize` as a command: the paper's case (two rings, inner ring at
 # 5 kV, edge and outer voltage free) writes <Base name>_optimum.h5 with the
 # documented root attributes and history, and <Base name>_optimum.prm, which
-# `cdea run` replays to the same state; an optimizer stopped early exits 2
+# `cdea run` replays to the same state without wrinkling; with a field limit
+# the replay reports the largest field, at the limit; an optimizer stopped early exits 2
 # with the best layout written; `mpirun -np 2` gives the same file contents;
-# bad input exits 1 with one message naming the parameter and writes nothing.
+# bad input (and a time run) exits 1 with one message naming the parameter and
+# writes nothing.
 source "$(dirname "$0")/script_helpers.bash"
 
 cat > paper.prm <<'EOF'
