@@ -15,7 +15,8 @@
 //   build/benchmarks/bench_optimize [RUNS [RINGS [STARTS]]]      (defaults 5 8 8)
 //   build/benchmarks/bench_optimize --write-fit-data FILE.csv    (the example data)
 //
-// Files go to results/bench_optimize/. Figures in doc/optimization.md.
+// Files go to a temporary folder, removed at the end. Figures in
+// doc/optimization.md.
 
 #include <cdea/app/fit.h>
 #include <cdea/app/mpi_session.h>
@@ -97,6 +98,9 @@ namespace
     return "";
   }
 
+  /// The benchmark's temporary folder (removed by main and on failure).
+  std::filesystem::path output_folder;
+
   void time_command(const std::string &what, const std::vector<std::string> &args,
                     const std::string &log, const int runs)
   {
@@ -109,8 +113,10 @@ namespace
         // 2: the optimizer stopped unconverged; still a measurement.
         if (status != 0 && status != 2)
           {
-            std::cerr << "bench_optimize: '" << what << "' exited with " << status << ", see "
-                      << log << '\n';
+            std::cerr << "bench_optimize: '" << what << "' exited with " << status
+                      << "; its output:\n"
+                      << slurp(log);
+            std::filesystem::remove_all(output_folder);
             std::exit(1);
           }
         wall.push_back(t.wall);
@@ -188,7 +194,9 @@ int main(int argc, char **argv)
   const int          runs   = args.size() > 0 ? std::stoi(args[0]) : 5;
   const unsigned int rings  = args.size() > 1 ? std::stoi(args[1]) : 8;
   const unsigned int starts = args.size() > 2 ? std::stoi(args[2]) : 8;
-  const std::filesystem::path out = std::filesystem::absolute("results/bench_optimize");
+  const std::filesystem::path out =
+    std::filesystem::temp_directory_path() / ("cdea-bench-optimize-" + std::to_string(getpid()));
+  output_folder = out;
   std::filesystem::create_directories(out);
   {
     const MpiSession mpi(argc, argv);
@@ -219,5 +227,6 @@ int main(int argc, char **argv)
   time_command("fit: mu and Jlim to 20 points", {exe, "fit", (out / "fit.prm").string(),
                                                  (out / "fit.csv").string()},
                (out / "fit.log").string(), runs);
+  std::filesystem::remove_all(out);
   return 0;
 }

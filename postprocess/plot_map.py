@@ -275,9 +275,13 @@ def print_table(mp, rows):
     if rows:
         print(f"  {'r_v/a':>6} {'red kV':>8} {'red %':>7} {'blue kV':>8} {'blue %':>7} "
               f"{'reached kV':>10}")
+        # As many decimals as the rows need to be told apart (a refined map
+        # has steps of 0.002, the coarse one of 0.05).
+        decimals = next((d for d in range(2, 9)
+                         if all(abs(round(rv, d) - rv) < 1e-9 for rv in mp.rv)), 9)
         for i, rv in enumerate(mp.rv):
             r, b = mp.line["red"], mp.line["blue"]
-            print(f"  {rv:6.3g} {r[0][i]:8.4f} {r[1][i]:7.2f} {b[0][i]:8.4f} {b[1][i]:7.2f} "
+            print(f"  {rv:6.{decimals}f} {r[0][i]:8.4f} {r[1][i]:7.2f} {b[0][i]:8.4f} {b[1][i]:7.2f} "
                   f"{mp.highest[i]:10.3f}")
 
 

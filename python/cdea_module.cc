@@ -481,4 +481,5 @@ PYBIND11_MODULE(cdea, m)
     ("Every parameter, validated, as a results file stores them. " + prm_doc).c_str());
   m.def("mpi_initialized", &mpi::initialized,
         "True once this process has started MPI (only the Trilinos KLU solver does)");
+  void bind_design(py::module_ &); bind_design(m); // python/design_bindings.cc: optimize, fit
 }

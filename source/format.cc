@@ -1,6 +1,7 @@
 #include <cdea/format.h>
 
 #include <cstdio>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -40,5 +41,19 @@ namespace cdea
     char buffer[40];
     std::snprintf(buffer, sizeof buffer, "%.17g", value);
     return buffer;
+  }
+
+  std::string format_fixed_or_dash(const double value, const int decimals)
+  {
+    return std::isnan(value) ? "-" : format_fixed(value, decimals);
+  }
+
+  std::string format_fixed_list(const std::vector<double> &values, const int decimals,
+                                const double factor)
+  {
+    std::string s;
+    for (std::size_t i = 0; i < values.size(); ++i)
+      s += (i ? " " : "") + format_fixed(values[i] * factor, decimals);
+    return s;
   }
 } // namespace cdea

@@ -5,7 +5,7 @@
 # and the parameter file with the fitted values, postprocess/plot_fit.py on
 # the result; parameters the data cannot separate are named in a warning;
 # bad data exit 1 with one message naming file, line and column, and write
-# nothing.
+# nothing; so do a time run and the viscoelastic law, naming the parameter.
 source "$(dirname "$0")/script_helpers.bash"
 
 sed 's/set Directory           = results/set Directory = out/' "$src/prm/fit-example.prm" > fit.prm
@@ -47,6 +47,21 @@ rc=$?
 "$exe" fit bad.prm missing.csv > /dev/null 2> missing_err.txt
 [ $? -eq 1 ] && grep -q "cannot read data file 'missing.csv'" missing_err.txt && ok "missing data file" \
   || fail "missing data file: $(cat missing_err.txt)"
+
+# The fit works on quasi-static elastic equilibria: a time run or the
+# viscoelastic law is refused by name (exit 1, nothing written).
+for change in "Time|Enabled = true|Time/Enabled = true is not supported by cdea fit" \
+              "Material|Model = viscoelastic|Material/Model = viscoelastic is not supported by cdea fit"; do
+  IFS='|' read -r section entry message <<< "$change"
+  { sed 's/Directory = out/Directory = refused/' fit.prm
+    printf 'subsection Time\n  set Enabled = true\nend\n'
+    [ "$section" = Material ] && printf 'subsection Material\n  set %s\nend\n' "$entry"; } > refused.prm
+  "$exe" fit refused.prm data.csv > refused.txt 2> refused_err.txt
+  rc=$?
+  [ $rc -eq 1 ] && grep -q "$message" refused_err.txt && [ ! -e refused ] \
+    && [ "$(wc -l < refused_err.txt)" -le 1 ] \
+    && ok "refused: $(head -c 110 refused_err.txt)" || fail "$section: exit $rc, $(cat refused_err.txt)"
+done
 
 echo "$failures failed"
 [ $failures -eq 0 ]

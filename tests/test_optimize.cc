@@ -244,6 +244,44 @@ int main(int argc, char **argv)
     check_close(stroke[1], r.at_best.stroke, 1e-9, "stroke = red-line stroke at r_v (m)");
     check(stroke[0] < stroke[1] && stroke[2] < stroke[1],
           "neighbouring red-line strokes (r_v -+ 0.02) are smaller");
+
+    // The multistart of prm/optimize-paper.prm (4 starts): the chosen
+    // optimum is feasible, so that its replay by `cdea run` is not wrinkled.
+    std::vector<StartResult> starts;
+    OptimizationSettings     four = s;
+    four.starts                   = 4;
+    const auto layouts            = starting_layouts(four);
+    for (unsigned int k = 0; k < layouts.size(); ++k)
+      starts.push_back(optimize_from(base, four, evaluator, k, layouts[k]));
+    const StartResult &chosen = starts[best_start(starts)];
+    check(chosen.converged, "4 starts: the chosen one converged");
+    check(chosen.at_best.points.s2.minCoeff() >= 0. && chosen.at_best.points.s2.minCoeff() < 1e-3,
+          "4 starts: the chosen optimum has 0 <= min s2 < 1e-3 Pa (feasible, s2 = 0 active): " +
+            std::to_string(chosen.at_best.points.s2.minCoeff()) + " Pa");
+  }
+
+  std::cout << "D2. Starts at the same optimum: the feasible one is chosen\n";
+  {
+    // Objectives equal to 2e-8 (relative): the one a little outside the
+    // feasible set must not win over the feasible one; a clearly larger
+    // objective still wins.
+    StartResult outside, inside, worse;
+    for (StartResult *r : {&outside, &inside, &worse})
+      {
+        r->converged  = true;
+        r->at_best.ok = true;
+        r->optimality = 1e-8;
+      }
+    outside.objective        = 8.755678149853;
+    outside.worst_constraint = 9.1e-8;
+    inside.objective         = 8.755677967702;
+    inside.worst_constraint  = -1e-9;
+    worse.objective          = 8.7;
+    worse.worst_constraint   = -0.5;
+    check(best_start({outside, inside, worse}) == 1 && best_start({inside, outside}) == 0,
+          "the feasible start of two at the same optimum");
+    inside.objective = 8.7556;
+    check(best_start({outside, inside}) == 0, "a larger objective (by 1e-5) still wins");
   }
 
   std::cout << "E. A field limit at a fixed edge\n";

@@ -17,4 +17,12 @@ namespace cdea
   /// A number with 17 significant digits, read back as the same double (for
   /// parameter files written by cdea).
   std::string exact_number(double value);
+
+  // Tables of the design commands and the sweep.
+  /// format_fixed, but "-" for NaN (a value that could not be computed).
+  std::string format_fixed_or_dash(double value, int decimals);
+  /// @p values times @p factor, each with @p decimals digits after the point,
+  /// separated by spaces ("5.0000 6.3824").
+  std::string format_fixed_list(const std::vector<double> &values, int decimals,
+                                double factor = 1.);
 } // namespace cdea

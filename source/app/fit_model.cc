@@ -49,6 +49,12 @@ namespace cdea
     std::ifstream in(file);
     if (!in)
       throw InputError("cannot read data file '" + file + "'");
+    return read_calibration_data(in, file, n_rings);
+  }
+
+  CalibrationData read_calibration_data(std::istream &in, const std::string &file,
+                                        const unsigned int n_rings)
+  {
     CalibrationData          data;
     std::map<std::string, int> column; // name -> index in a line
     std::size_t              n_columns = 0;
@@ -123,6 +129,7 @@ namespace cdea
 
   FitSettings fit_settings(const Parameters &p)
   {
+    require_quasi_static_elastic(p, "fit");
     const std::string name = "Calibration/Free parameters";
     static const std::pair<const char *, ParameterKind> kinds[] = {
       {"shear modulus", ParameterKind::shear_modulus},

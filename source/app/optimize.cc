@@ -434,6 +434,56 @@ namespace cdea
       }
     result.status = nlopt_status(status);
 
+    // The optimizer ends on the constraint boundary from either side, and
+    // the best layout is often a little outside (within the feasibility
+    // tolerance), where the replay by `cdea run` would see s2 just below
+    // zero. One Gauss-Newton step on the active constraints, to a small
+    // margin inside, moves it onto the boundary; kept only if it is
+    // feasible and loses no more than a relative 1e-5 of the objective
+    // (the step is of the size of the violation, at most 1e-6).
+    {
+      const LayoutEvaluation at = evaluator.evaluate(best);
+      if (at.ok)
+        {
+          constraints(s, base, best, at, c, dc);
+          const double objective = (stroke ? at.stroke : at.volume_change) / scale;
+          std::vector<int> active;
+          for (int i = 0; i < c.size(); ++i)
+            if (c[i] > -active_tolerance)
+              active.push_back(i);
+          if (c.size() && c.maxCoeff() > 0. && c.maxCoeff() <= feasibility_tolerance)
+            {
+              constexpr double margin = 1e-9; // in units of mu (s2), of the limit (E)
+              Eigen::MatrixXd  A(active.size(), n);
+              Eigen::VectorXd  target(active.size());
+              for (std::size_t k = 0; k < active.size(); ++k)
+                {
+                  for (unsigned int j = 0; j < n; ++j)
+                    A(k, j) = dc(active[k], j) * (upper[j] - lower[j]);
+                  target[k] = -margin - c[active[k]];
+                }
+              const Eigen::VectorXd step   = A.completeOrthogonalDecomposition().solve(target);
+              const auto            values = best.free_values(free);
+              std::vector<double>   moved(n);
+              for (unsigned int j = 0; j < n; ++j)
+                moved[j] = std::clamp(values[j] + step[j] * (upper[j] - lower[j]), lower[j],
+                                      upper[j]);
+              Layout candidate = best;
+              candidate.set_free_values(free, moved);
+              const LayoutEvaluation there = evaluator.evaluate(candidate);
+              if (there.ok)
+                {
+                  constraints(s, base, candidate, there, c, dc);
+                  const double moved_objective =
+                    (stroke ? there.stroke : there.volume_change) / scale;
+                  if (c.maxCoeff() <= 0. &&
+                      moved_objective >= objective - 1e-5 * std::abs(objective))
+                    best = candidate;
+                }
+            }
+        }
+    }
+
     // The best layout, confirmed from zero voltage as `cdea run` would reach it.
     result.best    = best;
     result.at_best = evaluator.ramp(best);

@@ -7,8 +7,6 @@
 #include <cdea/app/parameters.h>
 #include <cdea/format.h>
 
-#include <mpi.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -160,42 +158,49 @@ namespace cdea
       std::string text;
       for (const auto &r : mine)
         text += serialize(r);
-      int              length = int(text.size());
-      std::vector<int> lengths(mpi::size()), displacements(mpi::size(), 0);
-      MPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
-      for (unsigned int r = 1; r < mpi::size(); ++r)
-        displacements[r] = displacements[r - 1] + lengths[r - 1];
-      std::string all(mpi::rank() == 0 ? std::size_t(displacements.back() + lengths.back()) : 0,
-                      '\0');
-      MPI_Gatherv(text.data(), length, MPI_CHAR, all.data(), lengths.data(),
-                  displacements.data(), MPI_CHAR, 0, MPI_COMM_WORLD);
+      const std::vector<std::string> per_rank = mpi::gather_bytes(text);
       if (mpi::rank() != 0)
         return mine;
       std::vector<StartResult> results;
-      std::istringstream       in(all);
-      while (in >> std::ws && in.peek() != EOF)
-        results.push_back(deserialize(in));
+      for (const std::string &bytes : per_rank)
+        {
+          std::istringstream in(bytes);
+          while (in >> std::ws && in.peek() != EOF)
+            results.push_back(deserialize(in));
+        }
       std::sort(results.begin(), results.end(),
                 [](const StartResult &a, const StartResult &b) { return a.start < b.start; });
       return results;
     }
-
-    std::string kV_list(const std::vector<double> &volts)
-    {
-      std::string s;
-      for (std::size_t i = 0; i < volts.size(); ++i)
-        s += (i ? " " : "") + format_fixed(volts[i] * 1e-3, 4);
-      return s;
-    }
-
-    std::string edge_list(const std::vector<double> &edges)
-    {
-      std::string s;
-      for (std::size_t i = 0; i < edges.size(); ++i)
-        s += (i ? " " : "") + format_fixed(edges[i], 4);
-      return s;
-    }
   } // namespace
+
+  OptimizationRun optimize_layouts(const Parameters &p, const Scene &base,
+                                   const OptimizationSettings                    &s,
+                                   const std::function<void(const HistoryRow &)>  &on_evaluation,
+                                   const std::function<void(const StartResult &)> &on_start)
+  {
+    const auto       start_time = std::chrono::steady_clock::now();
+    SteppingSettings stepping   = stepping_settings(p);
+    stepping.arc_length         = false;
+    stepping.stability_check    = false;
+    stepping.breakdown_field    = 0.;
+    LayoutEvaluator evaluator(base, s, fe_discretization(p), newton_settings(p), stepping);
+    const auto      layouts = starting_layouts(s);
+    std::vector<StartResult> mine;
+    for (unsigned int k = mpi::rank(); k < layouts.size(); k += mpi::size())
+      {
+        mine.push_back(optimize_from(base, s, evaluator, k, layouts[k], on_evaluation));
+        if (on_start)
+          on_start(mine.back());
+      }
+    OptimizationRun run;
+    run.starts = gather(mine);
+    if (mpi::rank() == 0)
+      run.best = best_start(run.starts);
+    run.ranks   = mpi::size();
+    run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
+    return run;
+  }
 
   int run_optimize(const std::string &prm_file)
   {
@@ -235,8 +240,7 @@ namespace cdea
         probe.close();
         std::filesystem::remove(prm_path + ".probe", error);
       }
-    if (mpi::size() > 1)
-      MPI_Bcast(&writable, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    mpi::broadcast(writable);
     if (!writable)
       return exit_input_error;
 
@@ -260,39 +264,25 @@ namespace cdea
                   << "  free variables (kV, r/a)\n";
       }
 
-    SteppingSettings stepping = stepping_settings(p);
-    stepping.arc_length       = false;
-    stepping.stability_check  = false;
-    stepping.breakdown_field  = 0.;
-    LayoutEvaluator evaluator(base, s, fe_discretization(p), newton_settings(p), stepping);
-    const auto      layouts = starting_layouts(s);
-    std::vector<StartResult> mine;
-    for (unsigned int k = mpi::rank(); k < layouts.size(); k += mpi::size())
-      {
-        const auto progress = [&](const HistoryRow &h) {
-          if (!root)
-            return;
-          std::cout << std::setw(5) << h.start << std::setw(6) << h.evaluation << std::setw(14)
-                    << (std::isnan(h.objective) ? std::string("failed") :
-                                                  format_fixed(h.objective, 6))
-                    << std::setw(12) << format_number(h.worst_constraint, 3) << " ";
-          for (const double v : h.free_values)
-            std::cout << ' ' << format_fixed(v, 4);
-          if (!h.message.empty())
-            std::cout << "  (" << h.message << ")";
-          std::cout << std::endl;
-        };
-        mine.push_back(optimize_from(base, s, evaluator, k, layouts[k], progress));
-        if (root)
-          std::cout << "start " << k << ": " << mine.back().status << std::endl;
-      }
-
-    OptimizationRun run;
-    run.starts = gather(mine);
+    const auto progress = [&](const HistoryRow &h) {
+      if (!root)
+        return;
+      std::cout << std::setw(5) << h.start << std::setw(6) << h.evaluation << std::setw(14)
+                << (std::isnan(h.objective) ? std::string("failed") : format_fixed(h.objective, 6))
+                << std::setw(12) << format_number(h.worst_constraint, 3) << " ";
+      for (const double v : h.free_values)
+        std::cout << ' ' << format_fixed(v, 4);
+      if (!h.message.empty())
+        std::cout << "  (" << h.message << ")";
+      std::cout << std::endl;
+    };
+    const auto start_done = [&](const StartResult &r) {
+      if (root)
+        std::cout << "start " << r.start << ": " << r.status << std::endl;
+    };
+    OptimizationRun run = optimize_layouts(p, base, s, progress, start_done);
     if (!root)
       return exit_success;
-    run.best    = best_start(run.starts);
-    run.ranks   = mpi::size();
     run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
 
     std::cout << "\n" << std::setw(5) << "start" << std::setw(14)
@@ -308,14 +298,14 @@ namespace cdea
         std::cout << std::setw(5) << r.start << std::setw(14)
                   << (r.at_best.ok ? format_fixed(r.objective, 6) : std::string("-"))
                   << std::setw(12) << format_number(r.worst_constraint, 3) << std::setw(6)
-                  << r.evaluations << std::setw(8) << r.solves << "  " << edge_list(r.best.edges)
-                  << " | " << kV_list(r.best.voltages) << " | " << r.status << '\n';
+                  << r.evaluations << std::setw(8) << r.solves << "  " << format_fixed_list(r.best.edges, 4)
+                  << " | " << format_fixed_list(r.best.voltages, 4, 1e-3) << " | " << r.status << '\n';
       }
     const StartResult      &best = run.starts[run.best];
     const LayoutEvaluation &e    = best.at_best;
     std::cout << "\nOptimum (start " << best.start << ", " << (best.converged ? "converged" : "NOT converged")
-              << "):\n  ring edges (r/a): " << edge_list(best.best.edges)
-              << "\n  voltages (kV):    " << kV_list(best.best.voltages) << std::setprecision(7)
+              << "):\n  ring edges (r/a): " << format_fixed_list(best.best.edges, 4)
+              << "\n  voltages (kV):    " << format_fixed_list(best.best.voltages, 4, 1e-3) << std::setprecision(7)
               << "\n  displacement " << e.displacement * 1e3 << " mm, stroke " << e.stroke * 1e3
               << " mm, enclosed volume change " << e.volume_change * 1e9 << " mm^3\n";
     if (e.ok && e.points.s2.size())
@@ -331,7 +321,7 @@ namespace cdea
     try
       {
         write_optimum_file(h5_path, run, s, base, text);
-        write_replay_parameters(prm_file, prm_path, best.best, p.output.base_name);
+        write_replay_parameters(prm_file, prm_path, best.best, p.output.base_name, s.max_field);
       }
     catch (const std::exception &error)
       {

@@ -5,10 +5,12 @@
 #include <cdea/app/parameters.h>
 #include <cdea/output/hdf5_writer.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #ifndef CDEA_VERSION
@@ -38,25 +40,56 @@ namespace cdea
 
   unsigned int best_start(const std::vector<StartResult> &starts)
   {
-    unsigned int best = 0;
-    // Converged before feasible before the rest; then the objective (or,
-    // among infeasible ones, the smaller violation).
+    // Converged before feasible before the rest.
     const auto rank = [](const StartResult &r) {
       const bool feasible = r.at_best.ok && r.worst_constraint <= 1e-6;
       return r.converged ? 2 : feasible ? 1 : 0;
     };
-    const auto better = [&](const StartResult &a, const StartResult &b) {
-      if (rank(a) != rank(b))
-        return rank(a) > rank(b);
-      if (rank(a) > 0)
-        return a.objective > b.objective;
-      if (a.at_best.ok != b.at_best.ok)
-        return a.at_best.ok;
-      return a.worst_constraint < b.worst_constraint;
-    };
-    for (unsigned int k = 1; k < starts.size(); ++k)
-      if (better(starts[k], starts[best]))
-        best = k;
+    int top = 0;
+    for (const auto &r : starts)
+      top = std::max(top, rank(r));
+    if (top == 0)
+      {
+        // None feasible: the least infeasible of those that could be ramped.
+        unsigned int best = 0;
+        for (unsigned int k = 1; k < starts.size(); ++k)
+          {
+            const StartResult &a = starts[k], &b = starts[best];
+            if (a.at_best.ok != b.at_best.ok ? a.at_best.ok :
+                                               a.worst_constraint < b.worst_constraint)
+              best = k;
+          }
+        return best;
+      }
+    // Starts that reach the same optimum differ in the last digits of the
+    // objective, and the larger one is usually the one a little outside the
+    // feasible set (within the feasibility tolerance, 1e-6 mu in s2, worth
+    // about 2e-7 of the stroke in the paper's case): objectives within this
+    // relative tolerance count as equal, and the smaller constraint
+    // violation (max(c, 0)), then the smaller first-order residual, decides.
+    constexpr double same_objective = 1e-7;
+    double           largest        = -std::numeric_limits<double>::infinity();
+    for (const auto &r : starts)
+      if (rank(r) == top)
+        largest = std::max(largest, r.objective);
+    const double tie = same_objective * std::max(std::abs(largest), 1e-300);
+    unsigned int best = starts.size();
+    for (unsigned int k = 0; k < starts.size(); ++k)
+      {
+        const StartResult &a = starts[k];
+        if (rank(a) != top || a.objective < largest - tie)
+          continue;
+        if (best == starts.size())
+          {
+            best = k;
+            continue;
+          }
+        const StartResult &b = starts[best];
+        const double violation_a = std::max(a.worst_constraint, 0.),
+                     violation_b = std::max(b.worst_constraint, 0.);
+        if (violation_a != violation_b ? violation_a < violation_b : a.optimality < b.optimality)
+          best = k;
+      }
     return best;
   }
 
@@ -202,14 +235,19 @@ namespace cdea
   }
 
   void write_replay_parameters(const std::string &prm_file, const std::string &path,
-                               const Layout &layout, const std::string &base_name)
+                               const Layout &layout, const std::string &base_name,
+                               const double max_field)
   {
+    std::vector<ParameterChange> changes = {
+      {"Electrodes", "Ring edges (r/a)", joined(layout.edges, 1.)},
+      {"Electrodes", "Voltage path (kV)", joined(layout.voltages, 1e-3)},
+      {"Solver", "Continuation", "load stepping"},
+      {"Output", "Base name", base_name + "_optimum_run"}};
+    // The replay then reports the largest field of every step.
+    if (std::isfinite(max_field))
+      changes.push_back({"Solver", "Breakdown field (MV/m)", exact_number(max_field * 1e-6)});
     write_changed_parameters(
-      prm_file, path,
-      {{"Electrodes", "Ring edges (r/a)", joined(layout.edges, 1.)},
-       {"Electrodes", "Voltage path (kV)", joined(layout.voltages, 1e-3)},
-       {"Solver", "Continuation", "load stepping"},
-       {"Output", "Base name", base_name + "_optimum_run"}},
+      prm_file, path, changes,
       "# Written by cdea optimize: `cdea run` on this file ramps the voltages of the\n"
       "# optimum layout proportionally from zero and reaches the optimum state.\n");
   }

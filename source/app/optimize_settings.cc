@@ -106,6 +106,7 @@ namespace cdea
 
   OptimizationSettings optimization_settings(const Parameters &p, const Scene &scene)
   {
+    require_quasi_static_elastic(p, "optimize");
     if (p.wrinkling.model != WrinklingModel::check)
       throw InputError("Wrinkling/Model = " + to_string(p.wrinkling.model) +
                        " is not supported by cdea optimize: the constraint is on the hoop "

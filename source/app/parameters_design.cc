@@ -3,6 +3,7 @@
 #include <cdea/app/parameters.h>
 #include <cdea/app/parameters_design.h>
 #include <cdea/output/safe_files.h>
+#include <cdea/app/parameters_time.h>
 
 #include <sstream>
 #include <stdexcept>
@@ -23,6 +24,17 @@ namespace cdea
   std::string to_string(const DesignAlgorithm choice)
   {
     return choice == DesignAlgorithm::mma ? "MMA" : "SLSQP";
+  }
+
+  void require_quasi_static_elastic(const Parameters &p, const std::string &command)
+  {
+    if (p.viscous_material.model != MaterialModel::elastic)
+      throw InputError("Material/Model = " + to_string(p.viscous_material.model) +
+                       " is not supported by cdea " + command +
+                       ": its sensitivities are those of the elastic law (use elastic)");
+    if (p.time.enabled)
+      throw InputError("Time/Enabled = true is not supported by cdea " + command +
+                       ": it works on quasi-static equilibria (use false)");
   }
 
   void write_changed_parameters(const std::string &prm_file, const std::string &path,

@@ -8,9 +8,9 @@
 #include <cdea/app/run_control.h>
 #include <cdea/app/progress.h>
 #include <cdea/app/sweep.h>
+#include <cdea/format.h>
 #include <cdea/output/safe_files.h>
 
-#include <mpi.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -20,7 +20,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <deque>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -41,7 +40,7 @@ namespace cdea
     class Packer
     {
     public:
-      std::vector<char> bytes;
+      std::string bytes;
       void put(const double x) { append(&x, sizeof x); }
       void put(const std::uint64_t x) { append(&x, sizeof x); }
       void put(const std::string &s)
@@ -66,7 +65,7 @@ namespace cdea
       void append(const void *p, const std::size_t n)
       {
         const char *c = static_cast<const char *>(p);
-        bytes.insert(bytes.end(), c, c + n);
+        bytes.append(c, n);
       }
     };
 
@@ -176,14 +175,6 @@ namespace cdea
       return {index, std::move(r)};
     }
 
-    /// Where this process stands in MPI_COMM_WORLD (alone when MPI is off).
-    struct Mpi
-    {
-      bool         active = mpi::initialized();
-      unsigned int rank   = mpi::rank();
-      unsigned int size   = mpi::size();
-    };
-
     constexpr int progress_tag = 7401;
   } // namespace
 
@@ -191,7 +182,6 @@ namespace cdea
                              const SweepSettings &settings,
                              const std::function<void(std::size_t)> &on_points)
   {
-    const Mpi              mpi;
     const FeDiscretization disc     = fe_discretization(p);
     const NewtonSettings   newton   = newton_settings(p);
     const SteppingSettings stepping = sweep_stepping_settings(p);
@@ -203,30 +193,23 @@ namespace cdea
     // The same on every rank (same input, same arithmetic).
     map.zero_voltage_displacement = zero_voltage_displacement(base, disc, newton, stepping);
 
-    const std::vector<std::size_t> mine = rows_of_rank(n, mpi.rank, mpi.size);
-    const bool distributed = mpi.active && mpi.size > 1;
+    const unsigned int             rank = mpi::rank(), size = mpi::size();
+    const std::vector<std::size_t> mine = rows_of_rank(n, rank, size);
+    const bool                     distributed = size > 1;
 
     // Progress: rank 0 reports its own points and polls for the counts the
     // other ranks send (at most every 0.2 s and at the end of each row).
-    std::deque<std::uint64_t> sent; // stable buffers of pending sends
-    std::vector<MPI_Request>  requests;
-    std::uint64_t             pending   = 0;
-    auto                      last_send = std::chrono::steady_clock::now();
-    std::uint64_t             received  = 0;
-    const std::uint64_t       expected  = std::uint64_t(n - mine.size()) * m;
+    mpi::CountChannel   channel(progress_tag);
+    std::uint64_t       pending   = 0;
+    auto                last_send = std::chrono::steady_clock::now();
+    std::uint64_t       received  = 0;
+    const std::uint64_t expected  = std::uint64_t(n - mine.size()) * m;
     auto poll = [&] {
-      if (!distributed || mpi.rank != 0)
+      if (!distributed || rank != 0)
         return;
-      int flag = 1;
-      while (received < expected)
+      std::uint64_t count = 0;
+      while (received < expected && channel.try_receive(count))
         {
-          MPI_Status status;
-          MPI_Iprobe(MPI_ANY_SOURCE, progress_tag, MPI_COMM_WORLD, &flag, &status);
-          if (!flag)
-            break;
-          std::uint64_t count = 0;
-          MPI_Recv(&count, 1, MPI_UINT64_T, status.MPI_SOURCE, progress_tag, MPI_COMM_WORLD,
-                   MPI_STATUS_IGNORE);
           received += count;
           if (on_points)
             on_points(count);
@@ -235,15 +218,12 @@ namespace cdea
     auto send = [&] {
       if (pending == 0)
         return;
-      sent.push_back(pending);
-      requests.emplace_back();
-      MPI_Isend(&sent.back(), 1, MPI_UINT64_T, 0, progress_tag, MPI_COMM_WORLD,
-                &requests.back());
+      channel.send(pending);
       pending   = 0;
       last_send = std::chrono::steady_clock::now();
     };
     auto points_done = [&](const std::size_t count) {
-      if (!distributed || mpi.rank == 0)
+      if (!distributed || rank == 0)
         {
           if (on_points)
             on_points(count);
@@ -283,7 +263,7 @@ namespace cdea
             if (reported < m)
               points_done(m - reported);
           }
-        if (distributed && mpi.rank != 0)
+        if (distributed && rank != 0)
           send();
         if (distributed)
           pack(local, i, row);
@@ -293,40 +273,21 @@ namespace cdea
     if (!distributed)
       return map;
 
-    if (mpi.rank == 0)
+    if (rank == 0)
       while (received < expected)
         {
-          std::uint64_t count = 0;
-          MPI_Recv(&count, 1, MPI_UINT64_T, MPI_ANY_SOURCE, progress_tag, MPI_COMM_WORLD,
-                   MPI_STATUS_IGNORE);
+          const std::uint64_t count = channel.receive();
           received += count;
           if (on_points)
             on_points(count);
         }
-    else if (!requests.empty())
-      MPI_Waitall(int(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+    else
+      channel.wait_for_sends();
 
-    // Gather the packed rows on rank 0.
-    const int        bytes = int(local.bytes.size());
-    std::vector<int> counts(mpi.rank == 0 ? mpi.size : 0), offsets;
-    MPI_Gather(&bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
-    std::vector<char> all;
-    if (mpi.rank == 0)
+    // Gather the packed rows on rank 0; the other ranks keep their own.
+    const std::vector<std::string> packed = mpi::gather_bytes(local.bytes);
+    if (rank != 0)
       {
-        offsets.assign(mpi.size, 0);
-        std::size_t total = 0;
-        for (unsigned int r = 0; r < mpi.size; ++r)
-          {
-            offsets[r] = int(total);
-            total += std::size_t(counts[r]);
-          }
-        all.resize(std::max<std::size_t>(total, 1));
-      }
-    MPI_Gatherv(local.bytes.data(), bytes, MPI_CHAR, all.data(), counts.data(), offsets.data(),
-                MPI_CHAR, 0, MPI_COMM_WORLD);
-    if (mpi.rank != 0)
-      {
-        // Only the own rows on the other ranks.
         Unpacker in(local.bytes.data(), local.bytes.data() + local.bytes.size());
         while (!in.done())
           map.rows.push_back(unpack(in).second);
@@ -334,17 +295,17 @@ namespace cdea
       }
     map.rows.assign(n, SweepRow());
     std::vector<bool> seen(n, false);
-    std::size_t       total = 0;
-    for (unsigned int r = 0; r < mpi.size; ++r)
-      total += std::size_t(counts[r]);
-    Unpacker in(all.data(), all.data() + total);
-    while (!in.done())
+    for (const std::string &bytes : packed)
       {
-        auto [index, row] = unpack(in);
-        if (index >= n || seen[index])
-          throw std::runtime_error("cdea sweep: bad row index in the gather");
-        seen[index]     = true;
-        map.rows[index] = std::move(row);
+        Unpacker in(bytes.data(), bytes.data() + bytes.size());
+        while (!in.done())
+          {
+            auto [index, row] = unpack(in);
+            if (index >= n || seen[index])
+              throw std::runtime_error("cdea sweep: bad row index in the gather");
+            seen[index]     = true;
+            map.rows[index] = std::move(row);
+          }
       }
     if (std::find(seen.begin(), seen.end(), false) != seen.end())
       throw std::runtime_error("cdea sweep: a row is missing after the gather");
@@ -353,15 +314,6 @@ namespace cdea
 
   namespace
   {
-    std::string fixed(const double x, const int digits)
-    {
-      if (std::isnan(x))
-        return "-";
-      std::ostringstream o;
-      o << std::fixed << std::setprecision(digits) << x;
-      return o.str();
-    }
-
     /// The maximum of a line's stroke increase over the rows (index or n).
     std::size_t line_maximum(const SweepMap &map, SweepLine SweepRow::*line)
     {
@@ -379,8 +331,7 @@ namespace cdea
 
   int run_sweep(const std::string &prm_file)
   {
-    const Mpi   mpi;
-    const bool  root = mpi.rank == 0;
+    const bool  root = mpi::rank() == 0;
     Parameters  p;
     Scene       base;
     std::string text;
@@ -412,8 +363,7 @@ namespace cdea
         std::cerr << "cdea: cannot write '" << path << "': " << why << '\n';
         writable = 0;
       }
-    if (mpi.active && mpi.size > 1)
-      MPI_Bcast(&writable, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    mpi::broadcast(writable);
     if (!writable)
       return exit_input_error;
 
@@ -426,8 +376,8 @@ namespace cdea
                 << settings.outer_step / 1e3 << " kV), inner ring at "
                 << settings.inner_voltage / 1e3 << " kV\n"
                 << "FE model: degree " << p.discretization.polynomial_degree << ", "
-                << p.discretization.elements_per_ring << " elements per ring; " << mpi.size
-                << (mpi.size == 1 ? " rank" : " ranks") << " (rows round-robin); writing "
+                << p.discretization.elements_per_ring << " elements per ring; " << mpi::size()
+                << (mpi::size() == 1 ? " rank" : " ranks") << " (rows round-robin); writing "
                 << path << std::endl;
 
     const auto start = std::chrono::steady_clock::now();
@@ -472,12 +422,12 @@ namespace cdea
       {
         solves += r.solves;
         iterations += r.newton_iterations;
-        std::cout << std::setw(7) << r.rv_over_a << std::setw(11) << fixed(r.base_displacement * 1e3, 4)
-                  << std::setw(12) << fixed(r.highest_voltage / 1e3, 3) << std::setw(10)
-                  << fixed(r.red.outer_voltage / 1e3, 4) << std::setw(10)
-                  << fixed(r.red.stroke_increase, 2) << std::setw(10)
-                  << fixed(r.blue.outer_voltage / 1e3, 4) << std::setw(10)
-                  << fixed(r.blue.stroke_increase, 2) << "  "
+        std::cout << std::setw(7) << r.rv_over_a << std::setw(11) << format_fixed_or_dash(r.base_displacement * 1e3, 4)
+                  << std::setw(12) << format_fixed_or_dash(r.highest_voltage / 1e3, 3) << std::setw(10)
+                  << format_fixed_or_dash(r.red.outer_voltage / 1e3, 4) << std::setw(10)
+                  << format_fixed_or_dash(r.red.stroke_increase, 2) << std::setw(10)
+                  << format_fixed_or_dash(r.blue.outer_voltage / 1e3, 4) << std::setw(10)
+                  << format_fixed_or_dash(r.blue.stroke_increase, 2) << "  "
                   << (r.message.empty() ? "-" : r.message.substr(0, 60)) << '\n';
       }
     for (const auto &[name, line] :
@@ -489,13 +439,13 @@ namespace cdea
           std::cout << "largest stroke increase on the " << name << " line: none in the range\n";
         else
           std::cout << "largest stroke increase on the " << name << " line: "
-                    << fixed((map.rows[i].*line).stroke_increase, 2) << " % at r_v/a = "
+                    << format_fixed_or_dash((map.rows[i].*line).stroke_increase, 2) << " % at r_v/a = "
                     << map.rows[i].rv_over_a << " (outer "
-                    << fixed((map.rows[i].*line).outer_voltage / 1e3, 4) << " kV)\n";
+                    << format_fixed_or_dash((map.rows[i].*line).outer_voltage / 1e3, 4) << " kV)\n";
       }
     std::cout << n * m << " map points, " << solves << " equilibrium solves, " << iterations
               << " Newton iterations, " << std::setprecision(3) << seconds << " s on "
-              << mpi.size << (mpi.size == 1 ? " rank" : " ranks") << "\nwrote " << path << '\n';
+              << mpi::size() << (mpi::size() == 1 ? " rank" : " ranks") << "\nwrote " << path << '\n';
     if (no_row_reached)
       {
         std::cerr << "cdea: no layout reached the inner voltage of "

@@ -21,6 +21,7 @@
 #include <cdea/solver/load_stepper.h>
 
 #include <functional>
+#include <istream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -43,6 +44,9 @@ namespace cdea
   /// line per point. '#' starts a comment. Throws InputError naming the file,
   /// line and column.
   CalibrationData read_calibration_data(const std::string &file, unsigned int n_rings);
+  /// The same from @p in (CSV text), named @p name in the messages.
+  CalibrationData read_calibration_data(std::istream &in, const std::string &name,
+                                        unsigned int n_rings);
 
   struct FitSettings
   {

@@ -6,6 +6,11 @@
 // mpi::ensure_initialized() first). Everything else runs without it. This
 // header keeps deal.II's mpi.h out of the files that use it.
 
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
 namespace cdea
 {
   namespace mpi
@@ -27,6 +32,40 @@ namespace cdea
     /// Rank and size in MPI_COMM_WORLD; 0 and 1 while MPI is not initialised.
     unsigned int rank();
     unsigned int size();
+
+    /// Every rank's @p bytes on rank 0, one string per rank in rank order
+    /// (bit for bit); the other ranks get an empty vector. Without MPI, or
+    /// on one rank: {bytes}. Collective.
+    std::vector<std::string> gather_bytes(const std::string &bytes);
+
+    /// Rank 0's @p value on every rank (nothing to do without MPI or on one
+    /// rank). Collective.
+    void broadcast(int &value);
+
+    /// Counts that the other ranks send to rank 0 while they work (progress),
+    /// without waiting for rank 0 to take them. Tagged with @p tag.
+    class CountChannel
+    {
+    public:
+      explicit CountChannel(int tag);
+      ~CountChannel();
+      CountChannel(const CountChannel &)            = delete;
+      CountChannel &operator=(const CountChannel &) = delete;
+
+      /// Not on rank 0: send @p count to rank 0 and return at once.
+      void send(std::uint64_t count);
+      /// Not on rank 0: wait until every count sent has left.
+      void wait_for_sends();
+      /// On rank 0: a count that has arrived from any rank, if there is one.
+      bool try_receive(std::uint64_t &count);
+      /// On rank 0: the next count from any rank (waits for it).
+      std::uint64_t receive();
+
+    private:
+      struct Pending; ///< the buffers and requests of the sends under way
+      const int                tag;
+      std::unique_ptr<Pending> pending;
+    };
   } // namespace mpi
 
   /// Kept by main() (and by test and benchmark programs) for the lifetime of

@@ -181,9 +181,20 @@ namespace cdea
     double                   seconds = 0.;
   };
 
-  /// The best start: the largest objective among those whose best layout is
-  /// feasible, else the least infeasible one.
+  /// The best start: among the converged starts (else the feasible ones),
+  /// those with the largest objective to a relative 1e-7, and of these the
+  /// one with the smallest constraint violation (largest scaled constraint
+  /// value, if positive), then the smallest
+  /// first-order residual; if none is feasible, the least infeasible one.
   unsigned int best_start(const std::vector<StartResult> &starts);
+
+  /// Every start of @p settings (under mpirun: dealt round-robin to the
+  /// ranks, gathered on rank 0, where the best is chosen), told about every
+  /// evaluation and every finished start of this rank. No output.
+  OptimizationRun optimize_layouts(const Parameters &p, const Scene &base,
+                                   const OptimizationSettings &settings,
+                                   const std::function<void(const HistoryRow &)>  &on_evaluation = {},
+                                   const std::function<void(const StartResult &)> &on_start = {});
 
   /// <Base name>_optimum.h5 (layout in doc/optimization.md), replaced only
   /// once complete. Throws std::runtime_error naming the file.
@@ -193,9 +204,12 @@ namespace cdea
 
   /// <Base name>_optimum.prm: @p prm_file with the layout as electrodes and
   /// a one-waypoint voltage path by load stepping, which `cdea run` replays
-  /// to the optimum (its results go to <Base name>_optimum_run.h5).
+  /// to the optimum (its results go to <Base name>_optimum_run.h5). A finite
+  /// @p max_field (V/m, the field limit) becomes its Breakdown field, so that
+  /// the replay reports the largest field.
   void write_replay_parameters(const std::string &prm_file, const std::string &path,
-                               const Layout &layout, const std::string &base_name);
+                               const Layout &layout, const std::string &base_name,
+                               double max_field);
 
   /// `cdea optimize FILE.prm`; returns the exit code (0 converged, 2 not
   /// converged: the best layout is still written, 1 bad input).

@@ -46,6 +46,14 @@ namespace cdea
                                 const std::vector<ParameterChange> &changes,
                                 const std::string                  &comment);
 
+  struct Parameters;
+
+  /// The design commands (@p command: "optimize", "fit") work on the
+  /// quasi-static elastic model, whose sensitivities they use: throws
+  /// InputError naming Time/Enabled or Material/Model if the file asks for
+  /// a time run or the viscoelastic law.
+  void require_quasi_static_elastic(const Parameters &p, const std::string &command);
+
   namespace parameters
   {
     struct Optimization
