@@ -5,8 +5,11 @@
 # `cdea run` replays to the same state without wrinkling; with a field limit
 # the replay reports the largest field, at the limit; an optimizer stopped early exits 2
 # with the best layout written; `mpirun -np 2` gives the same file contents;
-# bad input (and a time run) exits 1 with one message naming the parameter and
-# writes nothing.
+# bad input (and a time run, a trailing ',', a voltage above the film's
+# ceiling) exits 1 with one message naming the parameter and writes nothing;
+# an output locked by another run exits 1 at once; no start reaching a layout
+# exits 2 and leaves nothing; SIGTERM stops the starts and writes the best
+# layout so far (exit 2).
 source "$(dirname "$0")/script_helpers.bash"
 
 cat > paper.prm <<'EOF'
@@ -152,6 +155,66 @@ rc=$?
 [ $rc -eq 1 ] && grep -q "Time/Enabled = true is not supported by cdea optimize" timed_err.txt \
   && [ ! -e timed ] && [ "$(wc -l < timed_err.txt)" -le 1 ] \
   && ok "time run refused: $(head -c 110 timed_err.txt)" || fail "time run: exit $rc, $(cat timed_err.txt)"
+for case in "Fixed ring edges (r/a) = 1.5,|Optimization/Fixed ring edges (r/a): empty entry at the end" \
+            "Fixed voltages (kV) = 5, 2000|Optimization/Fixed voltages (kV): 2000 kV is above the voltage ceiling" \
+            "Voltage bounds (kV) = 0, 1e5|Optimization/Voltage bounds (kV): the upper bound 100000 kV is above the voltage ceiling"; do
+  entry=${case%%|*} expect=${case#*|}
+  { sed 's/Directory = out/Directory = range/' paper.prm; printf 'subsection Optimization\n  set %s\nend\n' "$entry"; } > range.prm
+  "$exe" optimize range.prm > range.txt 2> range_err.txt
+  rc=$?
+  [ $rc -eq 1 ] && grep -qF "$expect" range_err.txt && [ ! -e range ] \
+    && ok "refused: $(head -c 120 range_err.txt)" || fail "'$entry': exit $rc, $(cat range_err.txt)"
+done
+
+# Another process holds the output's lock: exit 1 at once, nothing computed.
+mkdir -p locked
+sed 's/Directory = out/Directory = locked/' paper.prm > locked.prm
+flock locked/paper_optimum.h5.lock sleep 30 &
+holder=$!
+sleep 0.3
+"$exe" optimize locked.prm > locked.txt 2> locked_err.txt
+rc=$?
+kill $holder 2> /dev/null; wait $holder 2> /dev/null
+[ $rc -eq 1 ] && grep -q "paper_optimum.h5" locked_err.txt && ! grep -q "Optimum" locked.txt \
+  && [ ! -e locked/paper_optimum.h5 ] && ok "locked output: exit 1 ($(head -c 100 locked_err.txt))" \
+  || fail "locked output: exit $rc, $(cat locked_err.txt)"
+
+# No start reaches a layout (the inner ring far past the fold): exit 2, the
+# output folders the run made are gone again.
+{ sed 's/Directory = out/Directory = unreachable\/deeper/' paper.prm
+  printf 'subsection Optimization\n  set Fixed voltages (kV) = 900, free\n  set Voltage bounds (kV) = 0, 1000\nend\n'; } > unreachable.prm
+"$exe" optimize unreachable.prm > unreachable.txt 2> unreachable_err.txt
+rc=$?
+[ $rc -eq 2 ] && grep -q "no start reached a layout" unreachable_err.txt && [ ! -e unreachable ] \
+  && ok "no start reaches a layout: exit 2, nothing left" \
+  || fail "unreachable: exit $rc, $(ls unreachable 2>&1), $(cat unreachable_err.txt)"
+
+# SIGTERM while the starts run: they stop, the best layout so far is written.
+cat > eight.prm <<'EOF'
+subsection Optimization
+  set Rings  = 8
+  set Starts = 8
+end
+subsection Output
+  set Directory = term
+  set Base name = eight
+end
+EOF
+"$exe" optimize eight.prm > term.txt 2> term_err.txt &
+runner=$!
+for _ in $(seq 200); do grep -q "^ *0 *[0-9]" term.txt 2> /dev/null && break; sleep 0.05; done
+kill -TERM $runner
+wait $runner
+rc=$?
+"$PYTHON" -c "
+import h5py; f = h5py.File('term/eight_optimum.h5', 'r')
+assert len(f.attrs['voltages_kV']) == 8 and f.attrs['converged'] == 0" 2> /dev/null
+readable=$?
+[ $rc -eq 2 ] && grep -q "interrupted by SIGTERM" term_err.txt && [ $readable -eq 0 ] \
+  && [ -z "$(ls term | grep -v '^eight_optimum\.\(h5\|prm\)$')" ] \
+  && ok "SIGTERM: exit 2, the best layout so far written, nothing else left" \
+  || fail "SIGTERM: exit $rc, readable $readable, $(ls term), $(cat term_err.txt)"
+
 touch blocker
 sed 's/Directory = out/Directory = blocker\/sub/' paper.prm > blocked.prm
 "$exe" optimize blocked.prm > blocked.txt 2> blocked_err.txt

@@ -4,17 +4,17 @@
 #include <cdea/app/commands.h>
 #include <cdea/app/fit.h>
 #include <cdea/app/parameters.h>
+#include <cdea/app/run_control.h>
 #include <cdea/format.h>
 #include <cdea/output/hdf5_writer.h>
+#include <cdea/output/safe_files.h>
 
 #include <Eigen/SVD>
 #include <ceres/ceres.h>
 
-#include <unistd.h>
 
 #include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <iomanip>
 #include <iostream>
 
@@ -92,7 +92,8 @@ namespace cdea
           values[j] = q[j] * scale[j];
         if (f)
           f(unsigned(s.iteration), s.cost, values);
-        return ceres::SOLVER_CONTINUE;
+        // SIGINT, SIGTERM (cdea fit): stop with the values reached so far.
+        return StopOnSignals::requested() != 0 ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
       }
 
     private:
@@ -283,16 +284,20 @@ namespace cdea
       }
     const std::string h5_path  = p.results_path("_fit");
     const std::string prm_path = p.output.directory + "/" + p.output.base_name + "_fit.prm";
+    // The output must be writable, and ours alone (a lock on the .h5 file),
+    // before anything is computed.
+    OutputLock lock;
     {
-      std::error_code error;
-      std::filesystem::create_directories(p.output.directory, error);
-      if (error || access(p.output.directory.c_str(), W_OK) != 0)
+      std::string why;
+      if (!claim_output(h5_path, lock, why))
         {
-          std::cerr << "cdea: cannot write results into '" << p.output.directory
-                    << "' (Output/Directory)" << (error ? ": " + error.message() : "") << '\n';
+          std::cerr << "cdea: cannot write '" << h5_path << "': " << why << '\n';
           return exit_input_error;
         }
     }
+    // SIGINT, SIGTERM: the fit stops after its current iteration and writes
+    // the values reached (exit code 2).
+    const StopOnSignals stop_on_signals;
 
     const auto start = std::chrono::steady_clock::now();
     std::cout << "cdea " << CDEA_VERSION << " fit: " << data.size() << " points of " << data_file
@@ -394,10 +399,17 @@ namespace cdea
       }
     catch (const std::exception &e)
       {
-        std::cerr << "cdea: " << e.what() << '\n';
-        return exit_input_error;
+        std::cerr << "cdea: the results cannot be written: " << e.what()
+                  << " (older files of this name stay as they were)\n";
+        return exit_not_complete;
       }
     std::cout << "wrote " << h5_path << (r.fitted.size() ? " and " + prm_path : "") << '\n';
+    if (const int signal = StopOnSignals::requested())
+      {
+        std::cerr << "cdea: interrupted by " << signal_name(signal) << "; the values reached are in "
+                  << h5_path << '\n';
+        return exit_not_complete;
+      }
     if (!r.converged)
       {
         std::cerr << "cdea: the fit did not converge (" << r.status << "); the last values are in "

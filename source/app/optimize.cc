@@ -3,6 +3,7 @@
 // constraints of order one) and the best layout, confirmed by a ramp.
 
 #include <cdea/app/optimize.h>
+#include <cdea/app/run_control.h>
 #include <cdea/format.h>
 
 #include <Eigen/QR>
@@ -316,6 +317,8 @@ namespace cdea
     using Objective = std::function<double(unsigned, const double *, double *)>;
     using Constraint = std::function<void(unsigned, double *, unsigned, const double *, double *)>;
     Objective objective = [&](unsigned, const double *y, double *grad) {
+      if (StopOnSignals::requested() != 0)
+        throw nlopt::forced_stop(); // NLopt returns, with FORCED_STOP
       evaluate_at(y);
       if (!evaluation.ok)
         {
@@ -429,7 +432,7 @@ namespace cdea
           {
             status = opt.last_optimize_result();
           }
-        if (assess(best, evaluator.evaluate(best)).converged)
+        if (StopOnSignals::requested() != 0 || assess(best, evaluator.evaluate(best)).converged)
           break;
       }
     result.status = nlopt_status(status);

@@ -5,13 +5,13 @@
 #include <cdea/app/mpi_session.h>
 #include <cdea/app/optimize.h>
 #include <cdea/app/parameters.h>
+#include <cdea/app/run_control.h>
 #include <cdea/format.h>
+#include <cdea/output/safe_files.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -189,6 +189,10 @@ namespace cdea
     std::vector<StartResult> mine;
     for (unsigned int k = mpi::rank(); k < layouts.size(); k += mpi::size())
       {
+        // After a stop request only a rank's first start runs (and stops at
+        // its first evaluation), so that every rank has a result to gather.
+        if (StopOnSignals::requested() != 0 && !mine.empty())
+          break;
         mine.push_back(optimize_from(base, s, evaluator, k, layouts[k], on_evaluation));
         if (on_start)
           on_start(mine.back());
@@ -223,26 +227,27 @@ namespace cdea
       }
     const std::string h5_path  = p.results_path("_optimum");
     const std::string prm_path = p.output.directory + "/" + p.output.base_name + "_optimum.prm";
-    // The output must be writable before anything is computed (rank 0
-    // writes; the others follow its verdict).
-    int writable = 1;
+    // The output must be writable, and ours alone (a lock on the .h5 file),
+    // before anything is computed; rank 0 writes, the others follow its
+    // verdict. Directories made here go again if nothing is written.
+    int                      writable = 1;
+    OutputLock               lock;
+    std::vector<std::string> created;
     if (root)
       {
-        std::error_code error;
-        std::filesystem::create_directories(p.output.directory, error);
-        std::ofstream probe(prm_path + ".probe");
-        if (error || !probe)
+        std::string why;
+        if (!claim_output(h5_path, lock, why, &created))
           {
-            std::cerr << "cdea: cannot write results into '" << p.output.directory
-                      << "' (Output/Directory)" << (error ? ": " + error.message() : "") << '\n';
+            std::cerr << "cdea: cannot write '" << h5_path << "': " << why << '\n';
             writable = 0;
           }
-        probe.close();
-        std::filesystem::remove(prm_path + ".probe", error);
       }
     mpi::broadcast(writable);
     if (!writable)
       return exit_input_error;
+    // SIGINT, SIGTERM: the starts stop at their next evaluation and the best
+    // layout so far is written (exit code 2).
+    const StopOnSignals stop_on_signals;
 
     const auto start_time = std::chrono::steady_clock::now();
     const auto free       = s.free_parameters();
@@ -303,6 +308,19 @@ namespace cdea
       }
     const StartResult      &best = run.starts[run.best];
     const LayoutEvaluation &e    = best.at_best;
+    const int               signal = StopOnSignals::requested();
+    if (!e.ok)
+      {
+        std::cerr << "cdea: "
+                  << (signal ? "interrupted by " + signal_name(signal) + " before any start "
+                                                                          "reached a layout" :
+                               "no start reached a layout the constraints could be evaluated "
+                               "at (" + best.status + ")")
+                  << "; nothing written\n";
+        lock.release();
+        remove_created_directories(created);
+        return exit_not_complete;
+      }
     std::cout << "\nOptimum (start " << best.start << ", " << (best.converged ? "converged" : "NOT converged")
               << "):\n  ring edges (r/a): " << format_fixed_list(best.best.edges, 4)
               << "\n  voltages (kV):    " << format_fixed_list(best.best.voltages, 4, 1e-3) << std::setprecision(7)
@@ -325,10 +343,17 @@ namespace cdea
       }
     catch (const std::exception &error)
       {
-        std::cerr << "cdea: " << error.what() << '\n';
-        return exit_input_error;
+        std::cerr << "cdea: the results cannot be written: " << error.what()
+                  << " (older files of this name stay as they were)\n";
+        return exit_not_complete;
       }
     std::cout << "wrote " << h5_path << " and " << prm_path << '\n';
+    if (signal)
+      {
+        std::cerr << "cdea: interrupted by " << signal_name(signal)
+                  << "; the best layout found so far is in " << h5_path << '\n';
+        return exit_not_complete;
+      }
     if (!best.converged)
       {
         std::cerr << "cdea: the optimizer stopped without converging (" << best.status

@@ -3,6 +3,7 @@
 
 #include <cdea/app/optimize.h>
 #include <cdea/app/parameters.h>
+#include <cdea/app/validation.h>
 #include <cdea/format.h>
 
 #include <cctype>
@@ -44,6 +45,8 @@ namespace cdea
         }
       if (values.empty())
         throw InputError(name + ": no value given (expected numbers or 'free')");
+      if (trimmed(text).back() == ',') // getline() yields no empty last entry
+        throw InputError(name + ": empty entry at the end of '" + text + "'");
       return values;
     }
 
@@ -127,10 +130,14 @@ namespace cdea
       throw InputError(voltages_name + ": " + std::to_string(voltages.size()) +
                        " entries for " + std::to_string(s.n_rings) +
                        " rings (Optimization/Rings): give one voltage or 'free' per ring");
+    const double ceiling = voltage_ceiling(scene);
     for (double &v : voltages)
       {
         if (v < 0.)
           throw InputError(voltages_name + ": voltages must not be negative, got " + format(v));
+        if (v > ceiling * 1e-3)
+          throw InputError(voltages_name + ": " + format(v) + " kV is above the voltage ceiling "
+                           "of " + format(ceiling * 1e-3) + " kV for this film");
         v *= 1e3;
       }
     s.voltages = voltages;
@@ -163,6 +170,10 @@ namespace cdea
     if (s.voltage_lower < 0.)
       throw InputError(voltage_bounds_name + ": the lower bound must not be negative, got " +
                        format(s.voltage_lower));
+    if (s.voltage_upper > ceiling * 1e-3)
+      throw InputError(voltage_bounds_name + ": the upper bound " + format(s.voltage_upper) +
+                       " kV is above the voltage ceiling of " + format(ceiling * 1e-3) +
+                       " kV for this film");
     s.voltage_lower *= 1e3;
     s.voltage_upper *= 1e3;
 
