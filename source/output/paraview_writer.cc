@@ -246,13 +246,22 @@ namespace cdea
           xml << data.take_xml() << "      </Cells>\n    </Piece>\n";
         }
       xml << "  </UnstructuredGrid>\n  <AppendedData encoding=\"raw\">\n   _";
-      std::ofstream out(path, std::ios::binary);
+      // Written whole, then renamed: a file cut short (full disk) never
+      // takes the name of a step's file.
+      const std::string temporary = path + ".tmp";
+      std::ofstream     out(temporary, std::ios::binary);
       out << xml.str();
       out.write(data.bytes.data(), static_cast<std::streamsize>(data.bytes.size()));
       out << "\n  </AppendedData>\n</VTKFile>\n";
       out.close();
-      if (!out)
-        throw std::runtime_error("cannot write the ParaView file '" + path + "'");
+      std::error_code error;
+      if (out)
+        fs::rename(temporary, path, error);
+      if (!out || error)
+        {
+          fs::remove(temporary, error);
+          throw std::runtime_error("cannot write the ParaView file '" + path + "'");
+        }
     }
   } // namespace
 
@@ -328,14 +337,29 @@ namespace cdea
 
   void ParaViewWriter::finish()
   {
-    std::error_code error;
-    fs::remove_all(folder(false), error);
+    // The older output is set aside, not removed, until the new one is in
+    // place; if the new one cannot be moved in, the older one goes back.
+    const std::string older = stem + "_vtu.older";
+    std::error_code   error;
+    if (!fs::is_directory(folder(true), error))
+      throw std::runtime_error("cannot move the ParaView files to '" + folder(false) +
+                               "': the folder '" + folder(true) + "' is gone");
+    fs::remove_all(older, error);
+    const bool had_older = fs::exists(folder(false), error);
+    if (had_older)
+      fs::rename(folder(false), older, error);
     if (!error)
       fs::rename(folder(true), folder(false), error);
     if (error)
-      throw std::runtime_error("cannot move the ParaView files to '" + folder(false) +
-                               "': " + error.message());
+      {
+        const std::string reason = error.message();
+        if (had_older && !fs::exists(folder(false), error))
+          fs::rename(older, folder(false), error);
+        throw std::runtime_error("cannot move the ParaView files to '" + folder(false) +
+                                 "': " + reason + " (they stay in '" + folder(true) + "')");
+      }
     write_collection(stem + ".pvd", fs::path(folder(false)).filename().string());
     fs::remove(stem + ".partial.pvd", error);
+    fs::remove_all(older, error);
   }
 } // namespace cdea
