@@ -153,9 +153,11 @@ namespace cdea
     /// a record cut short at the end (a kill or a full disk during its
     /// write) rather than damage with more records behind it: too few bytes
     /// for a frame, a length reaching past the end that a record of this
-    /// journal could have, or a record ending exactly at the end.
+    /// journal could have (about the size of its step records, or of a step
+    /// of at most 1e5 samples before the first), or a record ending exactly
+    /// at the end.
     bool torn_last_record(const std::string &data, const std::size_t at,
-                          const std::size_t largest_record)
+                          const std::size_t largest_step)
     {
       const std::size_t left = data.size() - at;
       if (left < frame)
@@ -165,8 +167,9 @@ namespace cdea
       const unsigned char type = static_cast<unsigned char>(data[at]);
       if (type < start_record || type > summary_attribute_record)
         return false;
+      constexpr std::size_t megabyte = std::size_t(1) << 20;
       if (left - frame < length)
-        return length <= 2 * largest_record + (std::size_t(1) << 20);
+        return length <= (largest_step > 0 ? 2 * largest_step : 16 * megabyte) + megabyte;
       return left - frame == length;
     }
 
@@ -186,7 +189,7 @@ namespace cdea
           parsed.dropped_bytes = data.size();
           return parsed;
         }
-      std::size_t at = sizeof(magic), largest = 0;
+      std::size_t at = sizeof(magic), largest_step = 0;
       while (data.size() - at >= frame)
         {
           std::uint32_t length = 0, crc = 0;
@@ -198,11 +201,12 @@ namespace cdea
             break;
           parsed.records.push_back(
             {static_cast<unsigned char>(data[at]), data.substr(at + 5, length)});
-          largest = std::max<std::size_t>(largest, length);
+          if (data[at] == char(append_record))
+            largest_step = std::max<std::size_t>(largest_step, length);
           at += frame + length;
         }
       parsed.dropped_bytes = data.size() - at;
-      if (at < data.size() && !torn_last_record(data, at, largest))
+      if (at < data.size() && !torn_last_record(data, at, largest_step))
         parsed.damaged_at = at;
       return parsed;
     }
