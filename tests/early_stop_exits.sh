@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# Arc-length continuation stops early with exit 2 (README: exit 2 means the
-# run stopped before the end of its path, every converged step in the file):
-# when the dead load alone is past Max displacement, and when Max arc-length
-# steps runs out. (The stepping check "the load parameter cannot advance"
-# of the load stepper is not reached here: after validation it needs a path
-# of about 1e5 waypoints, so that t's resolution exceeds the smallest
-# increment, and a run of minutes; it is a guard, not a tested path.)
+# Early stops exit 2 with the converged steps in the file (README: exit 2
+# means the run stopped before the end of its path): arc-length continuation
+# when the dead load alone is past Max displacement and when Max arc-length
+# steps runs out; load stepping past the fold of a 20 kV path with cut-backs
+# allowed below the resolution of t, which reaches the stepper's check "the
+# load parameter cannot advance" (a step that cannot change t is an error,
+# not a loop).
 source "$(dirname "$0")/script_helpers.bash"
 
 # arc NAME "extra Solver lines" [MASS]
@@ -33,5 +33,17 @@ n=$(rows out-few/default.h5)
 if [ $rc -eq 2 ] && grep -q "Max arc-length steps reached" few.out few.err && [ "$n" -ge 3 ]; then
   ok "Max arc-length steps = 3: exit 2, $n steps in the file"
 else fail "Max arc-length steps = 3: exit $rc, $n steps, $(cat few.err)"; fi
+
+# Load stepping past the fold, 100 cut-backs, no smallest increment.
+sed -e 's|set Directory           = results|set Directory           = out-stuck|' \
+    -e 's/set Voltage path (kV)   = 5/set Voltage path (kV)   = 20/' "$src/prm/default.prm" > stuck.prm
+printf 'subsection Solver\n  set Max cutbacks = 100\n  set Min voltage increment (kV) = 1e-300\nend\n' >> stuck.prm
+timeout 120 "$exe" run stuck.prm > stuck.out 2> stuck.err
+rc=$?
+n=$(rows out-stuck/default.h5)
+if [ $rc -eq 2 ] && grep -q "the load parameter cannot advance beyond t = 0.33" stuck.err \
+   && [ "$n" -ge 50 ]; then
+  ok "t cannot advance: exit 2, $n steps: $(head -c 160 stuck.err)"
+else fail "t cannot advance: exit $rc, $n steps, $(cat stuck.err)"; fi
 
 finish
