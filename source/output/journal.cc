@@ -379,7 +379,7 @@ namespace cdea
   }
 
   JournalReplay replay_journal(const std::string &path, const std::string &name,
-                               const unsigned int max_steps, const StepObserver &after_step)
+                               const unsigned int max_steps)
   {
     const Parsed  parsed = read_records(path);
     JournalReplay replay;
@@ -436,8 +436,6 @@ namespace cdea
                       }
                     replay.document->append(summary, fields, extra);
                     ++replay.steps;
-                    if (after_step && !after_step(*replay.document, replay.steps))
-                      return replay;
                     break;
                   }
                 case onset_record:
@@ -472,19 +470,5 @@ namespace cdea
         throw OutputError("the journal " + path + " cannot be replayed: " + e.what());
       }
     return replay;
-  }
-
-  unsigned int journal_steps_within(const std::string &path, const std::size_t max_bytes)
-  {
-    // One pass: the image after each step, until it no longer fits (image
-    // sizes grow with the steps).
-    unsigned int fitting = 0;
-    replay_journal(path, path, UINT_MAX, [&](const ResultsDocument &document, unsigned int steps) {
-      if (document.image_size() > max_bytes)
-        return false;
-      fitting = steps;
-      return true;
-    });
-    return fitting;
   }
 } // namespace cdea

@@ -265,7 +265,8 @@ namespace cdea
                                  "' vanished during the run; it was created again for the " +
                                  "results");
           }
-        const WriteOutcome out = replace_file(target, document->image(), true);
+        const std::size_t  full_size = document->image_size();
+        const WriteOutcome out       = replace_file(target, document->image(), true);
         if (out.ok)
           {
             f.written       = true;
@@ -285,13 +286,15 @@ namespace cdea
             // What fits: the leading steps whose file is no larger than what
             // could be written. The journal keeps all of them.
             const std::string journal_path = journal_of(file_path);
-            if (n >= 1000) // about a second per 2000 steps: say why the program waits
+            if (n >= 1000) // a rebuild takes about a second per 1000 steps: say why it waits
               std::cerr << "cdea: " << target << " does not fit (" << out.message
                         << "): finding how many of the " << n << " steps fit..." << std::endl;
-            // The estimate (images measured as the journal is replayed) can
-            // be a little off the image written: fewer steps until it fits.
-            unsigned int k = journal_steps_within(journal_path, out.written);
-            for (int attempt = 0; k > 0 && attempt < 5; ++attempt)
+            // Image sizes grow about linearly with the steps: estimate from
+            // the whole image, then fewer steps until the image fits (each
+            // try is one replay of the journal, so this is linear in n).
+            unsigned int k = static_cast<unsigned int>(
+              std::min<double>(n, double(n) * double(out.written) / double(full_size)));
+            for (int attempt = 0; k > 0 && attempt < 8; ++attempt)
               {
                 JournalReplay part = replay_journal(journal_path, file_path, k);
                 part.document->set_root_attribute(
@@ -302,7 +305,9 @@ namespace cdea
                   image.size() <= out.written ? replace_file(target, image, true) : WriteOutcome();
                 if (!fit.ok)
                   {
-                    k = std::min(k - 1, static_cast<unsigned int>(double(k) * double(out.written) /
+                    const double room =
+                      double(image.size() <= out.written ? fit.written : out.written);
+                    k = std::min(k - 1, static_cast<unsigned int>(double(k) * room /
                                                                   double(image.size())));
                     continue;
                   }

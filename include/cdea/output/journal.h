@@ -14,7 +14,6 @@
 
 #include <climits>
 #include <cstddef>
-#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -75,14 +74,7 @@ namespace cdea
   /// Replays the journal at @p path into a new document named @p name, with
   /// at most @p max_steps steps (the records after the last step kept are
   /// left out too). Throws OutputError if the journal cannot be read.
-  /// Called after each step replayed with the document and its number of
-  /// steps; returning false ends the replay there.
-  using StepObserver = std::function<bool(const ResultsDocument &, unsigned int)>;
   JournalReplay replay_journal(const std::string &path, const std::string &name,
-                               unsigned int max_steps = UINT_MAX,
-                               const StepObserver &after_step = {});
+                               unsigned int max_steps = UINT_MAX);
 
-  /// The most leading steps of the journal whose file image takes at most
-  /// @p max_bytes (for writing what fits after a write failure).
-  unsigned int journal_steps_within(const std::string &path, std::size_t max_bytes);
 } // namespace cdea
