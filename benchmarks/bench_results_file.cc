@@ -1,10 +1,10 @@
 // Cost of crash-safe results (doc/usage.md, "What survives what"): per step,
 // the journal record and the in-memory HDF5 append; the checkpoint and the
 // final file (written whole, fsync, rename) as the file grows; rebuilding a
-// file from its journal. Steps shaped like the default run's (17 samples,
+// file from its journal. Steps shaped like the default run's (65 samples,
 // one ring, the 8 extra columns of cdea run). Medians of 5 repetitions.
 //
-//   build/benchmarks/bench_results_file [STEPS]
+//   build/benchmarks/bench_results_file [STEPS [SAMPLES]]
 
 #include <cdea/output/journal.h>
 #include <cdea/output/results_document.h>
@@ -43,10 +43,13 @@ namespace
     return s;
   }
 
+  /// Samples per step: the default run's (prm/default.prm) unless given.
+  unsigned int samples = 65;
+
   cdea::StepFields fields(const unsigned int i)
   {
     cdea::StepFields f;
-    for (unsigned int j = 0; j < 17; ++j)
+    for (unsigned int j = 0; j < samples; ++j)
       {
         for (auto *v : {&f.R, &f.r, &f.z, &f.theta, &f.lambda1, &f.lambda2, &f.s1, &f.s2, &f.E,
                         &f.Phi})
@@ -66,6 +69,8 @@ int main(int argc, char **argv)
 {
   namespace fs          = std::filesystem;
   const unsigned int n  = argc > 1 ? std::atoi(argv[1]) : 5000;
+  if (argc > 2)
+    samples = static_cast<unsigned int>(std::atoi(argv[2]));
   const fs::path     out = fs::temp_directory_path() / "cdea_bench_results_file";
   fs::remove_all(out);
   fs::create_directories(out);
@@ -125,7 +130,7 @@ int main(int argc, char **argv)
       fs::create_directories(out);
     }
   using cdea_bench::median;
-  std::printf("%u steps of 17 samples, medians of 5 repetitions\n", n);
+  std::printf("%u steps of %u samples, medians of 5 repetitions\n", n, samples);
   std::printf("  append (journal + in-memory HDF5)   %8.1f us per step\n", median(append_us));
   std::printf("    of it the journal record          %8.1f us\n", median(journal_us));
   std::printf("    of it the in-memory HDF5          %8.1f us\n", median(document_us));

@@ -25,8 +25,8 @@ last() {
   echo "  $2 $1: exit $rc, last step: $(grep -E '^ +[0-9]+ +(pre-stretch|voltage) ' "$1.out" | tail -1 | awk '{print "t =", $3, " V =", $4, "kV  disp =", $5, "mm  min s2/mu =", $8}')"
   [ $rc -eq 0 ] || echo "    $(head -1 "$1.err" | cut -c1-330)"
 }
-at() { # NAME KV: displacement at that voltage
-  grep -E "^ +[0-9]+ +voltage +[0-9.]+ +$2 " "$1.out" | head -1 | awk '{print $5}'
+at() { # NAME KV: displacement at the last step at or below that voltage, and its voltage
+  grep -E "^ +[0-9]+ +voltage " "$1.out" | awk -v kv="$2" '$4 <= kv + 0 {d = $5; v = $4} END {print d, "mm (at", v, "kV)"}'
 }
 
 echo "1. Jlim = 9.53 with pre-stretch 2.5 (I1 - 3 = 9.5256 in the pre-stretched film)"
@@ -47,4 +47,4 @@ scene p90-relaxed "$q" "" relaxed; last p90-relaxed run
 scene p90 "$q";              last p90 shoot
 scene p90-fe "$q"; "$exe" run p90-fe.prm > p90-fe.out 2> /dev/null
 echo "  loss of tension (FE): $(grep -m1 'loss of tension' p90-fe.out | sed 's/^ *//')"
-echo "  displacement at 23.750 kV: FE $(at p90-fe 23.750) mm, shooting $(at p90 23.750) mm"
+echo "  displacement at 23.750 kV: FE $(at p90-fe 23.750), shooting $(at p90 23.750)"

@@ -5,17 +5,20 @@ replaced by an extreme, malformed or huge one, a line deleted, repeated,
 swapped or cut, bytes inserted, a separator added), and runs `cdea run` (or
 now and then `cdea shoot`) on it in a directory of its own, for at most
 LIMIT seconds; a run still going then gets SIGINT and must stop within GRACE
-seconds at its next step. A case fails on
+seconds at its next step. A sweep file (prm/sweep*.prm) is mostly given to
+`cdea sweep`, its map cut to 2 x 2 points after the mutations (so that a
+case takes seconds): a sweep has SWEEP_LIMIT seconds and no SIGINT, and one
+still going then is a hang. A case fails on
   - a crash (exit by a signal, but for our SIGINT before the first step or
     after the results file was written) or an exit code other than 0, 1, 2;
   - a hang: no exit GRACE seconds after SIGINT, or the last 20 printed steps
-    all at the same load (no progress);
+    all at the same load (no progress), or a sweep over SWEEP_LIMIT seconds;
   - a deal.II stack trace or an uncaught exception on stderr, or more than
     20 kB of it;
   - anything left in the directory after exit 1 but the input;
   - after exit 0 or 2: no readable results file, or a journal, lock or
     checkpoint left behind.
-Usage: fuzz_prm.py CDEA_EXECUTABLE SOURCE_DIR CASES SEED [WORKERS] [LIMIT]
+Usage: fuzz_prm.py CDEA_EXECUTABLE SOURCE_DIR CASES SEED [WORKERS] [LIMIT] [SWEEP_LIMIT]
 (CASES: a count, or case numbers separated by ',' to rerun those)
 Failing inputs are kept in ./fuzz-failures/.
 """
@@ -41,6 +44,10 @@ cases = len(selected) if selected else int(sys.argv[3])
 workers = int(sys.argv[5]) if len(sys.argv) > 5 else 2
 limit = float(sys.argv[6]) if len(sys.argv) > 6 else 2.0
 grace = 20.0
+sweep_limit = float(sys.argv[7]) if len(sys.argv) > 7 else 300.0
+# Appended to a sweep case after its mutations: a 2 x 2 map (the later entry wins).
+SMALL_MAP = (b"\nsubsection Sweep\n  set Ring edge values (r/a) = 1.5, 2\n"
+             b"  set Outer voltage range (kV) = 5, 5.5, 0.5\nend\n")
 inputs = sorted(glob.glob(os.path.join(src, "prm", "*.prm")))
 texts = {os.path.basename(p): open(p, "rb").read() for p in inputs}
 
@@ -104,6 +111,9 @@ def run_case(index):
     name = rng.choice(sorted(texts))
     data, what = mutate(rng, texts[name])
     command = "shoot" if rng.random() < 0.15 else "run"
+    if name.startswith("sweep") and rng.random() < 0.7:
+        command = "sweep"
+        data += SMALL_MAP
     work = tempfile.mkdtemp(prefix="cdea-fuzz-")
     with open(os.path.join(work, "case.prm"), "wb") as f:
         f.write(data)
@@ -116,16 +126,22 @@ def run_case(index):
                              preexec_fn=lambda: [signal.signal(s, signal.SIG_DFL)
                                                  for s in (signal.SIGINT, signal.SIGTERM)])
         try:
-            rc = p.wait(timeout=limit)
+            rc = p.wait(timeout=sweep_limit if command == "sweep" else limit)
         except subprocess.TimeoutExpired:
-            p.send_signal(signal.SIGINT)
-            outcome = "interrupted "
-            try:
-                rc = p.wait(timeout=grace)
-            except subprocess.TimeoutExpired:
+            if command == "sweep":
                 p.kill()
                 rc = p.wait()
-                problems.append(f"hang: still running {grace} s after SIGINT")
+                problems.append(f"hang: the sweep of a 2 x 2 map still ran after {sweep_limit} s")
+                outcome = "killed "
+            else:
+                p.send_signal(signal.SIGINT)
+                outcome = "interrupted "
+                try:
+                    rc = p.wait(timeout=grace)
+                except subprocess.TimeoutExpired:
+                    p.kill()
+                    rc = p.wait()
+                    problems.append(f"hang: still running {grace} s after SIGINT")
     seconds = time.monotonic() - start
     stdout = open(os.path.join(work, "out.log"), "rb").read()
     stderr = open(os.path.join(work, "err.log"), "rb").read()
@@ -133,7 +149,7 @@ def run_case(index):
     finished = RESULTS.search(stdout) is not None
     if rc == -signal.SIGINT and outcome and (not steps or finished):
         pass  # our SIGINT came before the run started or after its file was written
-    elif rc < 0:
+    elif rc < 0 and outcome != "killed ":
         problems.append(f"crash: killed by {signal.Signals(-rc).name}")
     elif rc not in (0, 1, 2):
         problems.append(f"exit code {rc}")
@@ -143,6 +159,11 @@ def run_case(index):
         problems.append(f"{len(stderr)} bytes on stderr")
     if outcome and len(steps) >= 20 and len(set(steps[-20:])) == 1:
         problems.append("no progress: the last 20 steps are at the same load")
+    if command == "sweep" and rc in (0, 2) and not outcome:
+        for root, _, files in os.walk(work):
+            for f in files:
+                if f.endswith((".lock", ".journal", ".tmp")):
+                    problems.append(f"sweep left {f} behind")
     left = sorted(set(os.listdir(work)) - {"case.prm", "out.log", "err.log"})
     if rc == 1 and left:
         problems.append(f"exit 1 left {left} behind")

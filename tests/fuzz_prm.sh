@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Fuzz test (tests/fuzz_prm.py): 500 mutated copies of prm/*.prm, seeded,
 # no crash, hang, stack trace or leftover; each case runs at most 1.5 s before
-# SIGINT. CDEA_FUZZ_CASES, CDEA_FUZZ_SEED and CDEA_FUZZ_LIMIT change the count,
+# SIGINT (a sweep of a 2 x 2 map: at most 300 s, then it is a hang).
+# CDEA_FUZZ_CASES, CDEA_FUZZ_SEED and CDEA_FUZZ_LIMIT change the count,
 # seed and time limit (doc/usage.md quotes 10,000 cases).
 set -u
 work=$(mktemp -d)

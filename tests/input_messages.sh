@@ -44,8 +44,14 @@ text = open(sys.argv[1]).read()
 mega = "7" * 1000000 + "x"
 open("mega-path.in", "w").write(text.replace("Voltage path (kV)   = 5", "Voltage path (kV)   = " + mega))
 open("mega-mass.in", "w").write(text.replace("Mass (g)            = 280", "Mass (g)            = " + mega))
+# 300,001 equal waypoints: at least one step each, past the in-memory cap
+repeated = "; ".join(["5"] * 300001) + " x"
+open("repeated.in", "w").write(text.replace("Voltage path (kV)   = 5", "Voltage path (kV)   = " + repeated))
 PY
+bad repeated-waypoints 's/ x$//' "the results of at least 300025 steps" repeated.in
 bad mega-value      's/x/x/' "Electrodes/Voltage path (kV): '777777" mega-path.in
+[ "$(grep -o "characters\]" mega-value.err | wc -l)" -eq 1 ] && ok "mega-value: the value echoed once" \
+  || fail "mega-value: the value is echoed $(grep -o "characters\]" mega-value.err | wc -l) times"
 bad mega-pattern    's/x/x/' "Mass (g)" mega-mass.in
 sed -e 's|set Directory           = results|set Directory           = out-steps|' "$src/prm/default.prm" > steps.prm
 printf 'subsection Solver\n  set Voltage increment (kV) = 1e-8\n  set Min voltage increment (kV) = 1e-9\nend\n' >> steps.prm
@@ -69,6 +75,12 @@ sed -e 's/set Ring edge values (r\/a)   = 1.2, 1.25, ..., 2.6/set Ring edge valu
 "$exe" sweep sweep-trailing.prm > /dev/null 2> sweep-trailing.err
 [ $? -eq 1 ] && grep -q "Sweep/Ring edge values (r/a): empty entry at the end of" sweep-trailing.err && [ ! -e out-sweep ] \
   && ok "sweep: $(cat sweep-trailing.err)" || fail "sweep trailing separator: $(cat sweep-trailing.err)"
+# ... and run refuses the same file with the same message (every command checks
+# the Sweep lists).
+timeout 60 "$exe" run sweep-trailing.prm > /dev/null 2> run-trailing.err
+[ $? -eq 1 ] && cmp -s sweep-trailing.err run-trailing.err && [ ! -e out-sweep ] \
+  && ok "run: the same verdict: $(cat run-trailing.err)" \
+  || fail "run on the sweep file with a trailing ',': $(cat run-trailing.err)"
 
 # Step table: t >= 1000 keeps a blank before it (1005 waypoints at 1 kV).
 path=$(printf '1; %.0s' $(seq 1005))1

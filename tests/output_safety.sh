@@ -25,6 +25,17 @@ prm short.prm 0.25
 prm long.prm 0.003
 prm other.prm 0.003 281
 prm verylong.prm 0.0002 # 25,000 steps: still running when the second run starts
+# bounded_wait PID: its exit code; killed (exit 137) if it runs over 300 s
+bounded_wait() {
+  local state
+  for _ in $(seq 3000); do
+    state=$(ps -o stat= -p "$1" 2> /dev/null)
+    case "$state" in "" | Z*) break ;; esac # ended (a zombie until waited for)
+    sleep 0.1
+  done
+  kill -KILL "$1" 2> /dev/null
+  wait "$1"
+}
 steps_printed() { grep -cE '^ +[0-9]+ +(pre-stretch|dead load|voltage) ' "$1"; }
 wait_for_steps() { # FILE N: until N step lines are printed (at most 20 s)
   for _ in $(seq 200); do [ "$(steps_printed "$1")" -ge "$2" ] && return 0; sleep 0.1; done
@@ -59,7 +70,7 @@ if [ $rc -eq 1 ] && grep -q "another cdea process (pid $first) is writing out/lo
   ok "second writer refused with exit 1 in $took s: $(cat b.err)"
 else fail "second writer: exit $rc, $(cat b.err)"; fi
 # (On a busy machine the first may have ended meanwhile: exit 0.)
-kill -INT $first 2> /dev/null; wait $first; rc=$?
+kill -INT $first 2> /dev/null; bounded_wait $first; rc=$?
 if { [ $rc -eq 0 ] || { [ $rc -eq 2 ] && grep -q interrupted a.err; }; } &&
    h5check out/long.h5 "$(steps_printed a.out)" 280 > /dev/null; then
   ok "the first run (exit $rc) has its own $(steps_printed a.out) steps (mass 280 g)"
@@ -68,7 +79,7 @@ else fail "first run after the refused second: exit $rc, $(cat a.err)"; fi
 rm -rf out
 "$exe" run long.prm > c1.out 2> c1.err & p1=$!
 "$exe" run other.prm > c2.out 2> c2.err & p2=$!
-wait $p1; r1=$?; wait $p2; r2=$?
+bounded_wait $p1; r1=$?; bounded_wait $p2; r2=$?
 # (On a busy machine one may start only after the other ended: both exit 0,
 # and the file is the later one's.)
 case "$r1$r2" in
@@ -87,7 +98,7 @@ rm -rf out
 "$exe" run short.prm > /dev/null 2>&1
 old=$(sha256sum < out/long.h5)
 "$exe" run other.prm > k.out 2> k.err & pid=$!
-wait_for_steps k.out 3; kill -KILL $pid; wait $pid 2> /dev/null
+wait_for_steps k.out 3; kill -KILL $pid; bounded_wait $pid 2> /dev/null
 [ "$(sha256sum < out/long.h5)" = "$old" ] && [ -e out/long.h5.journal ] \
   && ok "re-run killed after $(steps_printed k.out) steps: older file unchanged, journal kept" \
   || fail "re-run killed early changed the older file ($(ls out))"
@@ -100,7 +111,7 @@ else fail "the next run: $(cat n.err) $(ls out)"; fi
 #    directory created again, the message says so.
 rm -rf out
 "$exe" run long.prm > v.out 2> v.err & pid=$!
-wait_for_steps v.out 50; rm -rf out; wait $pid; rc=$?
+wait_for_steps v.out 50; rm -rf out; bounded_wait $pid; rc=$?
 if [ $rc -eq 2 ] && grep -q "vanished" v.err && rows=$(h5check out/long.h5 "$(steps_printed v.out)"); then
   ok "vanished directory: exit 2, $rows in out/long.h5 again"
 else fail "vanished directory: exit $rc, $(cat v.err)"; fi

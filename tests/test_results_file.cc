@@ -423,6 +423,9 @@ int main()
       const cdea::Recovery r = cdea::recover_results(torn, true);
       check(r.steps == 2, std::string(tear ? "torn" : "corrupted") +
                             " step record dropped: 2 steps recovered (" + r.message + ")");
+      // Damage with a record after it is not taken for the end: the journal stays.
+      check(r.damaged == !tear && fs::exists(journal) == !tear,
+            tear ? "a torn last record: journal removed" : "a damaged record: journal kept");
       const hid_t file = H5Fopen(torn.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
       check(file >= 0 && read_dataset(file, "/summary/stage").dims == std::vector<hsize_t>{2} &&
               H5Lexists(file, "/steps/000001", H5P_DEFAULT) > 0 &&

@@ -188,16 +188,24 @@ namespace cdea
       if (!output)
         return exit_input_error;
       ResultsFile *const file = &output->file();
-      file->write_onset(OnsetRecord());
-
-      LoadStepper stepper(scene, model, stepping_settings(p));
+      LoadStepper        stepper(scene, model, stepping_settings(p));
       add_run_postprocessors(stepper, p, scene);
-      StepRecorder recorder(*file, stepper, scene);
       // ParaView output (Output/ParaView): a VTU per step, moved in place at the end.
       std::unique_ptr<ParaViewWriter> paraview;
-      if (p.output.paraview)
-        paraview = std::make_unique<ParaViewWriter>(path.substr(0, path.size() - 3),
-                                                    p.output.paraview_segments);
+      std::optional<StepRecorder>     recorder_slot;
+      std::vector<LimitPoint>         limits;
+      // Limit points: /summary attributes limit_point_voltage_kV (k x rings)
+      // and limit_point_displacement_mm (k), rewritten as each is found.
+      if (!output->prepare([&] {
+            file->write_onset(OnsetRecord());
+            recorder_slot.emplace(*file, stepper, scene);
+            write_summary_attributes(*file, limit_point_attributes(limits, scene.n_rings()));
+            if (p.output.paraview)
+              paraview = std::make_unique<ParaViewWriter>(path.substr(0, path.size() - 3),
+                                                          p.output.paraview_segments);
+          }))
+        return exit_input_error;
+      StepRecorder &recorder = *recorder_slot;
       stepper.on_step = [&](const StepSummary &s) {
         recorder.step(s);
         if (paraview)
@@ -210,10 +218,6 @@ namespace cdea
                   << ", radius r = " << std::setprecision(6) << onset.radius * 1e3
                   << " mm (r/a = " << onset.radius / scene.disk_radius << ")" << std::endl;
       };
-      // Limit points: /summary attributes limit_point_voltage_kV (k x rings)
-      // and limit_point_displacement_mm (k), rewritten as each is found.
-      std::vector<LimitPoint> limits;
-      write_summary_attributes(*file, limit_point_attributes(limits, scene.n_rings()));
       stepper.on_limit_point = [&](const LimitPoint &limit) {
         limits.push_back(limit);
         write_summary_attributes(*file, limit_point_attributes(limits, scene.n_rings()));
@@ -233,16 +237,27 @@ namespace cdea
       recorder.header();
       const auto start = std::chrono::steady_clock::now();
       // ---- the run: a signal, an output failure or an error stops it ----
-      const RunResult result = output->guard([&] { return stepper.run(); });
+      RunResult    result = output->guard([&] { return stepper.run(); });
       const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
       if (paraview)
-        {
-          paraview->finish();
-          std::cout << "ParaView: " << paraview->n_steps() << " steps in "
-                    << path.substr(0, path.size() - 3) << ".pvd\n";
-        }
+        try
+          {
+            paraview->finish();
+            std::cout << "ParaView: " << paraview->n_steps() << " steps in "
+                      << path.substr(0, path.size() - 3) << ".pvd\n";
+          }
+        catch (const std::exception &e)
+          {
+            // The HDF5 results do not depend on it: the run ends as incomplete.
+            std::cerr << "cdea: the ParaView output is incomplete: " << e.what() << '\n';
+            if (result.completed)
+              {
+                result.completed = false;
+                result.message   = std::string("the ParaView output failed: ") + e.what();
+              }
+          }
 
       const StepSummary &s = recorder.last;
       std::cout << "\nFinal state: voltages " << format_kV(s.voltages) << ", displacement "

@@ -390,7 +390,13 @@ namespace cdea
         used = 0;
       }
     if (used != token.size() || !std::isfinite(value))
-      throw InputError(name + ": '" + token + "' is not a number (in '" + text + "')");
+      {
+        // The whole entry as context only where it adds to the token: a long
+        // token is echoed once.
+        const bool context = text != token && token.size() <= 100;
+        throw InputError(name + ": '" + token + "' is not a number" +
+                         (context ? " (in '" + text + "')" : std::string()));
+      }
     return value;
   }
 
@@ -491,6 +497,13 @@ namespace cdea
       if (!(edges[i] > edges[i - 1]))
         throw InputError(edges_name + ": edges must increase strictly, but " +
                          format(edges[i]) + " follows " + format(edges[i - 1]));
+    // A narrower ring's elements are too short for the Newton update and
+    // residual criteria (relative to a) to resolve it.
+    for (std::size_t i = 1; i < edges.size(); ++i)
+      if (edges[i] - edges[i - 1] < 1e-6)
+        throw InputError(edges_name + ": every ring must be at least 1e-6 (r/a) wide, but the "
+                         "ring from " + format(edges[i - 1]) + " to " + format(edges[i]) +
+                         " is narrower");
     edges.front()           = 1.;
     edges.back()            = b_over_a;
     scene.ring_edges_over_a = edges;

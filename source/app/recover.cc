@@ -28,6 +28,17 @@ namespace cdea
     try
       {
         const Recovery r = recover_results(path, true);
+        if (r.damaged)
+          {
+            // Not everything could be read: the journal stays for a closer look.
+            std::cerr << "cdea: " << r.message << '\n';
+            return exit_not_complete;
+          }
+        if (r.steps == 0)
+          {
+            std::cerr << "cdea: nothing to recover for " << path << ": " << r.message << '\n';
+            return exit_input_error;
+          }
         std::cout << "cdea recover: " << r.message << '\n';
         return exit_success;
       }

@@ -34,6 +34,22 @@ namespace cdea
       throw RunInterrupted(StopOnSignals::requested());
   }
 
+  bool RunOutput::prepare(const std::function<void()> &setup)
+  {
+    try
+      {
+        setup();
+        return true;
+      }
+    catch (const std::exception &e)
+      {
+        results->abandon();
+        std::cerr << "cdea: cannot write results file '" << results->path()
+                  << "': " << one_line_message(e) << " (nothing was written)\n";
+        return false;
+      }
+  }
+
   RunResult RunOutput::guard(const std::function<RunResult()> &run)
   {
     RunResult   result;
@@ -81,6 +97,8 @@ namespace cdea
     if (!result.completed && done.written)
       std::cerr << "cdea: the " << done.steps_written << " converged steps are in " << done.file
                 << '\n';
+    if (!done.written && results->n_steps() == 0)
+      return exit_input_error; // nothing computed and nothing left behind
     const bool all_written = done.written && done.steps_written == results->n_steps();
     return result.completed && all_written ? exit_success : exit_not_complete;
   }

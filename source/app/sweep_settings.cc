@@ -35,6 +35,9 @@ namespace cdea
     double round12(const double x) { return std::round(x * 1e12) / 1e12; }
 
     constexpr std::size_t max_values = 100000;
+    /// Map points (edge values x outer voltages): five doubles each in the rows
+    /// (SweepRow) and again in the file's datasets, so 1e7 take about 1 GB.
+    constexpr double max_map_points = 1e7;
   } // namespace
 
   std::vector<double> expand_value_list(const std::string &text, const std::string &name)
@@ -165,6 +168,13 @@ namespace cdea
     // Land exactly on 'to' when it is on the grid.
     if (std::abs(from + (count - 1.) * step - to) <= 1e-9 * step)
       s.outer_voltages.back() = s.outer_to;
+    const double points = double(s.ring_edge_values.size()) * double(s.outer_voltages.size());
+    if (points > max_map_points)
+      throw InputError("Sweep/Ring edge values (r/a) x Sweep/Outer voltage range (kV): the map "
+                       "would have " + format(points) + " points (" +
+                       std::to_string(s.ring_edge_values.size()) + " x " +
+                       std::to_string(s.outer_voltages.size()) + "), more than the " +
+                       format(max_map_points) + " it may hold in memory");
     return s;
   }
 

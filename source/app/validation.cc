@@ -1,4 +1,5 @@
 #include <cdea/app/parameters.h>
+#include <cdea/app/sweep.h>
 #include <cdea/app/validation.h>
 
 #include <algorithm>
@@ -65,7 +66,9 @@ namespace cdea
           double change = 0.;
           for (std::size_t k = 0; k < waypoint.size(); ++k)
             change = std::max(change, std::abs(waypoint[k] - previous[k]));
-          steps += std::ceil(change / increment);
+          // The stepper takes at least one step per waypoint, also to a
+          // waypoint equal to the one before.
+          steps += std::max(1., std::ceil(change / increment));
           previous = waypoint;
         }
       return steps;
@@ -121,6 +124,9 @@ namespace cdea
         for (const double kV : parse_number_list(waypoint, "Electrodes/Voltage path (kV)"))
           check_voltage(kV, ceiling, "Electrodes/Voltage path (kV)");
     }
+    // The Sweep lists' syntax is checked for every command, so that a file
+    // is refused (or accepted) by run and sweep alike.
+    expand_value_list(p.sweep.ring_edge_values_text, "Sweep/Ring edge values (r/a)");
     check_voltage(p.sweep.inner_voltage_kV, ceiling, "Sweep/Inner voltage (kV)");
     {
       const auto range = parse_number_list(p.sweep.outer_voltage_range_text,
@@ -132,8 +138,11 @@ namespace cdea
                   "Solver/Breakdown field (MV/m)", " (0: off)");
 
     // Solver settings.
-    require_range(p.solver.residual_tolerance, 1e-300, 0.1, "Solver/Residual tolerance", "");
-    require_range(p.solver.update_tolerance, 1e-300, 0.1, "Solver/Update tolerance", "");
+    // Relative criteria: below about 100 double roundoffs Newton cannot get there.
+    require_range(p.solver.residual_tolerance, 1e-14, 0.1, "Solver/Residual tolerance",
+                  " (relative; rounding keeps the residual above about 1e-14)");
+    require_range(p.solver.update_tolerance, 1e-14, 0.1, "Solver/Update tolerance",
+                  " (relative; rounding keeps the update above about 1e-14)");
     require_range(p.solver.voltage_increment_kV, 1e-8, ceiling * 1e-3,
                   "Solver/Voltage increment (kV)", " (up to the voltage ceiling)");
     require_range(p.solver.max_displacement_mm, 0., hi_dimensional,

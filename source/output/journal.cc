@@ -2,8 +2,10 @@
 #include <cdea/output/safe_files.h>
 
 #include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstdint>
@@ -142,7 +144,34 @@ namespace cdea
     {
       std::vector<Record> records;
       std::size_t         dropped_bytes = 0;
+      std::size_t         damaged_at    = no_damage;
     };
+
+    constexpr std::size_t frame = 1 + 4 + 4; // type, length, CRC
+
+    /// Whether the bytes from @p at on, which do not hold a valid record, are
+    /// a record cut short at the end (a kill or a full disk during its
+    /// write) rather than damage with more records behind it: too few bytes
+    /// for a frame, a length reaching past the end that a record of this
+    /// journal could have (about the size of its step records, or of a step
+    /// of at most 1e5 samples before the first), or a record ending exactly
+    /// at the end.
+    bool torn_last_record(const std::string &data, const std::size_t at,
+                          const std::size_t largest_step)
+    {
+      const std::size_t left = data.size() - at;
+      if (left < frame)
+        return true;
+      std::uint32_t length = 0;
+      std::memcpy(&length, data.data() + at + 1, 4);
+      const unsigned char type = static_cast<unsigned char>(data[at]);
+      if (type < start_record || type > summary_attribute_record)
+        return false;
+      constexpr std::size_t megabyte = std::size_t(1) << 20;
+      if (left - frame < length)
+        return length <= (largest_step > 0 ? 2 * largest_step : 16 * megabyte) + megabyte;
+      return left - frame == length;
+    }
 
     Parsed read_records(const std::string &path)
     {
@@ -160,8 +189,7 @@ namespace cdea
           parsed.dropped_bytes = data.size();
           return parsed;
         }
-      constexpr std::size_t frame = 1 + 4 + 4; // type, length, CRC
-      std::size_t           at    = sizeof(magic);
+      std::size_t at = sizeof(magic), largest_step = 0;
       while (data.size() - at >= frame)
         {
           std::uint32_t length = 0, crc = 0;
@@ -173,9 +201,13 @@ namespace cdea
             break;
           parsed.records.push_back(
             {static_cast<unsigned char>(data[at]), data.substr(at + 5, length)});
+          if (data[at] == char(append_record))
+            largest_step = std::max<std::size_t>(largest_step, length);
           at += frame + length;
         }
       parsed.dropped_bytes = data.size() - at;
+      if (at < data.size() && !torn_last_record(data, at, largest_step))
+        parsed.damaged_at = at;
       return parsed;
     }
 
@@ -231,9 +263,20 @@ namespace cdea
   {
     close();
     file = path;
-    fd   = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd < 0)
+    // The flock, held while the journal is open, tells others this journal
+    // is live (recover_results() never touches a locked one); it is taken
+    // before the journal is emptied.
+    const int f = ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
+    if (f < 0)
       throw OutputError("cannot create the journal " + path + ": " + std::strerror(errno));
+    if (::flock(f, LOCK_EX | LOCK_NB) != 0)
+      {
+        ::close(f);
+        throw OutputError("another cdea process is writing the journal " + path);
+      }
+    fd = f;
+    if (::ftruncate(fd, 0) != 0)
+      throw OutputError("cannot empty the journal " + path + ": " + std::strerror(errno));
     bytes = 0;
     Encoder out;
     out.bytes.assign(magic, sizeof(magic));
@@ -341,6 +384,7 @@ namespace cdea
     const Parsed  parsed = read_records(path);
     JournalReplay replay;
     replay.dropped_bytes = parsed.dropped_bytes;
+    replay.damaged_at    = parsed.damaged_at;
     for (const Record &r : parsed.records)
       replay.journal_steps += r.type == append_record;
     if (parsed.records.empty() || parsed.records.front().type != start_record)
@@ -426,26 +470,5 @@ namespace cdea
         throw OutputError("the journal " + path + " cannot be replayed: " + e.what());
       }
     return replay;
-  }
-
-  unsigned int journal_steps_within(const std::string &path, const std::size_t max_bytes)
-  {
-    // Image sizes grow with the steps: bisect on the number of steps.
-    const JournalReplay all = replay_journal(path, path);
-    if (!all.document)
-      return 0;
-    if (all.document->image_size() <= max_bytes)
-      return all.steps;
-    unsigned int lo = 0, hi = all.steps; // image(lo) fits (or lo = 0), image(hi) does not
-    while (hi - lo > 1)
-      {
-        const unsigned int mid = lo + (hi - lo) / 2;
-        const auto         r   = replay_journal(path, path, mid);
-        if (r.document->image_size() <= max_bytes)
-          lo = mid;
-        else
-          hi = mid;
-      }
-    return lo;
   }
 } // namespace cdea

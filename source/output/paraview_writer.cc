@@ -250,7 +250,9 @@ namespace cdea
       std::vector<char> file(head.begin(), head.end());
       file.insert(file.end(), data.bytes.begin(), data.bytes.end());
       file.insert(file.end(), tail.begin(), tail.end());
-      // Not synced: a step's file is written again if the run is repeated.
+      // Written whole, then renamed (replace_file): a file cut short (full
+      // disk) never takes the name of a step's file. Not synced: a step's
+      // file is written again if the run is repeated.
       const WriteOutcome out = replace_file(path, file, false);
       if (!out.ok)
         throw std::runtime_error("cannot write the ParaView file '" + path + "': " + out.message);
@@ -327,14 +329,29 @@ namespace cdea
 
   void ParaViewWriter::finish()
   {
-    std::error_code error;
-    fs::remove_all(folder(false), error);
+    // The older output is set aside, not removed, until the new one is in
+    // place; if the new one cannot be moved in, the older one goes back.
+    const std::string older = stem + "_vtu.older";
+    std::error_code   error;
+    if (!fs::is_directory(folder(true), error))
+      throw std::runtime_error("cannot move the ParaView files to '" + folder(false) +
+                               "': the folder '" + folder(true) + "' is gone");
+    fs::remove_all(older, error);
+    const bool had_older = fs::exists(folder(false), error);
+    if (had_older)
+      fs::rename(folder(false), older, error);
     if (!error)
       fs::rename(folder(true), folder(false), error);
     if (error)
-      throw std::runtime_error("cannot move the ParaView files to '" + folder(false) +
-                               "': " + error.message());
+      {
+        const std::string reason = error.message();
+        if (had_older && !fs::exists(folder(false), error))
+          fs::rename(older, folder(false), error);
+        throw std::runtime_error("cannot move the ParaView files to '" + folder(false) +
+                                 "': " + reason + " (they stay in '" + folder(true) + "')");
+      }
     write_collection(stem + ".pvd", fs::path(folder(false)).filename().string());
     fs::remove(stem + ".partial.pvd", error);
+    fs::remove_all(older, error);
   }
 } // namespace cdea

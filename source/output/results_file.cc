@@ -5,8 +5,10 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <iostream>
 #include <stdexcept>
 
 namespace cdea
@@ -49,6 +51,7 @@ namespace cdea
     OutputLock                       lock;
     DirectoryIdentity                directory_id;
     std::vector<std::string>         notes;
+    std::vector<std::string>         created; ///< directories this run created
     std::string                      failure; ///< the first OutputError of the run
     bool                             finished = false;
     Finish                           finish_result;
@@ -128,8 +131,7 @@ namespace cdea
       std::make_unique<ResultsDocument>(path, parameters_text, n_rings, extra_root_attributes);
     d.minimum_interval = checkpoint_interval_setting();
 
-    std::vector<std::string> created;
-    bool                     journal_started = false; // the journal at the path is ours
+    std::vector<std::string> &created = d.created;
     {
       std::string why;
       if (!claim_output(path, d.lock, why, &created))
@@ -141,7 +143,7 @@ namespace cdea
           {
             try
               {
-                const Recovery saved = recover_results(path, false);
+                const Recovery saved = recover_results(path, false, true);
                 d.notes.push_back("an earlier run writing " + path +
                                   " did not finish its file: " + saved.message);
               }
@@ -154,15 +156,14 @@ namespace cdea
           }
         remove_temporaries(path);
         remove_file(checkpoint_of(path));
-        journal_started = true;
         d.journal.open(journal_of(path), parameters_text, n_rings, extra_root_attributes);
         d.directory_id = DirectoryIdentity::of(d.directory);
       }
     catch (...)
       {
-        d.journal.close();
-        if (journal_started)
+        if (d.journal.is_open()) // ours, not another process's
           remove_file(journal_of(path));
+        d.journal.close();
         d.lock.release();
         remove_created_directories(created);
         d.finished = true;
@@ -264,7 +265,8 @@ namespace cdea
                                  "' vanished during the run; it was created again for the " +
                                  "results");
           }
-        const WriteOutcome out = replace_file(target, document->image(), true);
+        const std::size_t  full_size = document->image_size();
+        const WriteOutcome out       = replace_file(target, document->image(), true);
         if (out.ok)
           {
             f.written       = true;
@@ -283,32 +285,55 @@ namespace cdea
           {
             // What fits: the leading steps whose file is no larger than what
             // could be written. The journal keeps all of them.
-            const std::string  journal_path = journal_of(file_path);
-            const unsigned int k            = journal_steps_within(journal_path, out.written);
-            if (k > 0)
+            const std::string journal_path = journal_of(file_path);
+            if (n >= 1000) // a rebuild takes about a second per 1000 steps: say why it waits
+              std::cerr << "cdea: " << target << " does not fit (" << out.message
+                        << "): finding how many of the " << n << " steps fit..." << std::endl;
+            // Image sizes grow about linearly with the steps: estimate from
+            // the whole image, then fewer steps until the image fits (each
+            // try is one replay of the journal, so this is linear in n).
+            unsigned int k = static_cast<unsigned int>(
+              std::min<double>(n, double(n) * double(out.written) / double(full_size)));
+            for (int attempt = 0; k > 0 && attempt < 8; ++attempt)
               {
                 JournalReplay part = replay_journal(journal_path, file_path, k);
                 part.document->set_root_attribute(
                   "run_status", status + " (only the first " + std::to_string(k) + " of " +
                                   std::to_string(n) + " steps fit: " + out.message + ")");
-                const WriteOutcome fit = replace_file(target, part.document->image(), true);
-                if (fit.ok)
+                const std::vector<char> image = part.document->image();
+                const WriteOutcome      fit =
+                  image.size() <= out.written ? replace_file(target, image, true) : WriteOutcome();
+                if (!fit.ok)
                   {
-                    f.written       = true;
-                    f.file          = target;
-                    f.steps_written = k;
-                    remove_file(checkpoint_of(file_path));
-                    f.messages.push_back("only the first " + std::to_string(k) + " of " +
-                                         std::to_string(n) + " steps fit into " + target +
-                                         "; the journal " + journal_path + " keeps all " +
-                                         std::to_string(n) + ": make room and run 'cdea " +
-                                         "recover " + file_path + "'");
-                    lock.release();
-                    return f;
+                    const double room =
+                      double(image.size() <= out.written ? fit.written : out.written);
+                    k = std::min(k - 1, static_cast<unsigned int>(double(k) * room /
+                                                                  double(image.size())));
+                    continue;
                   }
+                f.written       = true;
+                f.file          = target;
+                f.steps_written = k;
+                remove_file(checkpoint_of(file_path));
+                f.messages.push_back("only the first " + std::to_string(k) + " of " +
+                                     std::to_string(n) + " steps fit into " + target +
+                                     "; the journal " + journal_path + " keeps all " +
+                                     std::to_string(n) + ": make room and run 'cdea " +
+                                     "recover " + file_path + "'");
+                lock.release();
+                return f;
               }
           }
-        if (!vanished)
+        if (!vanished && n == 0)
+          {
+            // No step to keep: leave nothing behind, as a run that cannot
+            // start does.
+            remove_file(journal_of(file_path));
+            lock.release();
+            remove_created_directories(created);
+            f.messages.push_back("no step had been computed: nothing was written");
+          }
+        else if (!vanished)
           f.messages.push_back("nothing could be written; the journal " + journal_of(file_path) +
                                " keeps the " + std::to_string(n) + " steps: make room and " +
                                "run 'cdea recover " + file_path + "'");
@@ -323,6 +348,21 @@ namespace cdea
     return f;
   }
 
+  void ResultsFile::abandon() noexcept
+  {
+    Impl &d = *impl;
+    if (d.finished)
+      return;
+    d.finished = true;
+    if (d.journal.is_open())
+      remove_file(journal_of(d.file_path));
+    d.journal.close();
+    remove_temporaries(d.file_path);
+    remove_file(checkpoint_of(d.file_path));
+    d.lock.release();
+    remove_created_directories(d.created);
+  }
+
   const std::vector<std::string> &ResultsFile::notes() const { return impl->notes; }
   unsigned int ResultsFile::n_steps() const { return impl->document->n_steps(); }
   unsigned int ResultsFile::n_rings() const { return impl->document->n_rings(); }
@@ -331,42 +371,4 @@ namespace cdea
   std::string ResultsFile::journal_path() const { return journal_of(impl->file_path); }
   unsigned int ResultsFile::checkpoints() const { return impl->checkpoints; }
   double ResultsFile::checkpoint_seconds() const { return impl->checkpoint_time; }
-
-  Recovery recover_results(const std::string &path, const bool into_path_if_free)
-  {
-    Recovery          r;
-    const std::string journal = journal_of(path);
-    if (!file_exists(journal))
-      {
-        r.message = "no journal " + journal + ": nothing to recover";
-        return r;
-      }
-    r.found                    = true;
-    const JournalReplay replay = replay_journal(journal, path);
-    if (!replay.document || replay.steps == 0)
-      {
-        remove_file(journal);
-        remove_file(checkpoint_of(path));
-        remove_temporaries(path);
-        r.message = "the journal " + journal + " held no step (removed)";
-        return r;
-      }
-    replay.document->set_root_attribute(
-      "run_status", "rebuilt from the journal: the run ended without writing all its steps "
-                    "(killed, crashed, or out of disk space) after the last step here");
-    r.file = into_path_if_free && !file_exists(path) ? path : free_sibling_name(path, ".recovered");
-    const WriteOutcome out = replace_file(r.file, replay.document->image(), true);
-    if (!out.ok)
-      throw OutputError("cannot write the recovered results: " + out.message + " (the journal " +
-                        journal + " is kept)");
-    r.steps = replay.steps;
-    remove_file(journal);
-    remove_file(checkpoint_of(path));
-    remove_temporaries(path);
-    r.message = "its " + std::to_string(r.steps) + " step(s) are in " + r.file;
-    if (replay.dropped_bytes > 0)
-      r.message += " (an incomplete last record of " + std::to_string(replay.dropped_bytes) +
-                   " bytes was dropped)";
-    return r;
-  }
 } // namespace cdea

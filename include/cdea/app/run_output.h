@@ -34,6 +34,11 @@ namespace cdea
     /// was asked for.
     static void stop_point();
 
+    /// Runs @p setup, the writes before the first step; if one fails the
+    /// output is given up (nothing left behind) and, with the message
+    /// printed, false is returned: the command exits 1.
+    bool prepare(const std::function<void()> &setup);
+
     /// Runs @p run; a stop, an output error or another error ends it as
     /// incomplete with the reason (the steps so far stay).
     RunResult guard(const std::function<RunResult()> &run);

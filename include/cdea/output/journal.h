@@ -5,7 +5,8 @@
 // printed. A process killed at any moment leaves a journal whose complete
 // records replay into the file it was building; a record cut short by the
 // kill fails its length or CRC-32 check and is dropped with everything after
-// it. Records are in the machine's byte order (the journal is read back on
+// it; damage elsewhere (a record failing its check with more data after it)
+// is reported, never taken for the end. Records are in the machine's byte order (the journal is read back on
 // the machine that wrote it, by `cdea recover` or the next run).
 
 #include <cdea/output/records.h>
@@ -28,8 +29,9 @@ namespace cdea
     JournalWriter(const JournalWriter &)            = delete;
     JournalWriter &operator=(const JournalWriter &) = delete;
 
-    /// Creates (truncates) @p path and writes the first record. Throws
-    /// OutputError naming the path.
+    /// Creates (truncates) @p path, holding an flock on it until close(),
+    /// and writes the first record. Throws OutputError naming the path, also
+    /// if another process holds the journal's flock.
     void open(const std::string &path, const std::string &parameters_text, unsigned int n_rings,
               const std::vector<std::pair<std::string, std::string>> &extra_root_attributes);
 
@@ -45,6 +47,7 @@ namespace cdea
                            unsigned int rows, unsigned int columns);
 
     void        close() noexcept;
+    bool        is_open() const { return fd >= 0; }
     std::size_t size() const { return bytes; }
 
   private:
@@ -54,13 +57,18 @@ namespace cdea
     void        write_record(unsigned char type, const std::string &payload);
   };
 
+  constexpr std::size_t no_damage = std::size_t(-1);
+
   /// A results document rebuilt from a journal.
   struct JournalReplay
   {
     std::unique_ptr<ResultsDocument> document; ///< null if not even the first record is complete
     unsigned int steps          = 0; ///< steps in the document
     unsigned int journal_steps  = 0; ///< complete step records in the journal
-    std::size_t  dropped_bytes  = 0; ///< of an incomplete last record
+    std::size_t  dropped_bytes  = 0; ///< of an incomplete last record, or from the damage on
+    /// Byte offset of a damaged record with data after it (not a record cut
+    /// short at the end), or no_damage. The records from there on are lost.
+    std::size_t  damaged_at     = no_damage;
   };
 
   /// Replays the journal at @p path into a new document named @p name, with
@@ -69,7 +77,4 @@ namespace cdea
   JournalReplay replay_journal(const std::string &path, const std::string &name,
                                unsigned int max_steps = UINT_MAX);
 
-  /// The most leading steps of the journal whose file image takes at most
-  /// @p max_bytes (for writing what fits after a write failure).
-  unsigned int journal_steps_within(const std::string &path, std::size_t max_bytes);
 } // namespace cdea

@@ -128,6 +128,10 @@ namespace cdea
     /// do nothing.
     Finish finish(const std::string &status);
 
+    /// Gives the output up before its first step (a write failed): removes
+    /// the journal, the lock and the directories this run created, and
+    /// writes nothing. Never throws; finish() then does nothing.
+    void abandon() noexcept;
     /// Lines for the user from the start (an earlier run's journal saved).
     const std::vector<std::string> &notes() const;
 
@@ -154,12 +158,21 @@ namespace cdea
     std::string  file;          ///< where the rebuilt file was written ("" if none)
     unsigned int steps = 0;
     std::string  message;       ///< one line for the user
+    /// The journal is damaged before its end: what could be read is in file
+    /// (if any), and the journal and checkpoint are kept.
+    bool damaged = false;
   };
 
   /// Rebuilds the results of a killed run that was writing @p path from its
   /// journal. The file goes to @p path if nothing is there and
   /// @p into_path_if_free, else to a free "<stem>.recovered[-N].h5" beside
-  /// it; the journal and checkpoint are then removed. The caller must hold
-  /// the lock of @p path. Throws OutputError if it cannot be written.
-  Recovery recover_results(const std::string &path, bool into_path_if_free);
+  /// it; the journal and checkpoint are then removed. A journal damaged
+  /// before its end (not a last record cut short) is never removed: the more
+  /// steps of its readable part and the checkpoint are written, or, with
+  /// @p only_if_intact, nothing is done and OutputError says where the damage
+  /// is. The caller must hold the lock of @p path. Throws OutputError if the
+  /// journal is still being written (its flock is held) or the file cannot
+  /// be written (source/output/recovery.cc).
+  Recovery recover_results(const std::string &path, bool into_path_if_free,
+                           bool only_if_intact = false);
 } // namespace cdea

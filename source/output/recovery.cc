@@ -1,0 +1,175 @@
+// recover_results(): the results of a run that did not finish its file,
+// rebuilt from its journal (or its last checkpoint where the journal is
+// damaged). Nothing is removed that was not recovered whole.
+#include <cdea/output/hdf5_support.h>
+#include <cdea/output/journal.h>
+#include <cdea/output/results_file.h>
+#include <cdea/output/safe_files.h>
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <fstream>
+#include <iterator>
+
+namespace cdea
+{
+  namespace
+  {
+    std::string journal_of(const std::string &path) { return path + ".journal"; }
+    std::string checkpoint_of(const std::string &path) { return sibling_name(path, ".partial"); }
+
+    void remove_leftovers(const std::string &path)
+    {
+      remove_file(journal_of(path));
+      remove_file(checkpoint_of(path));
+      remove_file(path + ".tmp");
+      remove_file(checkpoint_of(path) + ".tmp");
+    }
+
+    /// The journal's flock for the time of the recovery; throws if a run
+    /// still holds it (that run's journal is live, not left over).
+    class JournalClaim
+    {
+    public:
+      explicit JournalClaim(const std::string &journal)
+        : fd(::open(journal.c_str(), O_RDONLY | O_CLOEXEC))
+      {
+        if (fd >= 0 && ::flock(fd, LOCK_EX | LOCK_NB) != 0)
+          {
+            ::close(fd);
+            throw OutputError("a running cdea process is still writing the journal " + journal +
+                              " (it holds the journal's lock)");
+          }
+      }
+      ~JournalClaim()
+      {
+        if (fd >= 0)
+          ::close(fd);
+      }
+      JournalClaim(const JournalClaim &)            = delete;
+      JournalClaim &operator=(const JournalClaim &) = delete;
+
+    private:
+      int fd;
+    };
+
+    /// Rows of /summary in the checkpoint at @p path; 0 if it is missing or
+    /// unreadable.
+    unsigned int checkpoint_steps(const std::string &path)
+    {
+      if (!file_exists(path))
+        return 0;
+      hdf5::ErrorPrintingOff quiet;
+      const hdf5::Handle     fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+      if (fapl < 0 || H5Pset_file_locking(fapl, false, true) < 0)
+        return 0;
+      const hdf5::Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, fapl), H5Fclose);
+      if (file < 0)
+        return 0;
+      const hdf5::Handle set(H5Dopen2(file, "/summary/stage", H5P_DEFAULT), H5Dclose);
+      if (set < 0)
+        return 0;
+      const hdf5::Handle space(H5Dget_space(set), H5Sclose);
+      hsize_t            rows = 0;
+      if (space < 0 || H5Sget_simple_extent_ndims(space) != 1 ||
+          H5Sget_simple_extent_dims(space, &rows, nullptr) != 1)
+        return 0;
+      return static_cast<unsigned int>(rows);
+    }
+
+    std::vector<char> file_bytes(const std::string &path)
+    {
+      std::ifstream in(path, std::ios::binary);
+      return std::vector<char>((std::istreambuf_iterator<char>(in)),
+                               std::istreambuf_iterator<char>());
+    }
+
+    std::string where_to(const std::string &path, const bool into_path_if_free)
+    {
+      return into_path_if_free && !file_exists(path) ? path :
+                                                       free_sibling_name(path, ".recovered");
+    }
+  } // namespace
+
+  Recovery recover_results(const std::string &path, const bool into_path_if_free,
+                           const bool only_if_intact)
+  {
+    Recovery          r;
+    const std::string journal = journal_of(path);
+    if (!file_exists(journal))
+      {
+        r.message = "no journal " + journal + ": nothing to recover";
+        return r;
+      }
+    r.found = true;
+    const JournalClaim  claim(journal);
+    JournalReplay       replay = replay_journal(journal, path);
+    const unsigned int  steps  = replay.document ? replay.steps : 0;
+    if (replay.damaged_at != no_damage)
+      {
+        const std::string damage =
+          "the journal " + journal + " is damaged at byte " + std::to_string(replay.damaged_at) +
+          " (a record there fails its check and " + std::to_string(replay.dropped_bytes) +
+          " bytes follow it, which cannot be read)";
+        if (only_if_intact)
+          throw OutputError(damage + "; run 'cdea recover " + path +
+                            "' to save its readable steps, then move the journal away");
+        r.damaged                    = true;
+        const std::string checkpoint = checkpoint_of(path);
+        const unsigned int saved     = checkpoint_steps(checkpoint);
+        const std::string  kept =
+          "; the journal" + std::string(file_exists(checkpoint) ? " and " + checkpoint : "") +
+          " are kept: remove them once you have what you need";
+        if (steps == 0 && saved == 0)
+          {
+            r.message = damage + "; no step could be read before it" + kept;
+            return r;
+          }
+        r.file = where_to(path, into_path_if_free);
+        std::vector<char> bytes;
+        if (saved > steps)
+          bytes = file_bytes(checkpoint);
+        else
+          {
+            replay.document->set_root_attribute(
+              "run_status", "rebuilt from the readable start of a damaged journal: the steps "
+                            "after the last one here were lost");
+            bytes = replay.document->image();
+          }
+        const WriteOutcome out = replace_file(r.file, bytes, true);
+        if (!out.ok)
+          throw OutputError("cannot write the recovered results: " + out.message + " (" +
+                            damage + "; the journal is kept)");
+        r.steps   = std::max(saved, steps);
+        r.message = damage + "; the " + std::to_string(r.steps) + " step(s) of the " +
+                    (saved > steps ? "last checkpoint " + checkpoint :
+                                     std::string("journal before the damage")) +
+                    " are in " + r.file + kept;
+        return r;
+      }
+    if (steps == 0)
+      {
+        remove_leftovers(path);
+        r.message = "the journal " + journal + " held no step (removed): nothing to recover";
+        return r;
+      }
+    replay.document->set_root_attribute(
+      "run_status", "rebuilt from the journal: the run ended without writing all its steps "
+                    "(killed, crashed, or out of disk space) after the last step here");
+    r.file                 = where_to(path, into_path_if_free);
+    const WriteOutcome out = replace_file(r.file, replay.document->image(), true);
+    if (!out.ok)
+      throw OutputError("cannot write the recovered results: " + out.message + " (the journal " +
+                        journal + " is kept)");
+    r.steps = steps;
+    remove_leftovers(path);
+    r.message = "its " + std::to_string(r.steps) + " step(s) are in " + r.file;
+    if (replay.dropped_bytes > 0)
+      r.message += " (an incomplete last record of " + std::to_string(replay.dropped_bytes) +
+                   " bytes was dropped)";
+    return r;
+  }
+} // namespace cdea
