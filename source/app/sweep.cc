@@ -354,11 +354,13 @@ namespace cdea
     const std::string path = p.results_path("_map");
 
     // The output folder must be writable, and the map file ours alone,
-    // before hours of work start.
-    int        writable = 1;
-    OutputLock lock;
-    std::string why;
-    if (root && !claim_output(path, lock, why))
+    // before hours of work start. Directories made here go again if no map
+    // is written.
+    int                      writable = 1;
+    OutputLock               lock;
+    std::vector<std::string> created;
+    std::string              why;
+    if (root && !claim_output(path, lock, why, &created))
       {
         std::cerr << "cdea: cannot write '" << path << "': " << why << '\n';
         writable = 0;
@@ -391,6 +393,8 @@ namespace cdea
     catch (const std::exception &e)
       {
         std::cerr << "cdea: sweep failed: " << one_line_message(e) << '\n';
+        lock.release();
+        remove_created_directories(created);
         return exit_input_error;
       }
     progress.finish();
@@ -399,8 +403,7 @@ namespace cdea
     if (!root)
       return exit_success;
 
-    const std::string status         = sweep_run_status(map);
-    const bool        no_row_reached = status != "complete";
+    const bool no_row_reached = !some_row_reached(map);
     try
       {
         write_sweep_file(path, map, text);

@@ -173,11 +173,15 @@ namespace cdea
     return content;
   }
 
+  bool some_row_reached(const SweepMap &map)
+  {
+    return std::any_of(map.rows.begin(), map.rows.end(),
+                       [](const SweepRow &r) { return r.base_reached; });
+  }
+
   std::string sweep_run_status(const SweepMap &map)
   {
-    const bool no_row_reached = std::none_of(map.rows.begin(), map.rows.end(),
-                                             [](const SweepRow &r) { return r.base_reached; });
-    return no_row_reached ? "stopped: no layout reached the inner voltage" : "complete";
+    return some_row_reached(map) ? "complete" : "stopped: no layout reached the inner voltage";
   }
 
   void write_sweep_file(const std::string &path, const SweepMap &map,

@@ -99,8 +99,11 @@ namespace cdea
     if (!output)
       return exit_input_error;
     ResultsFile *const file = &output->file();
-    for (const SummaryColumn &c : stepper.columns())
-      file->describe_column(c.name, c.unit, c.description);
+    if (!output->prepare([&] {
+          for (const SummaryColumn &c : stepper.columns())
+            file->describe_column(c.name, c.unit, c.description);
+        }))
+      return exit_input_error;
 
     std::cout << "FE model: " << model->n_elements() << " elements of degree "
               << p.discretization.polynomial_degree << ", " << model->n_dofs() << " unknowns\n"

@@ -184,6 +184,10 @@ namespace cdea
   void write_sweep_file(const std::string &path, const SweepMap &map,
                         const std::string &parameter_text);
 
+  /// Whether some layout of the map reached the inner voltage (else the map
+  /// is empty).
+  bool some_row_reached(const SweepMap &map);
+
   /// The map's run_status: "complete", or why it is no map (no layout
   /// reached the inner voltage).
   std::string sweep_run_status(const SweepMap &map);
