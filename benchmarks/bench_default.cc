@@ -5,8 +5,8 @@
 // step; no file output). Prints the median wall time of a run, per converged
 // step and per Newton iteration, and the memory. Then it runs the whole
 // program (`cdea run`, output to a temporary folder) PROCESS_RUNS times and
-// prints the median wall time of a process, which adds library loading, MPI
-// start-up, HDF5 output and printing (0: no processes).
+// prints the median wall time of a process, which adds library loading (and MPI
+// start-up only under a launcher), HDF5 output and printing (0: no processes).
 //
 //   build/benchmarks/bench_default [FILE.prm] [RUNS] [PROCESS_RUNS]
 //
@@ -41,7 +41,7 @@ namespace
 
   int benchmark(const std::string &file, const int runs, const int process_runs)
   {
-    const double     baseline = status_mib("VmRSS"); // libraries and MPI, before any model
+    const double     baseline = status_mib("VmRSS"); // the libraries, before any model
     const Parameters p        = read_parameters(file);
     const Scene      scene    = p.scene();
 
@@ -77,7 +77,7 @@ namespace
               << "median time per run:              " << median(run_time) * 1e3 << " ms\n"
               << "median time per converged step:   " << median(per_step) * 1e6 << " us\n"
               << "median time per Newton iteration: " << median(per_iteration) * 1e6 << " us\n"
-              << "resident memory before any model: " << baseline << " MiB (libraries, MPI)\n"
+              << "resident memory before any model: " << baseline << " MiB (the libraries)\n"
               << "peak resident memory (in-process): " << peak << " MiB\n";
     if (process_runs <= 0)
       return 0;

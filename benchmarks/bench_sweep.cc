@@ -164,7 +164,7 @@ namespace
               << "  unknowns of a layout's FE model:              " << model.n_dofs() << " ("
               << model.n_elements() << " elements of degree "
               << p.discretization.polynomial_degree << ")\n"
-              << "  build a MembraneModel (mesh, dofs, sparsity):  " << t_model * 1e6 << " us\n"
+              << "  build a MembraneModel (mesh, dofs, shapes):    " << t_model * 1e6 << " us\n"
               << "  load stages to the base state (one row):      " << t_base * 1e3 << " ms, "
               << base_iterations << " Newton iterations\n"
               << "  the same with Solver/Stability check on:      " << t_base_stable * 1e3
