@@ -40,7 +40,6 @@ Needs h5py, numpy and matplotlib (Agg backend).
 
 import argparse
 import os
-import re
 import sys
 
 import matplotlib
@@ -48,6 +47,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+
+from plot_pump import prm_value  # noqa: E402  (the stored parameters name each entry once)
 
 try:
     import h5py  # noqa: E402
@@ -60,12 +61,6 @@ PROG = "plot_time.py"
 
 class TimeError(Exception):
     """A problem with the input that ends the program with a message."""
-
-
-def prm_value(text, name):
-    """Value of 'set NAME = value' in the prm text (the last one), or None."""
-    found = re.findall(r"^\s*set\s+" + re.escape(name) + r"\s*=\s*(.*?)\s*$", text, re.MULTILINE)
-    return found[-1] if found else None
 
 
 class TimeRun:

@@ -4,36 +4,12 @@
 # nothing is deleted that was not recovered whole, and every exit code and
 # file left is checked (h5py reads every file).
 source "$(dirname "$0")/script_helpers.bash"
-trap 'kill $(jobs -p) 2> /dev/null; rm -rf "$work"' EXIT
+source "$(dirname "$0")/long_runs.bash"
 
-# prm NAME INCREMENT [MASS] [EXTRA]: the default scene into out/long.h5
-prm() {
-  sed -e 's/set Directory           = results/set Directory           = out/' \
-      -e 's/set Base name           = default/set Base name           = long/' \
-      -e "s/set Mass (g)            = 280/set Mass (g)            = ${3:-280}/" \
-      "$src/prm/default.prm" > "$1"
-  printf 'subsection Solver\n  set Voltage increment (kV) = %s\nend\n%b' "$2" "${4:-}" >> "$1"
-}
 prm long.prm 0.003
 prm other.prm 0.003 281
 prm verylong.prm 0.0002
 prm paraview.prm 0.01 280 'subsection Output\n  set ParaView = true\n  set ParaView segments = 8\nend\n'
-steps_printed() { grep -cE '^ +[0-9]+ +(pre-stretch|dead load|voltage) ' "$1"; }
-wait_for_steps() { # FILE N: until N step lines are printed (at most 60 s)
-  for _ in $(seq 600); do [ "$(steps_printed "$1")" -ge "$2" ] && return 0; sleep 0.1; done
-  return 1
-}
-# bounded_wait PID: its exit code; killed (exit 137) if it runs over 300 s
-bounded_wait() {
-  local state
-  for _ in $(seq 3000); do
-    state=$(ps -o stat= -p "$1" 2> /dev/null)
-    case "$state" in "" | Z*) break ;; esac # ended (a zombie until waited for)
-    sleep 0.1
-  done
-  kill -KILL "$1" 2> /dev/null
-  wait "$1"
-}
 rows() { # FILE: rows of /summary (one /steps group each), or "unreadable"
   "$PYTHON" -c "
 import sys, h5py

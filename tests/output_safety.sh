@@ -2,45 +2,13 @@
 # Results that survive concurrent runs, re-runs killed early, a vanished
 # output directory, a file size limit (a full disk) and a closed stdout pipe;
 # `cdea recover` with nothing to recover. Every file is read back with h5py.
-set -u
-exe="${CDEA_EXECUTABLE:?}"
-src="${CDEA_SOURCE_DIR:?}"
-PYTHON=${PYTHON:-/usr/bin/python3}
-work=$(mktemp -d)
-trap 'kill $(jobs -p) 2> /dev/null; rm -rf "$work"' EXIT
-cd "$work"
-failures=0
-fail() { echo "FAIL $*"; failures=$((failures + 1)); }
-ok() { echo "ok   $*"; }
+source "$(dirname "$0")/script_helpers.bash"
+source "$(dirname "$0")/long_runs.bash"
 
-# prm NAME INCREMENT [MASS]: the default scene into out/long.h5
-prm() {
-  sed -e 's/set Directory           = results/set Directory           = out/' \
-      -e 's/set Base name           = default/set Base name           = long/' \
-      -e "s/set Mass (g)            = 280/set Mass (g)            = ${3:-280}/" \
-      "$src/prm/default.prm" > "$1"
-  printf 'subsection Solver\n  set Voltage increment (kV) = %s\nend\n' "$2" >> "$1"
-}
 prm short.prm 0.25
 prm long.prm 0.003
 prm other.prm 0.003 281
 prm verylong.prm 0.0002 # 25,000 steps: still running when the second run starts
-# bounded_wait PID: its exit code; killed (exit 137) if it runs over 300 s
-bounded_wait() {
-  local state
-  for _ in $(seq 3000); do
-    state=$(ps -o stat= -p "$1" 2> /dev/null)
-    case "$state" in "" | Z*) break ;; esac # ended (a zombie until waited for)
-    sleep 0.1
-  done
-  kill -KILL "$1" 2> /dev/null
-  wait "$1"
-}
-steps_printed() { grep -cE '^ +[0-9]+ +(pre-stretch|dead load|voltage) ' "$1"; }
-wait_for_steps() { # FILE N: until N step lines are printed (at most 20 s)
-  for _ in $(seq 200); do [ "$(steps_printed "$1")" -ge "$2" ] && return 0; sleep 0.1; done
-  return 1
-}
 # h5check FILE MIN_ROWS [MASS]: readable, at least MIN_ROWS rows, one group
 # per row, made with the given mass
 h5check() {

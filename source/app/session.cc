@@ -128,10 +128,16 @@ namespace cdea
       record.steps.push_back(s);
       record.fields.push_back(stepper.step_fields());
     };
+    run_keeping_steps(record, [&] { return stepper.run(); });
+    return record;
+  }
+
+  void run_keeping_steps(RunRecord &record, const std::function<RunResult()> &run)
+  {
     const auto start = std::chrono::steady_clock::now();
     try
       {
-        record.result = stepper.run();
+        record.result = run();
       }
     catch (const std::exception &e)
       {
@@ -141,7 +147,6 @@ namespace cdea
         record.result.steps     = static_cast<unsigned int>(record.steps.size());
       }
     record.seconds = seconds_since(start);
-    return record;
   }
 
   void write_run(const RunRecord &record, const std::string &path)

@@ -1,5 +1,6 @@
 #include <cdea/app/commands.h>
 #include <cdea/app/parameters.h>
+#include <cdea/app/session.h>
 #include <cdea/app/time_run.h>
 #include <cdea/format.h>
 #include <cdea/app/run_output.h>
@@ -66,20 +67,7 @@ namespace cdea
       record.steps.push_back(s);
       record.fields.push_back(stepper.fields_wanted() ? stepper.step_fields() : StepFields());
     };
-    const auto start = std::chrono::steady_clock::now();
-    try
-      {
-        record.result = stepper.run();
-      }
-    catch (const std::exception &e)
-      {
-        // The steps so far stay; the run says why it ended.
-        record.result.completed = false;
-        record.result.message   = std::string("error: ") + e.what();
-        record.result.steps     = static_cast<unsigned int>(record.steps.size());
-      }
-    record.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    run_keeping_steps(record, [&] { return stepper.run(); });
     return record;
   }
 

@@ -17,6 +17,7 @@
 #include <cdea/solver/load_stepper.h>
 #include <cdea/solver/time_stepper.h>
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -98,6 +99,11 @@ namespace cdea
   /// The load stages of @p input with the model of @p method (a time run if
   /// Time/Enabled), every converged step kept; nothing is printed or written.
   RunRecord run_in_memory(const RunInput &input, RunMethod method);
+
+  /// Runs @p run (a stepper whose on_step fills @p record) into
+  /// record.result and record.seconds; an error ends the run as incomplete
+  /// with its message, and the steps so far stay.
+  void run_keeping_steps(RunRecord &record, const std::function<RunResult()> &run);
 
   /// Writes @p record through ResultsFile as the command writes it: root
   /// attributes, /summary with every column and attribute, /steps. Throws
