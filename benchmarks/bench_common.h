@@ -6,9 +6,9 @@
 // A benchmark is a driver of the library's public interfaces; nothing here
 // solves anything itself.
 
-#include <cdea/app/mpi_session.h>
-#include <cdea/scene.h>
-#include <cdea/solver/equilibrium_model.h>
+#include <cdea/base/mpi_session.h>
+#include <cdea/model/scene.h>
+#include <cdea/model/equilibrium_model.h>
 #include <cdea/solver/load_stepper.h>
 
 #include <time.h>

@@ -13,9 +13,9 @@
 // Fails (exit code 1) if a run does not complete or a figure is not finite;
 // ctest runs it with 3 1 (label bench-smoke). doc/performance.md quotes it.
 
-#include <cdea/app/commands.h>
-#include <cdea/app/mpi_session.h>
-#include <cdea/app/parameters.h>
+#include <cdea/analysis/commands.h>
+#include <cdea/base/mpi_session.h>
+#include <cdea/input/parameters.h>
 
 #include "bench_common.h"
 

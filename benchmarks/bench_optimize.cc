@@ -18,8 +18,8 @@
 // Files go to a temporary folder, removed at the end. Figures in
 // doc/optimization.md.
 
-#include <cdea/app/fit.h>
-#include <cdea/app/mpi_session.h>
+#include <cdea/design/fit.h>
+#include <cdea/base/mpi_session.h>
 
 #include "bench_common.h"
 

@@ -20,7 +20,7 @@
 //
 //   build/benchmarks/bench_paper_lines [DIR] [--smoke]
 
-#include <cdea/app/sweep.h>
+#include <cdea/design/sweep.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/numerics/bracketed_root.h>
 #include <cdea/shooting/shooting_model.h>

@@ -23,11 +23,11 @@
 // Tables on stdout; CSV files in DIR (default results/optimization) for
 // postprocess/plot_optimization.py.
 
-#include <cdea/app/mpi_session.h>
-#include <cdea/app/optimize.h>
-#include <cdea/app/sweep.h>
+#include <cdea/base/mpi_session.h>
+#include <cdea/design/optimize.h>
+#include <cdea/design/sweep.h>
 #include <cdea/numerics/bracketed_root.h>
-#include <cdea/shooting/dormand_prince.h>
+#include <cdea/numerics/dormand_prince.h>
 
 #include <Eigen/LU>
 

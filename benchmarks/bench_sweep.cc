@@ -17,10 +17,10 @@
 // red line, or a figure is not finite; ctest runs it with 1 0 (label
 // bench-smoke). doc/design-maps.md ("Speed") quotes it.
 
-#include <cdea/app/commands.h>
-#include <cdea/app/mpi_session.h>
-#include <cdea/app/parameters.h>
-#include <cdea/app/sweep.h>
+#include <cdea/analysis/commands.h>
+#include <cdea/base/mpi_session.h>
+#include <cdea/input/parameters.h>
+#include <cdea/design/sweep.h>
 
 #include "bench_common.h"
 

@@ -6,8 +6,9 @@
 // not started (only the Trilinos KLU solver starts it, when it needs it).
 // Documented in doc/python.md.
 
-#include <cdea/app/mpi_session.h>
-#include <cdea/app/session.h>
+#include <cdea/base/mpi_session.h>
+#include <cdea/analysis/session.h>
+#include <cdea/design/sweep.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>

@@ -5,12 +5,12 @@
 // nothing is written unless .write(path) is called. Bad input raises
 // ValueError with the command line's message. Documented in doc/python.md.
 
-#include <cdea/app/commands.h>
-#include <cdea/app/fit.h>
-#include <cdea/app/optimize.h>
-#include <cdea/app/parameter_input.h>
-#include <cdea/app/parameters.h>
-#include <cdea/format.h>
+#include <cdea/analysis/commands.h>
+#include <cdea/design/fit.h>
+#include <cdea/design/optimize.h>
+#include <cdea/input/parameter_input.h>
+#include <cdea/input/parameters.h>
+#include <cdea/base/format.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>

@@ -1,7 +1,7 @@
 #pragma once
 // Scenes and run helpers shared by the test programs.
 
-#include <cdea/scene.h>
+#include <cdea/model/scene.h>
 #include <cdea/solver/load_stepper.h>
 
 #include <stdexcept>

@@ -4,7 +4,7 @@
 // (2) the same in two unknowns with a coupling that keeps the fold, to test the
 //     weighted inner product and the bordered solve with a matrix.
 
-#include <cdea/solver/arc_length.h>
+#include <cdea/numerics/arc_length.h>
 
 #include "check.h"
 

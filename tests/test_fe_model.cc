@@ -2,7 +2,7 @@
 // pre-stretched state, the first integral of the axial force balance, and the
 // public reference values of model-notes.md (default and refined meshes).
 
-#include <cdea/app/mpi_session.h>
+#include <cdea/base/mpi_session.h>
 #include <cdea/fe/membrane_model.h>
 
 #include "check.h"

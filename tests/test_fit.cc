@@ -11,9 +11,9 @@
 //  E. shear modulus, permittivity and mass together: the energy depends on
 //     eps/mu and F/mu only, and the fit says that they are not identifiable.
 
-#include <cdea/app/fit.h>
-#include <cdea/app/mpi_session.h>
-#include <cdea/app/parameters.h>
+#include <cdea/design/fit.h>
+#include <cdea/base/mpi_session.h>
+#include <cdea/input/parameters.h>
 
 #include "check.h"
 #include "scenes.h"

@@ -3,6 +3,7 @@
 // assembled by the cell kernel (every ring voltage, shear modulus, Jlim,
 // permittivity), all against central differences.
 
+#include <cdea/material/gent_law.h>
 #include <cdea/fe/cell_kernel.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/material/tension_field.h>

@@ -4,8 +4,8 @@
 // against dense Eigen computations of the same matrices.
 
 #include <cdea/numerics/bracketed_root.h>
-#include <cdea/solver/band_eigenvalue.h>
-#include <cdea/solver/sherman_morrison.h>
+#include <cdea/numerics/band_eigenvalue.h>
+#include <cdea/numerics/sherman_morrison.h>
 
 #include <Eigen/Dense>
 

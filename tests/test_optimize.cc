@@ -14,10 +14,10 @@
 // The command itself (files, replay by `cdea run`, exit codes, mpirun) is
 // tested by tests/optimize_run.sh.
 
-#include <cdea/app/mpi_session.h>
-#include <cdea/app/optimize.h>
-#include <cdea/app/parameters.h>
-#include <cdea/app/sweep.h>
+#include <cdea/base/mpi_session.h>
+#include <cdea/design/optimize.h>
+#include <cdea/input/parameters.h>
+#include <cdea/design/sweep.h>
 
 #include "check.h"
 #include "scenes.h"

@@ -4,7 +4,7 @@
 // same profile (trapezoidal rule in z on a fine grid of profile_at), and the
 // shooting model's volume against the FE one for the same scene.
 
-#include <cdea/app/mpi_session.h>
+#include <cdea/base/mpi_session.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/shooting/shooting_model.h>
 

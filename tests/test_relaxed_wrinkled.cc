@@ -9,7 +9,7 @@
 //   width);
 // - the run stops where the relaxed law loses ellipticity, and says so.
 
-#include <cdea/app/mpi_session.h>
+#include <cdea/base/mpi_session.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/shooting/shooting_model.h>
 

@@ -9,7 +9,7 @@
 //    quadrature point and ring inner edge, on 1, 2 and 3 rings, for every
 //    parameter, against the direct method; the adjoint against the direct.
 
-#include <cdea/app/mpi_session.h>
+#include <cdea/base/mpi_session.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/fe/sensitivities.h>
 #include <cdea/solver/load_stepper.h>

@@ -3,7 +3,7 @@
 // d(R s1)/dR = s2, s1 continuous at the ring edge), loading a cone from such
 // a state and unloading back to it; and the scalar lambda1 solve.
 
-#include <cdea/scene.h>
+#include <cdea/model/scene.h>
 #include <cdea/shooting/shooting_model.h>
 #include <cdea/shooting/shooting_solver.h>
 

@@ -3,7 +3,7 @@
 // and of the dense output, exact landing on the interval end, refusal of
 // states outside the domain.
 
-#include <cdea/shooting/dormand_prince.h>
+#include <cdea/numerics/dormand_prince.h>
 
 #include "check.h"
 

@@ -4,7 +4,7 @@
 // the profile: first integral, boundary condition, ring-edge jump, tolerance
 // convergence and state save/restore.
 
-#include <cdea/scene.h>
+#include <cdea/model/scene.h>
 #include <cdea/shooting/shooting_model.h>
 
 #include "check.h"

@@ -5,7 +5,7 @@
 // nothing wrinkles, its FE tangent against finite differences in a wrinkled
 // state, and the detection of its loss of ellipticity at the onset.
 
-#include <cdea/app/mpi_session.h>
+#include <cdea/base/mpi_session.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/shooting/angle_trace.h>
 #include <cdea/shooting/shooting_model.h>

@@ -4,7 +4,7 @@
 // ring edge (one point written twice) and a meridian that only touches
 // itself at a shared sample are not crossings.
 
-#include <cdea/output/state_check.h>
+#include <cdea/solver/state_check.h>
 
 #include "check.h"
 

@@ -12,10 +12,10 @@
 // The serial-vs-mpirun identity and the command's bad-input handling are in
 // tests/sweep_mpi.sh and tests/sweep_bad_input.sh.
 
-#include <cdea/app/commands.h>
-#include <cdea/app/mpi_session.h>
-#include <cdea/app/parameters.h>
-#include <cdea/app/sweep.h>
+#include <cdea/analysis/commands.h>
+#include <cdea/base/mpi_session.h>
+#include <cdea/input/parameters.h>
+#include <cdea/design/sweep.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/shooting/shooting_model.h>
 

@@ -3,7 +3,7 @@
 // band is 9, the least any numbering can give.
 // A change of the dof order or of the band storage shows here first.
 
-#include <cdea/app/mpi_session.h>
+#include <cdea/base/mpi_session.h>
 #include <cdea/fe/membrane_model.h>
 
 #include "check.h"

@@ -4,6 +4,7 @@
 // minimizes W over hoop stretches above the kinematic one, and loss of
 // ellipticity is flagged where ds1_rel/dl1 <= 0.
 
+#include <cdea/material/gent_law.h>
 #include <cdea/material/tension_field.h>
 
 #include "check.h"

@@ -17,7 +17,7 @@
 
 #include <cdea/fe/membrane_model.h>
 #include <cdea/material/two_network_gent.h>
-#include <cdea/shooting/dormand_prince.h>
+#include <cdea/numerics/dormand_prince.h>
 
 #include "check.h"
 #include "fe_checks.h"

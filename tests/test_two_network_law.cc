@@ -15,6 +15,7 @@
 
 #include <Sacado.hpp>
 
+#include <cdea/material/gent_law.h>
 #include <cdea/material/two_network_gent.h>
 
 #include "check.h"

@@ -16,7 +16,7 @@
 // ring edge. The shooting values of the public cases must also reproduce the
 // reference values of model-notes.md to their printed digits.
 
-#include <cdea/app/mpi_session.h>
+#include <cdea/base/mpi_session.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/shooting/shooting_model.h>
 

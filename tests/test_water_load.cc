@@ -6,7 +6,7 @@
 // quadratic Newton convergence through the Sherman-Morrison solve, and the
 // refusal of a state in which the water no longer fills the cone.
 
-#include <cdea/app/mpi_session.h>
+#include <cdea/base/mpi_session.h>
 #include <cdea/fe/membrane_model.h>
 
 #include "check.h"

@@ -3,7 +3,7 @@
 
 #include "membrane_model_impl.h"
 
-#include <cdea/solver/arc_length.h>
+#include <cdea/numerics/arc_length.h>
 
 namespace cdea
 {

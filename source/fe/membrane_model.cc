@@ -1,7 +1,8 @@
 #include "membrane_model_impl.h"
 
-#include <cdea/solver/arc_length.h>
-#include <cdea/solver/band_eigenvalue.h>
+#include <cdea/material/gent_law.h>
+#include <cdea/numerics/arc_length.h>
+#include <cdea/numerics/band_eigenvalue.h>
 
 #include <algorithm>
 #include <cmath>

@@ -9,7 +9,7 @@
 #include <cdea/fe/trilinos_solver.h>
 #include <cdea/fe/water_term.h>
 #include <cdea/material/tension_field.h>
-#include <cdea/solver/sherman_morrison.h>
+#include <cdea/numerics/sherman_morrison.h>
 
 namespace cdea
 {

@@ -1,3 +1,4 @@
+#include <cdea/material/gent_law.h>
 #include <cdea/material/two_network_gent.h>
 
 #include <Eigen/Dense>

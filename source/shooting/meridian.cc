@@ -1,5 +1,5 @@
 #include <cdea/numerics/bracketed_root.h>
-#include <cdea/shooting/dormand_prince.h>
+#include <cdea/numerics/dormand_prince.h>
 #include <cdea/shooting/meridian.h>
 
 #include <algorithm>

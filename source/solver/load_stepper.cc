@@ -1,6 +1,6 @@
-#include <cdea/format.h>
+#include <cdea/base/format.h>
 #include <cdea/numerics/bracketed_root.h>
-#include <cdea/solver/arc_length.h>
+#include <cdea/numerics/arc_length.h>
 #include <cdea/solver/load_stepper.h>
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-#include <cdea/format.h>
+#include <cdea/base/format.h>
 #include <cdea/numerics/bracketed_root.h>
 #include <cdea/solver/time_stepper.h>
 

@@ -14,8 +14,8 @@
 // enclosed volume) finishes its part after the loop in finish().
 
 #include <cdea/fe/discretization.h>
-#include <cdea/solver/band_matrix.h>
-#include <cdea/solver/equilibrium_model.h>
+#include <cdea/numerics/band_matrix.h>
+#include <cdea/model/equilibrium_model.h>
 
 #include <Eigen/Core>
 

@@ -10,7 +10,7 @@
 // composed with R = x0 + h xi: values are the reference values, derivatives
 // the reference derivatives over h, and the weights scale with h.
 
-#include <cdea/scene.h>
+#include <cdea/model/scene.h>
 
 #include <cmath>
 #include <memory>

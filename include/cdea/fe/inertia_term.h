@@ -11,7 +11,7 @@
 // k = m_V / (beta dt^2)). Off while dt = 0.
 
 #include <cdea/fe/cell_kernel.h>
-#include <cdea/solver/transient_model.h>
+#include <cdea/model/transient_model.h>
 
 namespace cdea
 {

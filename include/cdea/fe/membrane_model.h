@@ -20,11 +20,11 @@
 
 #include <cdea/fe/discretization.h>
 #include <cdea/fe/water_term.h>
-#include <cdea/scene.h>
-#include <cdea/solver/equilibrium_model.h>
-#include <cdea/solver/newton.h>
-#include <cdea/solver/tangent_solver.h>
-#include <cdea/solver/transient_model.h>
+#include <cdea/model/scene.h>
+#include <cdea/model/equilibrium_model.h>
+#include <cdea/numerics/newton.h>
+#include <cdea/numerics/tangent_solver.h>
+#include <cdea/model/transient_model.h>
 
 #include <memory>
 

@@ -21,8 +21,8 @@
 // the difference of two states (loaded and zero voltage), each with its own
 // StateSensitivity.
 
-#include <cdea/scene.h>
-#include <cdea/solver/equilibrium_model.h>
+#include <cdea/model/scene.h>
+#include <cdea/model/equilibrium_model.h>
 
 #include <Eigen/Core>
 

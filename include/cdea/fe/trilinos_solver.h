@@ -3,7 +3,7 @@
 // deal.II's wrappers) copies the band into a sparse matrix and needs MPI: the
 // matrix is created on first use, not before.
 
-#include <cdea/solver/tangent_solver.h>
+#include <cdea/numerics/tangent_solver.h>
 
 #include <memory>
 

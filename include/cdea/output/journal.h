@@ -9,7 +9,7 @@
 // is reported, never taken for the end. Records are in the machine's byte order (the journal is read back on
 // the machine that wrote it, by `cdea recover` or the next run).
 
-#include <cdea/output/records.h>
+#include <cdea/model/records.h>
 #include <cdea/output/results_document.h>
 
 #include <climits>

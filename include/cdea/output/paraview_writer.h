@@ -27,7 +27,7 @@
 // run leaves a readable collection) and <stem>_vtu.partial/; finish() puts them
 // in place of an older output of the same name only when the run has ended.
 
-#include <cdea/output/records.h>
+#include <cdea/model/records.h>
 
 #include <string>
 #include <vector>

@@ -3,7 +3,7 @@
 // the layout and for how it reaches the disk safely). Plain HDF5 C API, no
 // deal.II.
 
-#include <cdea/output/records.h>
+#include <cdea/model/records.h>
 
 #include <memory>
 #include <string>

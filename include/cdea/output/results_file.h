@@ -34,7 +34,7 @@
 // lock <file>.lock. Until then an older <file> is not touched. A killed run
 // leaves the journal, which recover_results() turns into a file.
 
-#include <cdea/output/records.h>
+#include <cdea/model/records.h>
 
 #include <memory>
 #include <string>

@@ -8,7 +8,7 @@
 // (StepSummary::columns) carry their unit in their name and are already in it.
 // No HDF5 and no deal.II here.
 
-#include <cdea/output/records.h>
+#include <cdea/model/records.h>
 
 #include <string>
 #include <vector>

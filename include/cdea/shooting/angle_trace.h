@@ -6,7 +6,7 @@
 // curve in voltage is simply a maximum of t(theta0). This is the independent
 // check of the limit points that arc-length continuation finds in the FE model.
 
-#include <cdea/scene.h>
+#include <cdea/model/scene.h>
 #include <cdea/shooting/meridian.h>
 #include <cdea/shooting/options.h>
 

@@ -19,10 +19,11 @@
 // unknown at R = A is l1 itself (in-plane problem). Internally the radii are
 // scaled by A, so the error control sees numbers of order one.
 
+#include <cdea/material/gent_law.h>
 #include <cdea/material/gent_dielectric.h>
 #include <cdea/material/tension_field.h>
-#include <cdea/output/records.h>
-#include <cdea/scene.h>
+#include <cdea/model/records.h>
+#include <cdea/model/scene.h>
 #include <cdea/shooting/options.h>
 
 #include <memory>

@@ -13,10 +13,10 @@
 // The disk and frame radii follow the load's stretch: r(A) = stretch A and
 // r(B) = stretch B, i.e. a and b once the pre-stretch is applied.
 
-#include <cdea/scene.h>
+#include <cdea/model/scene.h>
 #include <cdea/shooting/meridian.h>
 #include <cdea/shooting/options.h>
-#include <cdea/solver/equilibrium_model.h>
+#include <cdea/model/equilibrium_model.h>
 
 #include <vector>
 

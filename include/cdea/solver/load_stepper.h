@@ -16,8 +16,8 @@
 //    the run, after the boundary has been located by bisection.
 // Every loop advances the stage parameter or stops with a message.
 
-#include <cdea/scene.h>
-#include <cdea/solver/equilibrium_model.h>
+#include <cdea/model/scene.h>
+#include <cdea/model/equilibrium_model.h>
 #include <cdea/solver/postprocessors.h>
 
 #include <functional>

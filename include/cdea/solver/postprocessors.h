@@ -9,7 +9,7 @@
 // The fields along the meridian are computed at most once per state
 // (StepContext::fields()) and shared by every postprocessor and the writer.
 
-#include <cdea/solver/equilibrium_model.h>
+#include <cdea/model/equilibrium_model.h>
 
 #include <memory>
 #include <optional>

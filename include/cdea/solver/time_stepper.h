@@ -21,11 +21,11 @@
 // becomes negative is searched for the onset time (bracketed root in the
 // step's fraction), reported as a step of its own.
 
-#include <cdea/scene.h>
+#include <cdea/model/scene.h>
 #include <cdea/solver/load_stepper.h>
 #include <cdea/solver/postprocessors.h>
-#include <cdea/solver/transient_model.h>
-#include <cdea/solver/waveform.h>
+#include <cdea/model/transient_model.h>
+#include <cdea/model/waveform.h>
 
 #include <functional>
 #include <limits>

@@ -1,0 +1,42 @@
+#pragma once
+// Text the user typed: the one error type for bad input, and the one parser
+// of number lists ("1, 1.7, 3"; "1.2, 1.25, ..., 2.6"). Every message names
+// the parameter it is about and what is allowed.
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace cdea
+{
+  /// Bad user input: the message names the parameter and what is allowed.
+  class InputError : public std::runtime_error
+  {
+  public:
+    /// Long values in @p message are shortened (clip_long_values()).
+    explicit InputError(const std::string &message);
+  };
+
+  /// @p message with every word longer than 80 characters cut to its first
+  /// 60 and a count, and the whole kept below about 1500 characters: a
+  /// 1 MB value in the input is not echoed back whole.
+  std::string clip_long_values(const std::string &message);
+
+  /// One finite number, the whole of @p token; otherwise an InputError naming
+  /// the parameter @p name and the entry @p text it came from.
+  double parse_number(const std::string &token, const std::string &name, const std::string &text);
+
+  /// An InputError "NAME must be positive, got VALUE" unless 0 < value < infinity.
+  void require_positive(double value, const std::string &name);
+
+  /// Parse "1, 1.7, 3" into numbers; @p name is used in error messages.
+  std::vector<double> parse_number_list(const std::string &text, const std::string &name);
+
+  /// Parse a list of numbers separated by ',' in which the item '...'
+  /// continues the arithmetic sequence of the two values before it up to the
+  /// value after it ("1.2, 1.25, 1.3, ..., 2.6"). The value after '...' must lie
+  /// on that sequence. Generated values are rounded to 12 decimals, so that
+  /// "1.6, 1.7, ..., 2" gives exactly the doubles of "1.8" and "1.9".
+  /// Throws InputError naming @p name.
+  std::vector<double> expand_value_list(const std::string &text, const std::string &name);
+} // namespace cdea

@@ -1,0 +1,141 @@
+#pragma once
+// `cdea fit FILE.prm DATA.csv`: least-squares calibration of material and
+// load parameters (subsection Calibration: any of shear modulus, Jlim,
+// permittivity, mass, pre-stretch) to measured disk displacements at given
+// ring voltages (doc/optimization.md, "Calibration").
+//
+// Every data point is the state reached by ramping its ring voltages
+// proportionally from zero (the branch continued from zero voltage), as
+// `cdea run` with that point as the only waypoint. When the parameters
+// change, each point continues from its own last state with the tangent
+// predictor x + dx/dp dp (a ramp again if that fails). The Jacobian is exact
+// (fe/sensitivities.h); Ceres' Levenberg-Marquardt minimises
+// sum w_i (d_model,i - d_measured,i)^2. Standard errors and correlations
+// come from the Jacobian at the optimum, s^2 (J^T W J)^-1 with s^2 the
+// weighted residual variance, and a nearly singular J^T W J is reported as
+// parameters the data do not determine.
+
+#include <cdea/input/parameters_design.h>
+#include <cdea/fe/membrane_model.h>
+#include <cdea/fe/sensitivities.h>
+#include <cdea/solver/load_stepper.h>
+
+#include <functional>
+#include <istream>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace cdea
+{
+  struct Parameters;
+
+  /// Measured points: ring voltages (V), displacement (m), weight.
+  struct CalibrationData
+  {
+    std::vector<std::vector<double>> voltages;
+    std::vector<double>              displacement;
+    std::vector<double>              weight;
+    std::size_t                      size() const { return displacement.size(); }
+  };
+
+  /// Reads the CSV file: a header line naming the columns V1_kV .. VN_kV (one
+  /// per ring), displacement_mm and optionally weight, in any order; then one
+  /// line per point. '#' starts a comment. Throws InputError naming the file,
+  /// line and column.
+  CalibrationData read_calibration_data(const std::string &file, unsigned int n_rings);
+  /// The same from @p in (CSV text), named @p name in the messages.
+  CalibrationData read_calibration_data(std::istream &in, const std::string &name,
+                                        unsigned int n_rings);
+
+  struct FitSettings
+  {
+    std::vector<SceneParameter> free;
+    unsigned int                max_iterations = 100;
+    double                      tolerance      = 1e-10;
+  };
+
+  /// Subsection Calibration checked; throws InputError naming the parameter.
+  FitSettings fit_settings(const Parameters &p);
+
+  /// @p base with the free parameters set to @p values.
+  Scene scene_with(const Scene &base, const std::vector<SceneParameter> &free,
+                   const std::vector<double> &values);
+
+  /// The displacement of every data point and its Jacobian with respect to
+  /// the free parameters, for given parameter values.
+  class DisplacementModel
+  {
+  public:
+    DisplacementModel(const Scene &base, const CalibrationData &data,
+                      const std::vector<SceneParameter> &free, const FeDiscretization &disc,
+                      const NewtonSettings &newton, const SteppingSettings &stepping);
+    ~DisplacementModel();
+
+    /// false (with @p message) if some point cannot be reached.
+    bool evaluate(const std::vector<double> &values, Eigen::VectorXd &displacement,
+                  Eigen::MatrixXd *jacobian, std::string *message = nullptr);
+
+    /// The model along the data in file order (for plots): @p steps states
+    /// between neighbouring points, by continuation from the first point.
+    void curve(const std::vector<double> &values, unsigned int steps,
+               std::vector<std::vector<double>> &voltages, std::vector<double> &displacement);
+
+    unsigned int solves() const { return solves_; }
+    unsigned int ramps() const { return ramps_; }
+
+  private:
+    const Scene                       base;
+    const CalibrationData             data;
+    const std::vector<SceneParameter> free;
+    const FeDiscretization            discretization;
+    const NewtonSettings              newton;
+    const SteppingSettings            stepping;
+    Scene                             scene;
+    std::unique_ptr<MembraneModel>    model;
+    std::vector<double>               model_values;
+    /// Per point: its last state and dx/dp there, and the values they belong to.
+    std::vector<ModelState>      states;
+    std::vector<Eigen::MatrixXd> state_derivatives;
+    std::vector<double>          state_values;
+    unsigned int                 solves_ = 0, ramps_ = 0;
+
+    MembraneModel &model_for(const std::vector<double> &values);
+    LoadState      load_of(unsigned int point) const;
+    bool           ramp(unsigned int point, std::string *message);
+  };
+
+  struct FitResult
+  {
+    std::vector<double> initial, values, standard_errors; ///< SI units
+    Eigen::MatrixXd     correlation;
+    Eigen::VectorXd     fitted, residuals; ///< m, per point (model - measured)
+    double              rms = 0.;          ///< sqrt(sum w r^2 / sum w), m
+    double              condition = 0.;    ///< of the column-scaled Jacobian
+    bool                converged = false;
+    std::string         status;
+    std::vector<std::string> warnings; ///< parameters the data do not determine
+    unsigned int        iterations = 0, evaluations = 0;
+  };
+
+  /// Fit the free parameters of @p settings, starting from their values in
+  /// @p base. @p progress (if set) is told about every iteration.
+  FitResult fit(const Scene &base, const CalibrationData &data, const FitSettings &settings,
+                DisplacementModel &model,
+                const std::function<void(unsigned int, double, const std::vector<double> &)>
+                  &progress = {});
+
+  /// The parameter file entry that holds @p value of @p parameter.
+  ParameterChange fitted_entry(const SceneParameter &parameter, double value);
+
+  /// <Base name>_fit.h5 (layout in doc/optimization.md), replaced only once
+  /// complete; @p curve_kV, @p curve_mm: the model along the data.
+  void write_fit_file(const std::string &path, const std::string &parameter_text,
+                      const CalibrationData &data, const FitSettings &settings,
+                      const FitResult &result, const std::vector<std::vector<double>> &curve_kV,
+                      const std::vector<double> &curve_mm, unsigned int solves);
+
+  /// `cdea fit FILE.prm DATA.csv`: 0 converged, 2 not converged (the best
+  /// values are written), 1 bad input.
+  int run_fit(const std::string &prm_file, const std::string &data_file);
+} // namespace cdea

@@ -1,0 +1,28 @@
+#pragma once
+// The ideal-dielectric Gent law (GentDielectric) as a MembraneLaw: the
+// elastic law of the paper, evaluated at every quadrature point.
+
+#include <cdea/material/gent_dielectric.h>
+#include <cdea/material/membrane_law.h>
+
+namespace cdea
+{
+  /// The ideal-dielectric Gent law of GentDielectric as a MembraneLaw.
+  class GentDielectricLaw final : public MembraneLaw
+  {
+  public:
+    explicit GentDielectricLaw(const MaterialConstants &constants);
+
+    bool   evaluate(const LawInput &input, const InternalStep &step, unsigned int request,
+                    LawResponse &response) const override;
+    bool   parameter_derivative(const LawInput &input, const InternalStep &step,
+                                LawParameter parameter, double &d_energy,
+                                NominalStress &d_stress) const override;
+    double max_hoop_stretch(double l1) const override;
+
+    const MaterialConstants &constants() const { return c; }
+
+  private:
+    MaterialConstants c;
+  };
+} // namespace cdea

@@ -1,0 +1,43 @@
+#pragma once
+// The physical scene in SI units, independent of any discretization: what the
+// FE model and the shooting model both solve.
+//
+// Radii a (disk) and b (frame) and the ring edges r_v are measured on the
+// pre-stretched flat film. The membrane occupies A = a/lam_pre <= R <= B = b/lam_pre
+// in the undeformed film, and ring edge r_v sits at R_v = r_v/lam_pre.
+
+#include <cdea/material/gent_dielectric.h>
+#include <cdea/model/voltage_path.h>
+
+#include <vector>
+
+namespace cdea
+{
+  struct Scene
+  {
+    double            disk_radius  = 14e-3; ///< a (m)
+    double            frame_radius = 42e-3; ///< b (m)
+    double            prestretch   = 2.5;   ///< lam_pre (-)
+    MaterialConstants material{25.1e3, 270., 3.98e-11, 1e-3};
+    double            mass    = 0.28; ///< kg
+    double            gravity = 9.81; ///< m/s^2
+    /// n+1 increasing ring edges r/a for n rings; first 1, last b/a.
+    std::vector<double> ring_edges_over_a{1., 3.};
+    VoltagePath         path;
+
+    double       dead_load() const { return mass * gravity; } ///< F (N)
+    unsigned int n_rings() const { return ring_edges_over_a.size() - 1; }
+    double       inner_reference_radius() const { return disk_radius / prestretch; }
+    double       outer_reference_radius() const { return frame_radius / prestretch; }
+    /// Ring edges R_v in the undeformed film (m), n+1 values from A to B.
+    std::vector<double> reference_ring_edges() const;
+    /// Index of the ring that holds reference radius R (edges belong to the
+    /// ring outside them, the last edge to the last ring).
+    unsigned int ring_of(double R) const;
+  };
+
+  /// The paper's actuator (the defaults above) with the given ring edges
+  /// (r/a) and voltage-path waypoints in kV: for tests, benchmarks and studies.
+  Scene paper_scene(const std::vector<double>              &ring_edges_over_a,
+                    const std::vector<std::vector<double>> &waypoints_kV);
+} // namespace cdea

@@ -1,0 +1,63 @@
+#pragma once
+// Newton's method with a backtracking line search, written against a small
+// interface so that the FE model (and later strategies) can swap it.
+//
+// Converged means both: the largest residual entry over residual_scale is below
+// residual_tolerance, and the largest entry of the last update over update_scale
+// is below update_tolerance. The line search halves the step until the residual
+// 2-norm decreases (Armijo with c = 1e-4); a residual that is not finite (a
+// trial state outside the Gent limit, say) counts as no decrease.
+//
+// The problem evaluates its residual together with its tangent at every
+// state Newton visits: the tangent of the accepted state is the next
+// iteration's, and that of the converged state is left for whoever needs it.
+
+#include <cdea/numerics/solve_report.h>
+
+#include <Eigen/Core>
+
+namespace cdea
+{
+  struct NewtonSettings
+  {
+    double       residual_tolerance = 1e-10;
+    double       update_tolerance   = 1e-10;
+    unsigned int max_iterations     = 25;
+    unsigned int max_backtracks     = 10;
+    double       residual_scale     = 1.; ///< force scale of the residual
+    double       update_scale       = 1.; ///< length scale of the unknowns
+  };
+
+  /// F(x) = 0 as Newton sees it.
+  class NonlinearProblem
+  {
+  public:
+    virtual ~NonlinearProblem() = default;
+    /// Residual at @p x (zero in constrained entries) and the tangent there,
+    /// kept for solve_linearized(); a non-finite residual outside the range.
+    virtual void evaluate(const Eigen::VectorXd &x, Eigen::VectorXd &r) = 0;
+    /// Solve J dx = -r with the tangent of the last evaluate() (zero in
+    /// constrained entries; not finite if the tangent is singular).
+    virtual void solve_linearized(const Eigen::VectorXd &r, Eigen::VectorXd &dx) = 0;
+  };
+
+  class NewtonStrategy
+  {
+  public:
+    virtual ~NewtonStrategy() = default;
+    /// Solve from the initial guess @p x; on failure @p x is unspecified.
+    virtual SolveReport solve(NonlinearProblem &problem, Eigen::VectorXd &x) = 0;
+  };
+
+  class LineSearchNewton final : public NewtonStrategy
+  {
+  public:
+    explicit LineSearchNewton(const NewtonSettings &settings)
+      : settings(settings)
+    {}
+    SolveReport solve(NonlinearProblem &problem, Eigen::VectorXd &x) override;
+
+  private:
+    NewtonSettings settings;
+  };
+} // namespace cdea

@@ -1,0 +1,177 @@
+#include <cdea/analysis/commands.h>
+#include <cdea/input/parameters.h>
+#include <cdea/analysis/session.h>
+#include <cdea/analysis/time_run.h>
+#include <cdea/base/format.h>
+#include <cdea/analysis/run_output.h>
+#include <cdea/output/results_file.h>
+#include <cdea/solver/time_stepper.h>
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <sstream>
+
+namespace cdea
+{
+  namespace
+  {
+    /// The root attribute `method` of a time run's results file.
+    const char *const time_method = "finite elements in time";
+
+    double column(const StepSummary &s, const std::string &name)
+    {
+      return summary_column(s, name);
+    }
+
+    /// One cell of the progress table: a blank, then the value right-aligned in
+    /// @p width - 1 characters ("-" if it is NaN), so that columns never run
+    /// together however wide a value grows.
+    std::string cell(const double value, const int decimals, const int width)
+    {
+      return ' ' + (std::isnan(value) ? std::string(width - 2, ' ') + "-" :
+                                        format_fixed(value, decimals, width - 1));
+    }
+  } // namespace
+
+  TimeRunSetup set_up_time_run(const Parameters &p, const Scene &scene)
+  {
+    TimeRunSetup run;
+    run.settings = time_settings(p, scene);
+    run.model    = make_fe_model(p, scene);
+    run.model->set_material_law(material_law(p, scene));
+    run.stepper =
+      std::make_unique<TimeStepper>(scene, *run.model, stepping_settings(p), run.settings);
+    add_run_postprocessors(*run.stepper, p, scene);
+    run.root_attributes = {{"material_model", to_string(p.viscous_material.model)},
+                           {"waveform", to_string(p.time.waveform)},
+                           {"time_scheme", to_string(p.time.scheme)}};
+    return run;
+  }
+
+  RunRecord time_run_in_memory(const RunInput &input)
+  {
+    TimeRunSetup run = set_up_time_run(input.parameters, input.scene);
+    TimeStepper &stepper = *run.stepper;
+    RunRecord    record;
+    record.method          = time_method;
+    record.root_attributes = run.root_attributes;
+    record.time_run        = true;
+    record.n_rings         = input.scene.n_rings();
+    record.parameters      = input.text;
+    record.results_path    = input.parameters.results_path();
+    record.columns         = stepper.columns();
+    stepper.on_step        = [&](const StepSummary &s) {
+      record.steps.push_back(s);
+      record.fields.push_back(stepper.fields_wanted() ? stepper.step_fields() : StepFields());
+    };
+    run_keeping_steps(record, [&] { return stepper.run(); });
+    return record;
+  }
+
+  int run_time(const Parameters &p, const Scene &scene, const std::string &prm_text)
+  {
+    TimeRunSetup        run      = set_up_time_run(p, scene);
+    const TimeSettings &settings = run.settings;
+    MembraneModel      *model    = run.model.get();
+    TimeStepper        &stepper  = *run.stepper;
+
+    const std::string path = p.results_path();
+    std::vector<std::pair<std::string, std::string>> root_attributes = {
+      {"method", time_method}};
+    root_attributes.insert(root_attributes.end(), run.root_attributes.begin(),
+                           run.root_attributes.end());
+    const auto output = RunOutput::open(path, prm_text, scene.n_rings(), root_attributes);
+    if (!output)
+      return exit_input_error;
+    ResultsFile *const file = &output->file();
+    if (!output->prepare([&] {
+          for (const SummaryColumn &c : stepper.columns())
+            file->describe_column(c.name, c.unit, c.description);
+        }))
+      return exit_input_error;
+
+    std::cout << "FE model: " << model->n_elements() << " elements of degree "
+              << p.discretization.polynomial_degree << ", " << model->n_dofs() << " unknowns\n"
+              << "Time: " << to_string(p.time.waveform) << " waveform, peak "
+              << format_kV(settings.waveform.peak())
+              << " over " << format_number(settings.waveform.end_time()) << " s, steps up to "
+              << format_number(settings.max_step) << " s (" << to_string(settings.scheme)
+              << "), material " << to_string(p.viscous_material.model)
+              << (settings.inertia ? ", disk inertia" : ", no inertia")
+              << (settings.water_density > 0. ? " and water column" : "") << '\n'
+              << "writing " << path << '\n';
+    const unsigned int n = scene.n_rings();
+    std::cout << std::setw(6) << "step" << std::setw(12) << "stage" << std::setw(11) << "time (s)"
+              << std::setw(7 * n) << "V (kV)" << std::setw(12) << "disp (mm)" << std::setw(12)
+              << "stroke (mm)" << std::setw(11) << "level (mm)" << std::setw(11) << "v (mm/s)"
+              << std::setw(11) << "min s2/mu" << std::setw(5) << "its" << '\n';
+    StepSummary  last;
+    unsigned int newton_iterations_of_steps = 0;
+    stepper.on_step = [&](const StepSummary &s) {
+      file->append(s, stepper.fields_wanted() ? stepper.step_fields() : StepFields(), s.columns);
+      last = s;
+      RunOutput::stop_point();
+      std::ostringstream v;
+      for (const double x : s.voltages)
+        v << cell(x * 1e-3, 3, 7);
+      std::cout << std::setw(6) << file->n_steps() - 1 << std::setw(12)
+                << (s.stage == Stage::voltage ? "time" : stage_name(s.stage))
+                << cell(column(s, "time_s"), 4, 11) << v.str() << cell(s.displacement * 1e3, 5, 12)
+                << cell(s.stroke * 1e3, 5, 12) << cell(column(s, "level_drop_mm"), 3, 11)
+                << cell(column(s, "disk_velocity_mm_per_s"), 2, 11)
+                << cell(s.s2_min / scene.material.shear_modulus, 4, 11) << ' ' << std::setw(4)
+                << s.newton_iterations << '\n';
+      newton_iterations_of_steps += s.newton_iterations;
+    };
+    stepper.on_onset = [&](const OnsetRecord &onset) {
+      file->write_onset(onset);
+      std::cout << "      loss of tension (s2 = 0) at t = " << format_number(onset.load_factor, 8)
+                << " s, " << format_kV(onset.voltages) << ", radius r = "
+                << format_number(onset.radius * 1e3) << " mm" << std::endl;
+    };
+
+    // The disk's natural frequency sqrt(k/m) / 2 pi at the first and the last
+    // state of the time integration (k: the condensed static tangent).
+    double     frequency_start = std::numeric_limits<double>::quiet_NaN();
+    const auto frequency       = [&] {
+      return scene.mass > 0. ? std::sqrt(std::max(model->disk_stiffness(), 0.) / scene.mass) /
+                                 (2. * M_PI) :
+                               std::numeric_limits<double>::quiet_NaN();
+    };
+    const auto on_step = stepper.on_step;
+    stepper.on_step    = [&](const StepSummary &s) {
+      if (std::isnan(frequency_start) && !std::isnan(column(s, "time_s")))
+        frequency_start = frequency();
+      on_step(s);
+    };
+
+    const auto      start  = std::chrono::steady_clock::now();
+    const RunResult result = output->guard([&] { return stepper.run(); });
+    const double    seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // A value that a run stopped early never reached prints as "-", not "nan".
+    const auto number = [](const double value, const int digits) {
+      return std::isnan(value) ? std::string("-") : format_number(value, digits);
+    };
+    std::cout << "\nFinal state: t = " << format_number(stepper.time(), 8) << " s, voltages "
+              << format_kV(last.voltages) << ", displacement "
+              << format_number(last.displacement * 1e3, 8) << " mm, stroke "
+              << number(last.stroke * 1e3, 8) << " mm, level drop "
+              << number(column(last, "level_drop_mm"), 6) << " mm\n"
+              << "  energy since t = 0: electrical work "
+              << number(column(last, "electrical_work_mJ"), 6) << " mJ, stored "
+              << number(column(last, "stored_energy_change_mJ"), 6) << " mJ, dissipated "
+              << number(column(last, "dissipated_energy_mJ"), 6) << " mJ\n"
+              << "  disk's natural frequency sqrt(k/m) / 2 pi: "
+              << number(frequency_start, 4) << " Hz at the start, " << number(frequency(), 4)
+              << " Hz at the end\n"
+              << result.steps << " steps, "
+              << (result.completed ? result.newton_iterations : newton_iterations_of_steps)
+              << " Newton iterations, "
+              << std::setprecision(3) << seconds << " s" << std::endl;
+    return output->finish(result);
+  }
+} // namespace cdea

@@ -1,0 +1,59 @@
+#include <cdea/base/format.h>
+
+#include <cstdio>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace cdea
+{
+  std::string format_kV(const std::vector<double> &volts, const int digits)
+  {
+    std::ostringstream o;
+    o.precision(digits);
+    for (std::size_t i = 0; i < volts.size(); ++i)
+      o << (i ? ", " : "") << volts[i] * 1e-3;
+    return o.str() + " kV";
+  }
+
+  std::string format_kV(const double volts, const int digits)
+  {
+    return format_kV(std::vector<double>{volts}, digits);
+  }
+
+  std::string format_number(const double value, const int digits)
+  {
+    std::ostringstream o;
+    o.precision(digits);
+    o << value;
+    return o.str();
+  }
+
+  std::string format_fixed(const double value, const int decimals, const int width)
+  {
+    std::ostringstream o;
+    o << std::fixed << std::setprecision(decimals) << std::setw(width) << value;
+    return o.str();
+  }
+
+  std::string exact_number(const double value)
+  {
+    char buffer[40];
+    std::snprintf(buffer, sizeof buffer, "%.17g", value);
+    return buffer;
+  }
+
+  std::string format_fixed_or_dash(const double value, const int decimals)
+  {
+    return std::isnan(value) ? "-" : format_fixed(value, decimals);
+  }
+
+  std::string format_fixed_list(const std::vector<double> &values, const int decimals,
+                                const double factor)
+  {
+    std::string s;
+    for (std::size_t i = 0; i < values.size(); ++i)
+      s += (i ? " " : "") + format_fixed(values[i] * factor, decimals);
+    return s;
+  }
+} // namespace cdea

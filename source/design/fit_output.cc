@@ -1,0 +1,92 @@
+// What `cdea fit` writes: <Base name>_fit.h5 and <Base name>_fit.prm.
+
+#include <cdea/design/fit.h>
+#include <cdea/output/hdf5_writer.h>
+
+#ifndef CDEA_VERSION
+#  define CDEA_VERSION "unknown"
+#endif
+
+namespace cdea
+{
+  ParameterChange fitted_entry(const SceneParameter &p, const double value)
+  {
+    switch (p.kind)
+      {
+        case ParameterKind::shear_modulus:
+          return {"Material", "Shear modulus (kPa)", exact_number(value * 1e-3)};
+        case ParameterKind::jlim:
+          return {"Material", "Jlim", exact_number(value)};
+        case ParameterKind::permittivity:
+          return {"Material", "Permittivity (F/m)", exact_number(value)};
+        case ParameterKind::mass:
+          return {"Loading", "Mass (g)", exact_number(value * 1e3)};
+        case ParameterKind::prestretch:
+          return {"Geometry", "Prestretch", exact_number(value)};
+        default:
+          throw std::invalid_argument("fitted_entry: " + p.name() + " is not a fit parameter");
+      }
+  }
+
+  void write_fit_file(const std::string &path, const std::string &parameter_text,
+                      const CalibrationData &data, const FitSettings &settings,
+                      const FitResult &r, const std::vector<std::vector<double>> &curve_kV,
+                      const std::vector<double> &curve_mm, const unsigned int solves)
+  {
+    const std::size_t K = settings.free.size(), M = data.size();
+    const std::size_t N = M ? data.voltages[0].size() : 0;
+    Hdf5Writer        w(path);
+    std::string       names, warnings;
+    for (const auto &p : settings.free)
+      names += (names.empty() ? "" : "; ") + p.name();
+    for (const auto &x : r.warnings)
+      warnings += (warnings.empty() ? "" : "\n") + x;
+    w.attribute("/", "parameters", parameter_text);
+    w.attribute("/", "code_version", std::string(CDEA_VERSION));
+    w.attribute("/", "free_parameters", names);
+    w.attribute("/", "initial_values", r.initial);
+    w.attribute("/", "fitted_values", r.values);
+    w.attribute("/", "standard_errors", r.standard_errors);
+    w.attribute("/", "rms_residual_mm", r.rms * 1e3);
+    w.attribute("/", "condition_number", r.condition);
+    w.attribute("/", "converged", int(r.converged));
+    w.attribute("/", "status", r.status);
+    w.attribute("/", "warnings", warnings);
+    w.attribute("/", "iterations", int(r.iterations));
+    w.attribute("/", "evaluations", int(r.evaluations));
+    w.attribute("/", "solves", int(solves));
+    {
+      std::vector<double> c(K * K);
+      for (std::size_t i = 0; i < K; ++i)
+        for (std::size_t j = 0; j < K; ++j)
+          c[i * K + j] = r.correlation.size() ? r.correlation(i, j) : NAN;
+      w.dataset("/correlation", {K, K}, c, "1",
+                "correlation matrix of the fitted parameters (order of free_parameters)");
+    }
+    w.group("/data");
+    std::vector<double> volts, measured, fitted, residual;
+    for (std::size_t i = 0; i < M; ++i)
+      {
+        for (const double v : data.voltages[i])
+          volts.push_back(v * 1e-3);
+        measured.push_back(data.displacement[i] * 1e3);
+        fitted.push_back(r.fitted.size() ? r.fitted[i] * 1e3 : NAN);
+        residual.push_back(r.residuals.size() ? r.residuals[i] * 1e3 : NAN);
+      }
+    w.dataset("/data/voltage_kV", {M, N}, volts, "kV", "ring voltages of each data point");
+    w.dataset("/data/displacement_mm", {M}, measured, "mm", "measured displacement");
+    w.dataset("/data/weight", {M}, data.weight, "1", "weight of each point");
+    w.dataset("/data/fitted_mm", {M}, fitted, "mm",
+              "model displacement at the fitted parameters, each point ramped from zero");
+    w.dataset("/data/residual_mm", {M}, residual, "mm", "model minus measured");
+    w.group("/curve");
+    std::vector<double> curve_volts;
+    for (const auto &v : curve_kV)
+      curve_volts.insert(curve_volts.end(), v.begin(), v.end());
+    w.dataset("/curve/voltage_kV", {curve_kV.size(), N}, curve_volts, "kV",
+              "ring voltages along the data in file order (8 steps between points)");
+    w.dataset("/curve/displacement_mm", {curve_mm.size()}, curve_mm, "mm",
+              "model displacement along the data at the fitted parameters, by continuation");
+    w.commit();
+  }
+} // namespace cdea

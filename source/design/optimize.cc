@@ -1,0 +1,525 @@
+// One start of the layout optimization with NLopt: starting layouts, the
+// scaled problem (variables in [0, 1] between their bounds, objective and
+// constraints of order one) and the best layout, confirmed by a ramp.
+
+#include <cdea/design/optimize.h>
+#include <cdea/base/run_control.h>
+#include <cdea/base/format.h>
+
+#include <Eigen/QR>
+#include <nlopt.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+namespace cdea
+{
+  namespace
+  {
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    /// NLopt aims at constraints below this (scaled: s2 in units of mu) ...
+    constexpr double constraint_tolerance = 1e-8;
+    /// ... and a layout counts as feasible up to this, the accuracy of s2
+    /// from Newton-converged states (s2 >= -1e-6 mu).
+    constexpr double feasibility_tolerance = 1e-6;
+    /// Scaled constraints above this at the optimum are reported as active.
+    constexpr double active_tolerance = 1e-6;
+    /// Relative first-order (KKT) residual of a converged optimum.
+    constexpr double optimality_tolerance = 1e-3;
+
+    /// The k-th number of the van der Corput sequence in @p base.
+    double radical_inverse(unsigned int k, const unsigned int base)
+    {
+      double x = 0., f = 1. / base;
+      for (; k > 0; k /= base, f /= base)
+        x += f * (k % base);
+      return x;
+    }
+
+    /// Free edges at fractions @p t of their room: each run of free edges
+    /// between fixed neighbours spreads over the part of the bounds between
+    /// them, in increasing order, then every ring is made at least the
+    /// minimum width (forward, then backward).
+    std::vector<double> place_edges(const OptimizationSettings &s, std::vector<double> t)
+    {
+      std::vector<double> e = s.edges;
+      const unsigned int  N = s.n_rings;
+      for (unsigned int k = 1; k < N;)
+        {
+          if (!std::isnan(s.edges[k]))
+            {
+              ++k;
+              continue;
+            }
+          unsigned int end = k;
+          while (end < N && std::isnan(s.edges[end]))
+            ++end;
+          const double lo = std::max(s.edge_lower, e[k - 1] + s.min_ring_width);
+          const double hi = std::min(s.edge_upper, s.edges[end] - s.min_ring_width);
+          std::vector<double> run(t.begin() + (k - 1), t.begin() + (end - 1));
+          std::sort(run.begin(), run.end());
+          for (unsigned int j = k; j < end; ++j)
+            e[j] = lo + (hi - lo) * run[j - k];
+          k = end;
+        }
+      for (unsigned int k = 1; k < N; ++k)
+        if (std::isnan(s.edges[k]))
+          e[k] = std::clamp(std::max(e[k], e[k - 1] + s.min_ring_width), s.edge_lower,
+                            s.edge_upper);
+      for (unsigned int k = N - 1; k >= 1; --k)
+        if (std::isnan(s.edges[k]))
+          e[k] = std::clamp(std::min(e[k], e[k + 1] - s.min_ring_width), s.edge_lower,
+                            s.edge_upper);
+      return e;
+    }
+
+    std::string nlopt_status(const nlopt::result r)
+    {
+      switch (r)
+        {
+          case nlopt::SUCCESS:
+            return "success";
+          case nlopt::STOPVAL_REACHED:
+            return "objective limit reached";
+          case nlopt::FTOL_REACHED:
+            return "objective tolerance reached";
+          case nlopt::XTOL_REACHED:
+            return "variable tolerance reached";
+          case nlopt::MAXEVAL_REACHED:
+            return "Optimization/Max evaluations reached";
+          case nlopt::MAXTIME_REACHED:
+            return "time limit";
+          case nlopt::ROUNDOFF_LIMITED:
+            return "no further progress (round-off)";
+          case nlopt::FORCED_STOP:
+            return "forced stop";
+          default:
+            return "failure (" + std::to_string(int(r)) + ")";
+        }
+    }
+
+    std::string position(const Scene &base, const PointValues &points, const unsigned int k)
+    {
+      std::ostringstream o;
+      o << "r/a = " << format_number(base.prestretch * points.R[k] / base.disk_radius, 5)
+        << (k >= points.n_quadrature_points ? " (inner edge of ring " : " (in ring ")
+        << points.ring[k] + 1 << ")";
+      return o.str();
+    }
+  } // namespace
+
+  std::vector<Layout> starting_layouts(const OptimizationSettings &s)
+  {
+    static const unsigned int primes[] = {2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43,
+                                          47, 53, 59, 61, 67, 71, 73, 79, 83, 89, 97};
+    std::vector<Layout>       starts;
+    for (unsigned int k = 0; k < s.starts; ++k)
+      {
+        // Start 0 spreads the edges evenly and puts every free voltage at
+        // 60 % of its range; the others are points of a Halton sequence,
+        // voltages within the lower 80 % of their range.
+        std::vector<double> t_edge(s.n_rings - 1), t_voltage(s.n_rings);
+        for (unsigned int j = 0; j < s.n_rings; ++j)
+          {
+            const unsigned int b = primes[j % 25];
+            t_voltage[j]         = k == 0 ? 0.6 : 0.8 * radical_inverse(k, b);
+            if (j + 1 < s.n_rings)
+              t_edge[j] = k == 0 ? (j + 1.) / s.n_rings :
+                                   radical_inverse(k, primes[(s.n_rings + j) % 25]);
+          }
+        Layout layout;
+        layout.edges = place_edges(s, t_edge);
+        for (unsigned int j = 0; j < s.n_rings; ++j)
+          layout.voltages.push_back(std::isnan(s.voltages[j]) ?
+                                      s.voltage_lower +
+                                        t_voltage[j] * (s.voltage_upper - s.voltage_lower) :
+                                      s.voltages[j]);
+        starts.push_back(layout);
+      }
+    return starts;
+  }
+
+  void constraints(const OptimizationSettings &s, const Scene &base, const Layout &layout,
+                   const LayoutEvaluation &e, Eigen::VectorXd &c, Eigen::MatrixXd &dc,
+                   std::vector<std::string> *names)
+  {
+    const auto         free     = s.free_parameters();
+    const unsigned int n_points = e.points.s2.size();
+    const bool         field    = std::isfinite(s.max_field);
+    const double       mu       = base.material.shear_modulus;
+    const double       span     = base.frame_radius / base.disk_radius - 1.;
+    std::vector<unsigned int> rings; // rings whose width has a free edge
+    for (unsigned int j = 0; j < s.n_rings; ++j)
+      if (std::isnan(s.edges[j]) || std::isnan(s.edges[j + 1]))
+        rings.push_back(j);
+    const unsigned int m = n_points * (field ? 2 : 1) + rings.size();
+    c.resize(m);
+    dc.setZero(m, free.size());
+    if (names)
+      names->clear();
+    unsigned int row = 0;
+    for (unsigned int k = 0; k < n_points; ++k, ++row)
+      {
+        c[row]      = (s.min_hoop_stress - e.points.s2[k]) / mu;
+        dc.row(row) = -e.points.d_s2.row(k) / mu;
+        if (names)
+          names->push_back("s2 >= " + format_number(s.min_hoop_stress * 1e-3) + " kPa at " +
+                           position(base, e.points, k));
+      }
+    if (field)
+      for (unsigned int k = 0; k < n_points; ++k, ++row)
+        {
+          c[row]      = (e.points.field[k] - s.max_field) / s.max_field;
+          dc.row(row) = e.points.d_field.row(k) / s.max_field;
+          if (names)
+            names->push_back("E <= " + format_number(s.max_field * 1e-6) + " MV/m at " +
+                             position(base, e.points, k));
+        }
+    for (const unsigned int j : rings)
+      {
+        c[row] = (s.min_ring_width - (layout.edges[j + 1] - layout.edges[j])) / span;
+        for (std::size_t v = 0; v < free.size(); ++v)
+          if (free[v].kind == ParameterKind::ring_edge)
+            dc(row, v) = free[v].index == j + 1 ? -1. / span : free[v].index == j ? 1. / span : 0.;
+        if (names)
+          names->push_back("ring " + std::to_string(j + 1) + " at least " +
+                           format_number(s.min_ring_width * base.disk_radius * 1e3) +
+                           " mm wide");
+        ++row;
+      }
+  }
+
+  StartResult optimize_from(const Scene &base, const OptimizationSettings &s,
+                            LayoutEvaluator &evaluator, const unsigned int index,
+                            const Layout &start,
+                            const std::function<void(const HistoryRow &)> &on_evaluation)
+  {
+    const auto         clock_start = std::chrono::steady_clock::now();
+    const unsigned int solves0 = evaluator.solves(), iterations0 = evaluator.newton_iterations();
+    const auto         free = s.free_parameters();
+    const unsigned int n    = free.size();
+    const bool         stroke = s.objective == DesignObjective::stroke;
+    // Objective in mm (stroke) or 1000 mm^3 (volume change).
+    const double scale = stroke ? 1e-3 : 1e-6;
+    std::vector<double> lower(n), upper(n);
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        const bool voltage = free[j].kind == ParameterKind::voltage;
+        lower[j]           = voltage ? s.voltage_lower : s.edge_lower;
+        upper[j]           = voltage ? s.voltage_upper : s.edge_upper;
+      }
+
+    StartResult result;
+    result.start   = index;
+    result.initial = start;
+
+    // The start must be reachable from zero voltage: lower its voltages
+    // until the ramp passes no fold.
+    Layout           layout = start;
+    LayoutEvaluation first  = evaluator.ramp(layout);
+    for (unsigned int k = 0; k < 20 && !first.ok; ++k)
+      {
+        for (double &v : layout.voltages)
+          v *= 0.9;
+        first = evaluator.ramp(layout);
+      }
+    result.initial = layout;
+    if (!first.ok)
+      {
+        result.status = "stopped: no starting layout reachable from zero voltage: " + first.message;
+        return result;
+      }
+
+    // The evaluation of the last point the optimizer asked for.
+    std::vector<double> cached_y;
+    LayoutEvaluation    evaluation = first;
+    Layout              evaluated  = layout;
+    Eigen::VectorXd     c;
+    Eigen::MatrixXd     dc;
+    bool                have_first = true;
+    double              best_objective = -std::numeric_limits<double>::infinity();
+    double              best_violation = std::numeric_limits<double>::infinity();
+    Layout              best           = layout;
+
+    const auto to_layout = [&](const double *y) {
+      std::vector<double> values(n);
+      for (unsigned int j = 0; j < n; ++j)
+        values[j] = lower[j] + (upper[j] - lower[j]) * y[j];
+      Layout l = layout;
+      l.set_free_values(free, values);
+      return l;
+    };
+    const auto evaluate_at = [&](const double *y) {
+      if (cached_y.size() == n && std::equal(cached_y.begin(), cached_y.end(), y))
+        return;
+      cached_y.assign(y, y + n);
+      evaluated = to_layout(y);
+      if (have_first && evaluated.voltages == layout.voltages && evaluated.edges == layout.edges)
+        evaluation = first;
+      else
+        try
+          {
+            evaluation = evaluator.evaluate(evaluated);
+          }
+        catch (const std::exception &error)
+          {
+            // A singular tangent or a state outside the material's range:
+            // this layout is rejected like one behind a fold.
+            evaluation         = LayoutEvaluation();
+            evaluation.message = error.what();
+          }
+      have_first = false;
+      HistoryRow row;
+      row.start      = index;
+      row.evaluation = ++result.evaluations;
+      row.objective  = nan;
+      if (evaluation.ok)
+        {
+          constraints(s, base, evaluated, evaluation, c, dc);
+          row.objective = (stroke ? evaluation.stroke : evaluation.volume_change) / scale;
+          row.worst_constraint = c.size() ? c.maxCoeff() : 0.;
+          const bool feasible  = row.worst_constraint <= feasibility_tolerance;
+          if ((feasible && (best_violation > feasibility_tolerance ||
+                            row.objective > best_objective)) ||
+              (!feasible && row.worst_constraint < best_violation &&
+               best_violation > feasibility_tolerance))
+            {
+              best_objective = row.objective;
+              best_violation = row.worst_constraint;
+              best           = evaluated;
+            }
+        }
+      else
+        {
+          row.worst_constraint = nan;
+          row.message          = evaluation.message;
+        }
+      for (unsigned int j = 0; j < n; ++j)
+        row.free_values.push_back(evaluated.free_values(free)[j] *
+                                  (free[j].kind == ParameterKind::voltage ? 1e-3 : 1.));
+      result.history.push_back(row);
+      if (on_evaluation)
+        on_evaluation(row);
+    };
+
+    const unsigned int m = [&] {
+      Eigen::VectorXd c0;
+      Eigen::MatrixXd d0;
+      constraints(s, base, layout, first, c0, d0);
+      return unsigned(c0.size());
+    }();
+
+    nlopt::opt opt(s.algorithm == DesignAlgorithm::mma ? nlopt::LD_MMA : nlopt::LD_SLSQP, n);
+    opt.set_lower_bounds(std::vector<double>(n, 0.));
+    opt.set_upper_bounds(std::vector<double>(n, 1.));
+    using Objective = std::function<double(unsigned, const double *, double *)>;
+    using Constraint = std::function<void(unsigned, double *, unsigned, const double *, double *)>;
+    Objective objective = [&](unsigned, const double *y, double *grad) {
+      if (StopOnSignals::requested() != 0)
+        throw nlopt::forced_stop(); // NLopt returns, with FORCED_STOP
+      evaluate_at(y);
+      if (!evaluation.ok)
+        {
+          if (grad)
+            std::fill(grad, grad + n, 0.);
+          return HUGE_VAL;
+        }
+      const Eigen::VectorXd &d = stroke ? evaluation.d_stroke : evaluation.d_volume_change;
+      if (grad)
+        for (unsigned int j = 0; j < n; ++j)
+          grad[j] = -d[j] * (upper[j] - lower[j]) / scale;
+      return -(stroke ? evaluation.stroke : evaluation.volume_change) / scale;
+    };
+    Constraint constraint = [&](unsigned, double *out, unsigned, const double *y, double *grad) {
+      evaluate_at(y);
+      for (unsigned int i = 0; i < m; ++i)
+        {
+          out[i] = evaluation.ok ? c[i] : nan;
+          if (grad)
+            for (unsigned int j = 0; j < n; ++j)
+              grad[i * n + j] = evaluation.ok ? dc(i, j) * (upper[j] - lower[j]) : 0.;
+        }
+    };
+    opt.set_min_objective(
+      [](unsigned nn, const double *y, double *g, void *data) {
+        return (*static_cast<Objective *>(data))(nn, y, g);
+      },
+      &objective);
+    if (m > 0)
+      opt.add_inequality_mconstraint(
+        [](unsigned mm, double *out, unsigned nn, const double *y, double *g, void *data) {
+          (*static_cast<Constraint *>(data))(mm, out, nn, y, g);
+        },
+        &constraint, std::vector<double>(m, constraint_tolerance));
+    opt.set_xtol_rel(s.tolerance);
+    opt.set_xtol_abs(std::vector<double>(n, s.tolerance));
+    opt.set_ftol_rel(s.tolerance);
+
+    // First-order optimality of an evaluated layout in the scaled
+    // variables: grad f + A lambda = 0 over the active constraints and
+    // bounds with lambda >= 0.
+    struct Assessment
+    {
+      double                   objective = nan, worst = nan, optimality = nan;
+      bool                     signs = true, converged = false;
+      std::vector<std::string> active;
+    };
+    const auto assess = [&](const Layout &l, const LayoutEvaluation &e) {
+      Assessment               a;
+      std::vector<std::string> names;
+      if (!e.ok)
+        return a;
+      constraints(s, base, l, e, c, dc, &names);
+      a.objective              = (stroke ? e.stroke : e.volume_change) / scale;
+      a.worst                  = c.size() ? c.maxCoeff() : 0.;
+      const Eigen::VectorXd &d = stroke ? e.d_stroke : e.d_volume_change;
+      Eigen::VectorXd        g(n);
+      for (unsigned int j = 0; j < n; ++j)
+        g[j] = -d[j] * (upper[j] - lower[j]) / scale;
+      std::vector<Eigen::VectorXd> columns;
+      for (int i = 0; i < c.size(); ++i)
+        if (c[i] > -active_tolerance)
+          {
+            a.active.push_back(names[i]);
+            columns.push_back(dc.row(i).transpose().cwiseProduct(
+              Eigen::Map<const Eigen::VectorXd>(upper.data(), n) -
+              Eigen::Map<const Eigen::VectorXd>(lower.data(), n)));
+          }
+      const auto values = l.free_values(free);
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          const double t = (values[j] - lower[j]) / (upper[j] - lower[j]);
+          if (t < 1e-9 || t > 1. - 1e-9)
+            {
+              a.active.push_back(free[j].name() + " at its " + (t < 0.5 ? "lower" : "upper") +
+                                 " bound");
+              columns.push_back((t < 0.5 ? -1. : 1.) * Eigen::VectorXd::Unit(n, j));
+            }
+        }
+      Eigen::MatrixXd A(n, columns.size());
+      for (std::size_t k = 0; k < columns.size(); ++k)
+        A.col(k) = columns[k];
+      const Eigen::VectorXd lambda = columns.empty() ?
+                                       Eigen::VectorXd() :
+                                       Eigen::VectorXd(A.completeOrthogonalDecomposition().solve(-g));
+      const Eigen::VectorXd residual = columns.empty() ? g : Eigen::VectorXd(g + A * lambda);
+      a.optimality = residual.norm() / std::max(g.norm(), 1e-300);
+      a.signs      = lambda.size() == 0 || lambda.minCoeff() >= -1e-6 * g.norm();
+      a.converged  = a.worst <= feasibility_tolerance && a.optimality <= optimality_tolerance &&
+                    a.signs;
+      return a;
+    };
+
+    // SLSQP's merit function can stall a little outside the feasible set
+    // (its penalty approaching the multipliers); a fresh start from the best
+    // layout (new quasi-Newton matrix and penalty) then finishes the job.
+    std::vector<double> y(n);
+    nlopt::result       status = nlopt::SUCCESS;
+    for (unsigned int round = 0; round < 3 && result.evaluations < s.max_evaluations; ++round)
+      {
+        const auto values0 = best.free_values(free);
+        for (unsigned int j = 0; j < n; ++j)
+          y[j] = std::clamp((values0[j] - lower[j]) / (upper[j] - lower[j]), 0., 1.);
+        opt.set_maxeval(int(s.max_evaluations - result.evaluations));
+        double f = 0.;
+        try
+          {
+            status = opt.optimize(y, f);
+          }
+        catch (const std::exception &)
+          {
+            status = opt.last_optimize_result();
+          }
+        if (StopOnSignals::requested() != 0 || assess(best, evaluator.evaluate(best)).converged)
+          break;
+      }
+    result.status = nlopt_status(status);
+
+    // The optimizer ends on the constraint boundary from either side, and
+    // the best layout is often a little outside (within the feasibility
+    // tolerance), where the replay by `cdea run` would see s2 just below
+    // zero. One Gauss-Newton step on the active constraints, to a small
+    // margin inside, moves it onto the boundary; kept only if it is
+    // feasible and loses no more than a relative 1e-5 of the objective
+    // (the step is of the size of the violation, at most 1e-6).
+    {
+      const LayoutEvaluation at = evaluator.evaluate(best);
+      if (at.ok)
+        {
+          constraints(s, base, best, at, c, dc);
+          const double objective = (stroke ? at.stroke : at.volume_change) / scale;
+          std::vector<int> active;
+          for (int i = 0; i < c.size(); ++i)
+            if (c[i] > -active_tolerance)
+              active.push_back(i);
+          if (c.size() && c.maxCoeff() > 0. && c.maxCoeff() <= feasibility_tolerance)
+            {
+              constexpr double margin = 1e-9; // in units of mu (s2), of the limit (E)
+              Eigen::MatrixXd  A(active.size(), n);
+              Eigen::VectorXd  target(active.size());
+              for (std::size_t k = 0; k < active.size(); ++k)
+                {
+                  for (unsigned int j = 0; j < n; ++j)
+                    A(k, j) = dc(active[k], j) * (upper[j] - lower[j]);
+                  target[k] = -margin - c[active[k]];
+                }
+              const Eigen::VectorXd step   = A.completeOrthogonalDecomposition().solve(target);
+              const auto            values = best.free_values(free);
+              std::vector<double>   moved(n);
+              for (unsigned int j = 0; j < n; ++j)
+                moved[j] = std::clamp(values[j] + step[j] * (upper[j] - lower[j]), lower[j],
+                                      upper[j]);
+              Layout candidate = best;
+              candidate.set_free_values(free, moved);
+              const LayoutEvaluation there = evaluator.evaluate(candidate);
+              if (there.ok)
+                {
+                  constraints(s, base, candidate, there, c, dc);
+                  const double moved_objective =
+                    (stroke ? there.stroke : there.volume_change) / scale;
+                  if (c.maxCoeff() <= 0. &&
+                      moved_objective >= objective - 1e-5 * std::abs(objective))
+                    best = candidate;
+                }
+            }
+        }
+    }
+
+    // The best layout, confirmed from zero voltage as `cdea run` would reach it.
+    result.best    = best;
+    result.at_best = evaluator.ramp(best);
+    if (!result.at_best.ok)
+      {
+        result.status += "; the best layout could not be confirmed by a ramp from zero: " +
+                         result.at_best.message;
+        result.worst_constraint = nan;
+      }
+    else
+      {
+        const Assessment a      = assess(best, result.at_best);
+        result.objective        = a.objective;
+        result.worst_constraint = a.worst;
+        result.optimality       = a.optimality;
+        result.active           = a.active;
+        result.converged        = a.converged;
+        const std::string nlopt = "NLopt: " + result.status;
+        if (result.converged)
+          result.status = "optimal (first-order residual " + format_number(result.optimality, 2) +
+                          "; " + nlopt + ")";
+        else
+          result.status = (result.worst_constraint > feasibility_tolerance ?
+                             std::string("NOT converged: no feasible layout found") :
+                             "NOT converged: first-order residual " +
+                               format_number(result.optimality, 2) +
+                               (a.signs ? "" : ", a constraint pushes the wrong way")) +
+                          " (" + nlopt + ")";
+      }
+    result.solves            = evaluator.solves() - solves0;
+    result.newton_iterations = evaluator.newton_iterations() - iterations0;
+    result.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+    return result;
+  }
+} // namespace cdea

@@ -1,0 +1,89 @@
+#include <cdea/numerics/newton.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace cdea
+{
+  SolveReport LineSearchNewton::solve(NonlinearProblem &problem, Eigen::VectorXd &x)
+  {
+    SolveReport     report;
+    Eigen::VectorXd r, dx, trial, r_trial;
+    problem.evaluate(x, r);
+    double res = r.lpNorm<Eigen::Infinity>() / settings.residual_scale;
+    // allFinite(): the largest entry of a residual with NaN entries (outside
+    // the range, constrained entries zero) may come out as 0.
+    if (!r.allFinite() || !std::isfinite(res))
+      {
+        report.message = "the initial guess lies outside the material's range";
+        return report;
+      }
+    // An exact predictor (the homogeneous pre-stretch) needs no iteration.
+    if (res < 1e-3 * settings.residual_tolerance)
+      {
+        report.converged = true;
+        return report;
+      }
+    for (unsigned int k = 1; k <= settings.max_iterations; ++k)
+      {
+        report.iterations = k;
+        problem.solve_linearized(r, dx);
+        const double upd = dx.lpNorm<Eigen::Infinity>() / settings.update_scale;
+        if (!std::isfinite(upd))
+          {
+            report.message = "the tangent is singular or not finite";
+            return report;
+          }
+        const double norm0    = r.norm();
+        double       alpha    = 1.;
+        bool         accepted = false;
+        for (unsigned int b = 0; b <= settings.max_backtracks; ++b, alpha *= 0.5)
+          {
+            trial = x + alpha * dx;
+            problem.evaluate(trial, r_trial);
+            const double norm = r_trial.norm();
+            if (std::isfinite(norm) &&
+                (norm <= (1. - 1e-4 * alpha) * norm0 ||
+                 norm / settings.residual_scale < settings.residual_tolerance))
+              {
+                accepted = true;
+                break;
+              }
+          }
+        if (!accepted)
+          {
+            std::ostringstream m;
+            m << "the line search found no decrease of the residual at Newton iteration " << k
+              << " (residual " << res << ")";
+            if (res < 1e3 * settings.residual_tolerance)
+              m << "; the residual has stalled near the tolerance, at the round-off level "
+                   "of this discretization: Solver/Residual tolerance may be below what it "
+                   "can reach";
+            report.message = m.str();
+            return report;
+          }
+        x.swap(trial);
+        r.swap(r_trial);
+        res = r.lpNorm<Eigen::Infinity>() / settings.residual_scale;
+        if (res < settings.residual_tolerance && alpha * upd < settings.update_tolerance)
+          {
+            report.converged = true;
+            return report;
+          }
+        // Near the solution the error left after a full update u is O(u^2):
+        // an update below 1e-2 sqrt(update tolerance) already leaves an error
+        // far below the tolerance, so another iteration is not needed.
+        if (res < settings.residual_tolerance && alpha == 1. &&
+            upd < std::sqrt(settings.update_tolerance) * 1e-2)
+          {
+            report.converged = true;
+            return report;
+          }
+      }
+    std::ostringstream m;
+    m << "Newton did not converge in " << settings.max_iterations
+      << " iterations (scaled residual " << res << ")";
+    report.message = m.str();
+    return report;
+  }
+} // namespace cdea

@@ -1,0 +1,90 @@
+#include <cdea/solver/state_check.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace cdea
+{
+  namespace
+  {
+    struct Point2
+    {
+      double r, z;
+    };
+
+    bool operator==(const Point2 &a, const Point2 &b)
+    {
+      return a.r == b.r && a.z == b.z;
+    }
+
+    /// Sign of the turn a -> b -> c (cross product of b - a and c - a).
+    int orientation(const Point2 &a, const Point2 &b, const Point2 &c)
+    {
+      const double x = (b.r - a.r) * (c.z - a.z) - (b.z - a.z) * (c.r - a.r);
+      return (x > 0.) - (x < 0.);
+    }
+
+    /// Segments pq and uv cross at a point inside both (a touch at an end
+    /// point or a collinear overlap does not count: neighbouring segments
+    /// share end points).
+    bool cross(const Point2 &p, const Point2 &q, const Point2 &u, const Point2 &v)
+    {
+      const int o1 = orientation(p, q, u), o2 = orientation(p, q, v);
+      const int o3 = orientation(u, v, p), o4 = orientation(u, v, q);
+      return o1 * o2 < 0 && o3 * o4 < 0;
+    }
+  } // namespace
+
+  int nonphysical_flags(const StepFields &f, const double frame_radius)
+  {
+    int flags = physical;
+    // 1e-9 b: the end sample sits on the frame up to round-off.
+    const double tolerance = 1e-9 * frame_radius;
+    for (const double r : f.r)
+      if (r < -tolerance || r > frame_radius + tolerance)
+        flags |= outside_frame;
+
+    // The polyline: the disk from the axis to r(A), then the meridian, with
+    // repeated points (the two samples of a ring edge) dropped.
+    std::vector<Point2> line;
+    if (!f.r.empty())
+      line.push_back({0., f.z.front()});
+    for (std::size_t i = 0; i < f.r.size(); ++i)
+      {
+        const Point2 p{f.r[i], f.z[i]};
+        if (line.empty() || !(p == line.back()))
+          line.push_back(p);
+      }
+    // A line whose r never decreases cannot cross itself (two segments that
+    // are not neighbours share an r only at end points or on a common
+    // vertical): O(n), the answer for every usual state.
+    bool r_monotone = true;
+    for (std::size_t i = 0; i + 1 < line.size() && r_monotone; ++i)
+      r_monotone = line[i + 1].r >= line[i].r;
+    if (r_monotone)
+      return flags;
+    // Otherwise every pair of segments: O(n^2) over a few hundred samples.
+    for (std::size_t i = 0; i + 1 < line.size() && !(flags & self_intersection); ++i)
+      for (std::size_t j = i + 2; j + 1 < line.size(); ++j)
+        if (cross(line[i], line[i + 1], line[j], line[j + 1]))
+          {
+            flags |= self_intersection;
+            break;
+          }
+    return flags;
+  }
+
+  std::vector<SummaryColumn> NonPhysicalCheck::columns() const
+  {
+    return {{"nonphysical", "bits",
+             "0: a possible state; 1: the meridian leaves 0 <= r <= b; 2: it crosses itself "
+             "or the disk (3: both)"}};
+  }
+
+  void NonPhysicalCheck::evaluate(StepContext &context, StepSummary &summary)
+  {
+    summary.columns.emplace_back("nonphysical",
+                                 double(nonphysical_flags(context.fields(), frame_radius)));
+  }
+} // namespace cdea
