@@ -1,9 +1,11 @@
 // The input of `cdea fit` (the data file, subsection Calibration) and the
 // displacements of the data points with their Jacobian (DisplacementModel).
 
+#include <cdea/base/format.h>
 #include <cdea/design/fit.h>
 #include <cdea/input/parameters.h>
-#include <cdea/base/format.h>
+#include <cdea/input/solver_settings.h>
+#include <cdea/input/validation.h>
 
 #include <algorithm>
 #include <cctype>
@@ -16,13 +18,12 @@ namespace cdea
 {
   namespace
   {
-    /// Fields of one CSV line, blanks around each removed.
+    /// Fields of one CSV line, blanks around each removed; a ',' at the end
+    /// of the line ends in an empty field.
     std::vector<std::string> fields_of(const std::string &line)
     {
       std::vector<std::string> fields;
-      std::stringstream        in(line);
-      std::string              field;
-      while (std::getline(in, field, ','))
+      for (const std::string &field : split_list(line, ','))
         {
           std::size_t b = 0, e = field.size();
           while (b < e && std::isspace(static_cast<unsigned char>(field[b])))
@@ -137,10 +138,8 @@ namespace cdea
       {"permittivity", ParameterKind::permittivity},
       {"mass", ParameterKind::mass},
       {"pre-stretch", ParameterKind::prestretch}};
-    FitSettings       s;
-    std::stringstream items(p.calibration.free_parameters_text);
-    std::string       item;
-    while (std::getline(items, item, ','))
+    FitSettings s;
+    for (const std::string &item : split_list(p.calibration.free_parameters_text, ','))
       {
         const auto fields = fields_of(item);
         const std::string key = lower_case(fields.empty() ? "" : fields[0]);
@@ -163,6 +162,63 @@ namespace cdea
       throw InputError("cdea fit supports Wrinkling/Model = check and Reservoir/Water load = "
                        "false only (the displacement of the actuator under its dead load)");
     return s;
+  }
+
+  void require_enough_points(const CalibrationData &data, const FitSettings &settings,
+                             const std::string &name)
+  {
+    if (data.size() < settings.free.size())
+      throw InputError(name + ": " + std::to_string(data.size()) + " data points for " +
+                       std::to_string(settings.free.size()) +
+                       " free parameters (Calibration/Free parameters): give at least as "
+                       "many points as parameters");
+  }
+
+  std::string label(const SceneParameter &p)
+  {
+    switch (p.kind)
+      {
+        case ParameterKind::shear_modulus:
+          return "shear modulus";
+        case ParameterKind::jlim:
+          return "Jlim";
+        case ParameterKind::permittivity:
+          return "permittivity";
+        case ParameterKind::mass:
+          return "mass";
+        case ParameterKind::prestretch:
+          return "pre-stretch";
+        default:
+          return p.name();
+      }
+  }
+
+  Calibrated calibrate(const Parameters &p, const Scene &base, const CalibrationData &data,
+                       const FitSettings &settings,
+                       const std::function<void(unsigned int, double, const std::vector<double> &)>
+                         &progress)
+  {
+    DisplacementModel model(base, data, settings.free, fe_discretization(p), newton_settings(p),
+                            study_stepping_settings(p));
+    Calibrated c;
+    c.result = fit(base, data, settings, model, progress);
+    if (c.result.fitted.size() > 0)
+      {
+        std::vector<std::vector<double>> v;
+        std::vector<double>              d;
+        model.curve(c.result.values, 8, v, d);
+        for (std::size_t k = 0; k < v.size(); ++k)
+          {
+            std::vector<double> kV;
+            for (const double x : v[k])
+              kV.push_back(x * 1e-3);
+            c.curve_kV.push_back(kV);
+            c.curve_mm.push_back(d[k] * 1e3);
+          }
+      }
+    c.solves = model.solves();
+    c.ramps  = model.ramps();
+    return c;
   }
 
   Scene scene_with(const Scene &base, const std::vector<SceneParameter> &free,
