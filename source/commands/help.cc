@@ -51,9 +51,9 @@ namespace cdea
           << "Commands that read FILE.prm: "
           << names([](const Command &c) { return c.has(reads_parameters); }) << ".\n"
           << "Under mpirun -np N: "
-          << names([](const Command &c) { return c.ranks == Ranks::all; }) << "; "
-          << names([](const Command &c) { return c.ranks == Ranks::one; })
-          << " refuse more than one rank.\n"
+          << names([](const Command &c) { return c.ranks == Ranks::all; })
+          << " (the ranks share the work);\nserial jobs, refused on more than one rank: "
+          << names([](const Command &c) { return c.ranks == Ranks::one; }) << ".\n"
           << "Stopped cleanly by SIGINT, SIGTERM, SIGHUP (exit 2, results so far written):\n  "
           << names([](const Command &c) { return c.has(stops_on_signals); }) << ".\n"
           << "Time runs (Time/Enabled = true): "

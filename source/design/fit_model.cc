@@ -53,13 +53,73 @@ namespace cdea
     return read_calibration_data(in, file, n_rings);
   }
 
+  namespace
+  {
+    /// The columns of the header line @p fields: every one known, each once,
+    /// a voltage per ring and the displacement there.
+    std::map<std::string, int> header_columns(const std::vector<std::string> &fields,
+                                              const std::string &where, const unsigned int n_rings)
+    {
+      std::map<std::string, int> column; // name -> index in a line
+      for (std::size_t k = 0; k < fields.size(); ++k)
+        {
+          const std::string &name  = fields[k];
+          bool               known = name == "displacement_mm" || name == "weight";
+          for (unsigned int r = 1; r <= n_rings; ++r)
+            known = known || name == "V" + std::to_string(r) + "_kV";
+          if (!known)
+            throw InputError(where + ": unknown column '" + name + "' (expected V1_kV .. V" +
+                             std::to_string(n_rings) +
+                             "_kV, one per ring of Electrodes/Ring edges (r/a), "
+                             "displacement_mm and optionally weight)");
+          if (!column.emplace(name, int(k)).second)
+            throw InputError(where + ": column '" + name + "' appears twice");
+        }
+      for (unsigned int r = 1; r <= n_rings; ++r)
+        if (!column.count("V" + std::to_string(r) + "_kV"))
+          throw InputError(where + ": no column V" + std::to_string(r) + "_kV (there are " +
+                           std::to_string(n_rings) + " rings)");
+      if (!column.count("displacement_mm"))
+        throw InputError(where + ": no column displacement_mm");
+      return column;
+    }
+
+    /// One data line @p line (its @p fields) appended to @p data.
+    void add_point(const std::vector<std::string> &fields, const std::string &line,
+                   const std::string &where, const std::map<std::string, int> &column,
+                   const unsigned int n_rings, CalibrationData &data)
+    {
+      const auto value = [&](const std::string &name) {
+        return parse_number(fields[column.at(name)], where + ", column " + name, line);
+      };
+      std::vector<double> volts;
+      for (unsigned int r = 1; r <= n_rings; ++r)
+        {
+          const std::string name = "V" + std::to_string(r) + "_kV";
+          const double      v    = value(name);
+          if (v < 0.)
+            throw InputError(where + ", column " + name +
+                             ": a voltage must not be negative, got " + format_number(v));
+          volts.push_back(v * 1e3);
+        }
+      const double d = value("displacement_mm");
+      const double w = column.count("weight") ? value("weight") : 1.;
+      if (!(w > 0.))
+        throw InputError(where + ", column weight: weights must be positive, got " +
+                         format_number(w));
+      data.voltages.push_back(volts);
+      data.displacement.push_back(d * 1e-3);
+      data.weight.push_back(w);
+    }
+  } // namespace
+
   CalibrationData read_calibration_data(std::istream &in, const std::string &file,
                                         const unsigned int n_rings)
   {
-    CalibrationData          data;
+    CalibrationData            data;
     std::map<std::string, int> column; // name -> index in a line
-    std::size_t              n_columns = 0;
-    std::string              line;
+    std::size_t                n_columns = 0;
+    std::string                line;
     for (unsigned int number = 1; std::getline(in, line); ++number)
       {
         if (const auto hash = line.find('#'); hash != std::string::npos)
@@ -72,54 +132,14 @@ namespace cdea
         const std::string where  = file + ", line " + std::to_string(number);
         if (column.empty())
           {
-            // The header: every column known, each once.
-            for (std::size_t k = 0; k < fields.size(); ++k)
-              {
-                const std::string &name  = fields[k];
-                bool               known = name == "displacement_mm" || name == "weight";
-                for (unsigned int r = 1; r <= n_rings; ++r)
-                  known = known || name == "V" + std::to_string(r) + "_kV";
-                if (!known)
-                  throw InputError(where + ": unknown column '" + name +
-                                   "' (expected V1_kV .. V" + std::to_string(n_rings) +
-                                   "_kV, one per ring of Electrodes/Ring edges (r/a), "
-                                   "displacement_mm and optionally weight)");
-                if (!column.emplace(name, int(k)).second)
-                  throw InputError(where + ": column '" + name + "' appears twice");
-              }
-            for (unsigned int r = 1; r <= n_rings; ++r)
-              if (!column.count("V" + std::to_string(r) + "_kV"))
-                throw InputError(where + ": no column V" + std::to_string(r) + "_kV (there are " +
-                                 std::to_string(n_rings) + " rings)");
-            if (!column.count("displacement_mm"))
-              throw InputError(where + ": no column displacement_mm");
+            column    = header_columns(fields, where, n_rings);
             n_columns = fields.size();
             continue;
           }
         if (fields.size() != n_columns)
-          throw InputError(where + ": " + std::to_string(fields.size()) + " fields, but the header has " +
-                           std::to_string(n_columns));
-        const auto value = [&](const std::string &name) {
-          return parse_number(fields[column.at(name)], where + ", column " + name, line);
-        };
-        std::vector<double> volts;
-        for (unsigned int r = 1; r <= n_rings; ++r)
-          {
-            const std::string name = "V" + std::to_string(r) + "_kV";
-            const double      v    = value(name);
-            if (v < 0.)
-              throw InputError(where + ", column " + name + ": a voltage must not be negative, got " +
-                               format_number(v));
-            volts.push_back(v * 1e3);
-          }
-        const double d = value("displacement_mm");
-        const double w = column.count("weight") ? value("weight") : 1.;
-        if (!(w > 0.))
-          throw InputError(where + ", column weight: weights must be positive, got " +
-                           format_number(w));
-        data.voltages.push_back(volts);
-        data.displacement.push_back(d * 1e-3);
-        data.weight.push_back(w);
+          throw InputError(where + ": " + std::to_string(fields.size()) +
+                           " fields, but the header has " + std::to_string(n_columns));
+        add_point(fields, line, where, column, n_rings, data);
       }
     if (column.empty())
       throw InputError(file + ": no header line (the column names V1_kV, ..., displacement_mm)");
