@@ -13,8 +13,10 @@
 // Fails (exit code 1) if a run does not complete or a figure is not finite;
 // ctest runs it with 3 1 (label bench-smoke). doc/performance.md quotes it.
 
-#include <cdea/analysis/commands.h>
+#include <cdea/analysis/run_setup.h>
+#include <cdea/input/solver_settings.h>
 #include <cdea/base/mpi_session.h>
+#include <cdea/input/parameter_input.h>
 #include <cdea/input/parameters.h>
 
 #include "bench_common.h"

@@ -17,8 +17,9 @@
 // red line, or a figure is not finite; ctest runs it with 1 0 (label
 // bench-smoke). doc/design-maps.md ("Speed") quotes it.
 
-#include <cdea/analysis/commands.h>
+#include <cdea/input/solver_settings.h>
 #include <cdea/base/mpi_session.h>
+#include <cdea/input/parameter_input.h>
 #include <cdea/input/parameters.h>
 #include <cdea/design/sweep.h>
 

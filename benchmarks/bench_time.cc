@@ -13,10 +13,10 @@
 // CYCLES (if given and > 0) replaces Time/Cycles, for a quick smoke run:
 //   build/benchmarks/bench_time "" 1 1 1
 
-#include <cdea/analysis/commands.h>
+#include <cdea/input/solver_settings.h>
 #include <cdea/base/mpi_session.h>
 #include <cdea/input/parameters.h>
-#include <cdea/input/pump.h>
+#include <cdea/input/parameter_input.h>
 #include <cdea/analysis/time_run.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/solver/time_stepper.h>

@@ -1,5 +1,5 @@
 // The Python module `cdea` (pybind11): `cdea run` (time runs too), `cdea
-// shoot` and `cdea sweep` in-process (app/session.h), their results as numpy
+// shoot` and `cdea sweep` in-process (analysis/session.h), their results as numpy
 // arrays with the names and units of the results files
 // (output/results_layout.h for /summary and /steps, sweep_map_content() for
 // the map), written to HDF5 only when asked. Bad input raises ValueError with the command line's message. MPI is
@@ -359,7 +359,121 @@ namespace
       record.notes.push_back(note);
     return Run(std::move(record));
   }
+  void bind_run_result(py::module_ &m)
+  {
+    py::class_<Run>(m, "RunResult",
+                    "The steps of cdea.run() or cdea.shoot(), in memory: /summary and /steps of "
+                    "the results file as numpy arrays (same names, same units).")
+      .def_property_readonly("summary", &Run::summary,
+                             "dict of numpy arrays, one per /summary dataset (steps, or steps x "
+                             "rings)")
+      .def("fields", &Run::fields, py::arg("step"),
+           "dict of numpy arrays along the meridian: the datasets of /steps/NNNNNN (negative "
+           "steps count from the end; a time run has them at field_steps only)")
+      .def_property_readonly("field_steps", &Run::field_steps,
+                             "the steps with fields: all of them, or for a time run those its "
+                             "results file has a /steps group for")
+      .def_property_readonly("onset", &Run::onset,
+                             "None, or dict voltage_kV, radius_mm, load_factor of the loss of "
+                             "tension")
+      .def_property_readonly("attributes", &Run::attributes,
+                             "dict of the /summary attributes (onset, limit points, breakdown)")
+      .def_property_readonly("columns", &Run::columns,
+                             "dict name -> (unit, description) of the /summary columns")
+      .def_property_readonly("completed", [](const Run &r) { return r.record.result.completed; },
+                             "True if the run reached the end of its voltage path (or waveform)")
+      .def_property_readonly("message", [](const Run &r) { return r.record.result.message; },
+                             "why the run stopped early ('' if it did not)")
+      .def_property_readonly("end", [](const Run &r) { return r.record.result.end; },
+                             "how an arc-length continuation ended ('' otherwise)")
+      .def_property_readonly("notes", [](const Run &r) { return r.record.notes; })
+      .def_property_readonly("n_steps", [](const Run &r) { return r.record.steps.size(); })
+      .def("__len__", [](const Run &r) { return r.record.steps.size(); })
+      .def_property_readonly("n_rings", [](const Run &r) { return r.record.n_rings; })
+      .def_property_readonly("newton_iterations",
+                             [](const Run &r) { return r.record.result.newton_iterations; })
+      .def_property_readonly("seconds", [](const Run &r) { return r.record.seconds; },
+                             "wall time of the load stages (s)")
+      .def_property_readonly("method", [](const Run &r) { return to_string(r.record.method); })
+      .def_property_readonly("parameters", [](const Run &r) { return r.record.parameters; },
+                             "every parameter of the run, as the results file stores them")
+      .def_property_readonly("results_path", [](const Run &r) { return r.record.results_path; },
+                             "where the command line would write the results")
+      .def("write", &Run::write, py::arg("path") = py::none(),
+           "write the results file (HDF5, as the command line writes it) to path, by default "
+           "<Directory>/<Base name>.h5 of the parameters; returns the path")
+      .def("__repr__", [](const Run &r) {
+        return "<cdea.RunResult " + to_string(r.record.method) + ": " +
+               std::to_string(r.record.steps.size()) + " steps, " +
+               (r.record.result.completed ? "completed" : "stopped early") + ">";
+      });
+  }
+
+  void bind_sweep_result(py::module_ &m)
+  {
+    py::class_<Sweep>(m, "SweepResult",
+                      "The design map of cdea.sweep(), in memory: the datasets and root "
+                      "attributes of the map file as numpy arrays (same names, same units).")
+      .def_property_readonly("arrays", &Sweep::arrays, "dict of numpy arrays, one per dataset")
+      .def_property_readonly("attributes", &Sweep::attributes, "dict of the root attributes")
+      .def_property_readonly("columns", &Sweep::columns,
+                             "dict name -> (unit, description) of the datasets")
+      .def_property_readonly("seconds", [](const Sweep &s) { return s.record.seconds; })
+      .def_property_readonly("parameters", [](const Sweep &s) { return s.record.parameters; })
+      .def_property_readonly("results_path", [](const Sweep &s) { return s.record.results_path; })
+      .def("write", &Sweep::write, py::arg("path") = py::none(),
+           "write the map file (HDF5) to path, by default <Directory>/<Base name>_map.h5; "
+           "returns the path")
+      .def("__repr__", [](const Sweep &s) {
+        return "<cdea.SweepResult " + std::to_string(s.record.map.rows.size()) + " x " +
+               std::to_string(s.record.map.settings.outer_voltages.size()) + " points>";
+      });
+  }
+
+  /// cdea.run, cdea.shoot, cdea.sweep and cdea.parameters.
+  void bind_runs(py::module_ &m)
+  {
+    const std::string prm_doc = "prm: the path of a parameter file (str or os.PathLike) or its "
+                                "text (a str with a line break; '' for every default); "
+                                "overrides: dict {'Subsection/Entry': value} set after it.";
+    const std::tuple<const char *, RunMethod, const char *> runs[] = {
+      {"run", RunMethod::finite_elements,
+       "`cdea run` in-process: the FE model along the load stages (in time if Time/Enabled). "},
+      {"shoot", RunMethod::shooting,
+       "`cdea shoot` in-process: the shooting model on the same scene. "}};
+    for (const auto &[name, method, what] : runs)
+      m.def(
+        name,
+        [method = method](const py::object &prm, const py::object &overrides) {
+          return run_method(prm, overrides, method);
+        },
+        py::arg("prm"), py::arg("overrides") = py::none(), (what + prm_doc).c_str());
+    m.def(
+      "sweep",
+      [](const py::object &prm, const py::object &overrides) {
+        const ParameterInput input = parameter_input(prm, overrides);
+        SweepRecord          record;
+        {
+          const py::gil_scoped_release release;
+          record = sweep_in_memory(input);
+        }
+        return Sweep(std::move(record));
+      },
+      py::arg("prm"), py::arg("overrides") = py::none(),
+      ("`cdea sweep` in-process, on this process alone. " + prm_doc).c_str());
+    m.def(
+      "parameters",
+      [](const py::object &prm, const py::object &overrides) {
+        std::string text;
+        read_parameters(parameter_input(prm, overrides), &text);
+        return text;
+      },
+      py::arg("prm") = "", py::arg("overrides") = py::none(),
+      ("Every parameter, validated, as a results file stores them. " + prm_doc).c_str());
+  }
 } // namespace
+
+void bind_design(py::module_ &); // python/design_bindings.cc: optimize, fit
 
 PYBIND11_MODULE(cdea, m)
 {
@@ -378,109 +492,10 @@ PYBIND11_MODULE(cdea, m)
         PyErr_SetString(PyExc_ValueError, e.what());
       }
   });
-
-  py::class_<Run>(m, "RunResult",
-                  "The steps of cdea.run() or cdea.shoot(), in memory: /summary and /steps of "
-                  "the results file as numpy arrays (same names, same units).")
-    .def_property_readonly("summary", &Run::summary,
-                           "dict of numpy arrays, one per /summary dataset (steps, or steps x "
-                           "rings)")
-    .def("fields", &Run::fields, py::arg("step"),
-         "dict of numpy arrays along the meridian: the datasets of /steps/NNNNNN (negative "
-         "steps count from the end; a time run has them at field_steps only)")
-    .def_property_readonly("field_steps", &Run::field_steps,
-                           "the steps with fields: all of them, or for a time run those its "
-                           "results file has a /steps group for")
-    .def_property_readonly("onset", &Run::onset,
-                           "None, or dict voltage_kV, radius_mm, load_factor of the loss of "
-                           "tension")
-    .def_property_readonly("attributes", &Run::attributes,
-                           "dict of the /summary attributes (onset, limit points, breakdown)")
-    .def_property_readonly("columns", &Run::columns,
-                           "dict name -> (unit, description) of the /summary columns")
-    .def_property_readonly("completed", [](const Run &r) { return r.record.result.completed; },
-                           "True if the run reached the end of its voltage path (or waveform)")
-    .def_property_readonly("message", [](const Run &r) { return r.record.result.message; },
-                           "why the run stopped early ('' if it did not)")
-    .def_property_readonly("end", [](const Run &r) { return r.record.result.end; },
-                           "how an arc-length continuation ended ('' otherwise)")
-    .def_property_readonly("notes", [](const Run &r) { return r.record.notes; })
-    .def_property_readonly("n_steps", [](const Run &r) { return r.record.steps.size(); })
-    .def("__len__", [](const Run &r) { return r.record.steps.size(); })
-    .def_property_readonly("n_rings", [](const Run &r) { return r.record.n_rings; })
-    .def_property_readonly("newton_iterations",
-                           [](const Run &r) { return r.record.result.newton_iterations; })
-    .def_property_readonly("seconds", [](const Run &r) { return r.record.seconds; },
-                           "wall time of the load stages (s)")
-    .def_property_readonly("method", [](const Run &r) { return r.record.method; })
-    .def_property_readonly("parameters", [](const Run &r) { return r.record.parameters; },
-                           "every parameter of the run, as the results file stores them")
-    .def_property_readonly("results_path", [](const Run &r) { return r.record.results_path; },
-                           "where the command line would write the results")
-    .def("write", &Run::write, py::arg("path") = py::none(),
-         "write the results file (HDF5, as the command line writes it) to path, by default "
-         "<Directory>/<Base name>.h5 of the parameters; returns the path")
-    .def("__repr__", [](const Run &r) {
-      return "<cdea.RunResult " + r.record.method + ": " + std::to_string(r.record.steps.size()) +
-             " steps, " + (r.record.result.completed ? "completed" : "stopped early") + ">";
-    });
-
-  py::class_<Sweep>(m, "SweepResult",
-                    "The design map of cdea.sweep(), in memory: the datasets and root "
-                    "attributes of the map file as numpy arrays (same names, same units).")
-    .def_property_readonly("arrays", &Sweep::arrays, "dict of numpy arrays, one per dataset")
-    .def_property_readonly("attributes", &Sweep::attributes, "dict of the root attributes")
-    .def_property_readonly("columns", &Sweep::columns,
-                           "dict name -> (unit, description) of the datasets")
-    .def_property_readonly("seconds", [](const Sweep &s) { return s.record.seconds; })
-    .def_property_readonly("parameters", [](const Sweep &s) { return s.record.parameters; })
-    .def_property_readonly("results_path", [](const Sweep &s) { return s.record.results_path; })
-    .def("write", &Sweep::write, py::arg("path") = py::none(),
-         "write the map file (HDF5) to path, by default <Directory>/<Base name>_map.h5; "
-         "returns the path")
-    .def("__repr__", [](const Sweep &s) {
-      return "<cdea.SweepResult " + std::to_string(s.record.map.rows.size()) + " x " +
-             std::to_string(s.record.map.settings.outer_voltages.size()) + " points>";
-    });
-
-  const std::string prm_doc = "prm: the path of a parameter file (str or os.PathLike) or its "
-                              "text (a str with a line break; '' for every default); overrides: "
-                              "dict {'Subsection/Entry': value} set after it.";
-  const std::tuple<const char *, RunMethod, const char *> runs[] = {
-    {"run", RunMethod::finite_elements,
-     "`cdea run` in-process: the FE model along the load stages (in time if Time/Enabled). "},
-    {"shoot", RunMethod::shooting,
-     "`cdea shoot` in-process: the shooting model on the same scene. "}};
-  for (const auto &[name, method, what] : runs)
-    m.def(
-      name,
-      [method = method](const py::object &prm, const py::object &overrides) {
-        return run_method(prm, overrides, method);
-      },
-      py::arg("prm"), py::arg("overrides") = py::none(), (what + prm_doc).c_str());
-  m.def(
-    "sweep",
-    [](const py::object &prm, const py::object &overrides) {
-      const ParameterInput input = parameter_input(prm, overrides);
-      SweepRecord          record;
-      {
-        const py::gil_scoped_release release;
-        record = sweep_in_memory(input);
-      }
-      return Sweep(std::move(record));
-    },
-    py::arg("prm"), py::arg("overrides") = py::none(),
-    ("`cdea sweep` in-process, on this process alone. " + prm_doc).c_str());
-  m.def(
-    "parameters",
-    [](const py::object &prm, const py::object &overrides) {
-      std::string text;
-      read_parameters(parameter_input(prm, overrides), &text);
-      return text;
-    },
-    py::arg("prm") = "", py::arg("overrides") = py::none(),
-    ("Every parameter, validated, as a results file stores them. " + prm_doc).c_str());
+  bind_run_result(m);
+  bind_sweep_result(m);
+  bind_runs(m);
   m.def("mpi_initialized", &mpi::initialized,
         "True once this process has started MPI (only the Trilinos KLU solver does)");
-  void bind_design(py::module_ &); bind_design(m); // python/design_bindings.cc: optimize, fit
+  bind_design(m);
 }

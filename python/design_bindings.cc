@@ -5,12 +5,12 @@
 // nothing is written unless .write(path) is called. Bad input raises
 // ValueError with the command line's message. Documented in doc/python.md.
 
-#include <cdea/analysis/commands.h>
+#include <cdea/base/format.h>
 #include <cdea/design/fit.h>
 #include <cdea/design/optimize.h>
 #include <cdea/input/parameter_input.h>
 #include <cdea/input/parameters.h>
-#include <cdea/base/format.h>
+#include <cdea/output/results_layout.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -34,14 +34,6 @@ namespace
                                         std::vector<py::ssize_t>{rows});
     std::copy(values.begin(), values.end(), a.mutable_data());
     return a;
-  }
-
-  std::vector<double> scaled(const std::vector<double> &values, const double factor)
-  {
-    std::vector<double> v;
-    for (const double x : values)
-      v.push_back(x * factor);
-    return v;
   }
 
   /// The validated parameters of @p prm with @p overrides, through the
@@ -243,124 +235,124 @@ namespace
       }
     return read_calibration_data(path_of(data), n_rings);
   }
+  void bind_optimize(py::module_ &m)
+  {
+    py::class_<Optimization>(m, "OptimizeResult",
+                             "The result of cdea.optimize(): the quantities of "
+                             "<Base name>_optimum.h5 (doc/optimization.md)")
+      .def_property_readonly("attributes", &Optimization::attributes,
+                             "the root attributes of the optimum file (dict)")
+      .def_property_readonly("history", &Optimization::history,
+                             "/history: every evaluation of every start (dict of numpy arrays)")
+      .def_property_readonly("converged",
+                             [](const Optimization &o) { return o.best().converged; })
+      .def(
+        "write", [](const Optimization &o, const py::object &path) { o.write(path_of(path)); },
+        py::arg("path"), "Write the optimum file (HDF5) to path")
+      .def("__repr__", [](const Optimization &o) {
+        const StartResult &b = o.best();
+        return "<cdea.OptimizeResult " +
+               std::string(b.converged ? "converged" : "NOT converged") + ", ring edges " +
+               format_fixed_list(b.best.edges, 4) + ", voltages " +
+               format_fixed_list(b.best.voltages, 4, 1e-3) + " kV>";
+      });
+
+    m.def(
+      "optimize",
+      [m](const py::object &prm, const py::object &overrides, const bool progress) {
+        Optimization     o;
+        const Parameters p  = design_parameters(m, prm, overrides, o.parameter_text);
+        o.base              = p.scene();
+        o.settings          = optimization_settings(p, o.base);
+        const auto on_start = [&](const StartResult &r) {
+          if (progress)
+            std::cout << "start " << r.start << ": " << r.status << std::endl;
+        };
+        o.run = optimize_layouts(p, o.base, o.settings, {}, on_start);
+        return o;
+      },
+      py::arg("prm"), py::arg("overrides") = py::none(), py::arg("progress") = false,
+      "`cdea optimize` in-process, on this process alone; prm: a path or prm text, overrides: "
+      "{'Subsection/Entry': value}. Writes nothing.");
+  }
+
+  /// A dict parameter name -> value of each free parameter.
+  py::dict by_name(const Calibration &c, const std::vector<double> &values)
+  {
+    py::dict d;
+    for (std::size_t j = 0; j < c.settings.free.size(); ++j)
+      d[py::str(c.settings.free[j].name())] = values[j];
+    return d;
+  }
+
+  void bind_fit_result(py::module_ &m)
+  {
+    py::class_<Calibration>(m, "FitResult",
+                            "The result of cdea.fit(): the quantities of <Base name>_fit.h5 "
+                            "(doc/optimization.md)")
+      .def_property_readonly("attributes", &Calibration::attributes,
+                             "the root attributes of the fit file (dict)")
+      .def_property_readonly(
+        "values", [](const Calibration &c) { return by_name(c, c.result.values); },
+        "fitted values by parameter name (SI units)")
+      .def_property_readonly(
+        "standard_errors", [](const Calibration &c) { return by_name(c, c.result.standard_errors); },
+        "standard errors by parameter name (SI units; NaN if not identifiable)")
+      .def_property_readonly("correlation", &Calibration::correlation,
+                             "correlation matrix (order of attributes['free_parameters'])")
+      .def_property_readonly("data", &Calibration::points,
+                             "/data: voltages, measured, fitted, residual, weight (dict)")
+      .def_property_readonly("curve", &Calibration::curve,
+                             "/curve: the model along the data (dict)")
+      .def_property_readonly("warnings", [](const Calibration &c) { return c.result.warnings; })
+      .def_property_readonly("converged", [](const Calibration &c) { return c.result.converged; })
+      .def(
+        "write", [](const Calibration &c, const py::object &path) { c.write(path_of(path)); },
+        py::arg("path"), "Write the fit file (HDF5) to path")
+      .def("__repr__", [](const Calibration &c) {
+        std::string s = "<cdea.FitResult " +
+                        std::string(c.result.converged ? "converged" : "NOT converged");
+        for (std::size_t j = 0; j < c.settings.free.size(); ++j)
+          s += ", " + c.settings.free[j].name() + " " + format_number(c.result.values[j], 8);
+        return s + ">";
+      });
+  }
+
+  void bind_fit(py::module_ &m)
+  {
+    bind_fit_result(m);
+    m.def(
+      "fit",
+      [m](const py::object &prm, const py::object &data, const py::object &overrides,
+          const bool progress) {
+        Calibration      c;
+        const Parameters p    = design_parameters(m, prm, overrides, c.parameter_text);
+        const Scene      base = p.scene();
+        c.settings            = fit_settings(p);
+        c.data                = calibration_data(data, base.n_rings());
+        require_enough_points(c.data, c.settings, "data");
+        const Calibrated run =
+          calibrate(p, base, c.data, c.settings,
+                    [&](unsigned int k, double cost, const std::vector<double> &) {
+                      if (progress)
+                        std::cout << "iteration " << k << ": cost " << cost << " mm^2"
+                                  << std::endl;
+                    });
+        c.result   = run.result;
+        c.curve_kV = run.curve_kV;
+        c.curve_mm = run.curve_mm;
+        c.solves   = run.solves;
+        return c;
+      },
+      py::arg("prm"), py::arg("data"), py::arg("overrides") = py::none(),
+      py::arg("progress") = false,
+      "`cdea fit` in-process; prm: a path or prm text, data: a CSV path or CSV text (a str "
+      "with a line break), overrides: {'Subsection/Entry': value}. Writes nothing.");
+  }
 } // namespace
 
 void bind_design(py::module_ &m)
 {
-  py::class_<Optimization>(m, "OptimizeResult",
-                           "The result of cdea.optimize(): the quantities of "
-                           "<Base name>_optimum.h5 (doc/optimization.md)")
-    .def_property_readonly("attributes", &Optimization::attributes,
-                           "the root attributes of the optimum file (dict)")
-    .def_property_readonly("history", &Optimization::history,
-                           "/history: every evaluation of every start (dict of numpy arrays)")
-    .def_property_readonly("converged", [](const Optimization &o) { return o.best().converged; })
-    .def("write", [](const Optimization &o, const py::object &path) {
-           o.write(path_of(path));
-         },
-         py::arg("path"), "Write the optimum file (HDF5) to path")
-    .def("__repr__", [](const Optimization &o) {
-      const StartResult &b = o.best();
-      return "<cdea.OptimizeResult " + std::string(b.converged ? "converged" : "NOT converged") +
-             ", ring edges " + format_fixed_list(b.best.edges, 4) + ", voltages " +
-             format_fixed_list(b.best.voltages, 4, 1e-3) + " kV>";
-    });
-
-  m.def(
-    "optimize",
-    [m](const py::object &prm, const py::object &overrides, const bool progress) {
-      Optimization o;
-      const Parameters p = design_parameters(m, prm, overrides, o.parameter_text);
-      o.base             = p.scene();
-      o.settings         = optimization_settings(p, o.base);
-      const auto on_start = [&](const StartResult &r) {
-        if (progress)
-          std::cout << "start " << r.start << ": " << r.status << std::endl;
-      };
-      o.run = optimize_layouts(p, o.base, o.settings, {}, on_start);
-      return o;
-    },
-    py::arg("prm"), py::arg("overrides") = py::none(), py::arg("progress") = false,
-    "`cdea optimize` in-process, on this process alone; prm: a path or prm text, overrides: "
-    "{'Subsection/Entry': value}. Writes nothing.");
-
-  py::class_<Calibration>(m, "FitResult",
-                          "The result of cdea.fit(): the quantities of <Base name>_fit.h5 "
-                          "(doc/optimization.md)")
-    .def_property_readonly("attributes", &Calibration::attributes,
-                           "the root attributes of the fit file (dict)")
-    .def_property_readonly("values", [](const Calibration &c) {
-      py::dict d;
-      for (std::size_t j = 0; j < c.settings.free.size(); ++j)
-        d[py::str(c.settings.free[j].name())] = c.result.values[j];
-      return d;
-    }, "fitted values by parameter name (SI units)")
-    .def_property_readonly("standard_errors", [](const Calibration &c) {
-      py::dict d;
-      for (std::size_t j = 0; j < c.settings.free.size(); ++j)
-        d[py::str(c.settings.free[j].name())] = c.result.standard_errors[j];
-      return d;
-    }, "standard errors by parameter name (SI units; NaN if not identifiable)")
-    .def_property_readonly("correlation", &Calibration::correlation,
-                           "correlation matrix (order of attributes['free_parameters'])")
-    .def_property_readonly("data", &Calibration::points,
-                           "/data: voltages, measured, fitted, residual, weight (dict)")
-    .def_property_readonly("curve", &Calibration::curve,
-                           "/curve: the model along the data (dict)")
-    .def_property_readonly("warnings", [](const Calibration &c) { return c.result.warnings; })
-    .def_property_readonly("converged", [](const Calibration &c) { return c.result.converged; })
-    .def("write", [](const Calibration &c, const py::object &path) { c.write(path_of(path)); },
-         py::arg("path"), "Write the fit file (HDF5) to path")
-    .def("__repr__", [](const Calibration &c) {
-      std::string s = "<cdea.FitResult " +
-                      std::string(c.result.converged ? "converged" : "NOT converged");
-      for (std::size_t j = 0; j < c.settings.free.size(); ++j)
-        s += ", " + c.settings.free[j].name() + " " + format_number(c.result.values[j], 8);
-      return s + ">";
-    });
-
-  m.def(
-    "fit",
-    [m](const py::object &prm, const py::object &data, const py::object &overrides,
-        const bool progress) {
-      Calibration      c;
-      const Parameters p    = design_parameters(m, prm, overrides, c.parameter_text);
-      const Scene      base = p.scene();
-      c.settings            = fit_settings(p);
-      c.data                = calibration_data(data, base.n_rings());
-      if (c.data.size() < c.settings.free.size())
-        throw InputError("data: " + std::to_string(c.data.size()) + " data points for " +
-                         std::to_string(c.settings.free.size()) +
-                         " free parameters (Calibration/Free parameters): give at least as "
-                         "many points as parameters");
-      SteppingSettings stepping = stepping_settings(p);
-      stepping.arc_length       = false;
-      stepping.stability_check  = false;
-      stepping.breakdown_field  = 0.;
-      DisplacementModel model(base, c.data, c.settings.free, fe_discretization(p),
-                              newton_settings(p), stepping);
-      c.result = cdea::fit(base, c.data, c.settings, model,
-                           [&](unsigned int k, double cost, const std::vector<double> &) {
-                             if (progress)
-                               std::cout << "iteration " << k << ": cost " << cost << " mm^2"
-                                         << std::endl;
-                           });
-      if (c.result.fitted.size() > 0)
-        {
-          std::vector<std::vector<double>> v;
-          std::vector<double>              d;
-          model.curve(c.result.values, 8, v, d);
-          for (std::size_t k = 0; k < v.size(); ++k)
-            {
-              c.curve_kV.push_back(scaled(v[k], 1e-3));
-              c.curve_mm.push_back(d[k] * 1e3);
-            }
-        }
-      c.solves = model.solves();
-      return c;
-    },
-    py::arg("prm"), py::arg("data"), py::arg("overrides") = py::none(),
-    py::arg("progress") = false,
-    "`cdea fit` in-process; prm: a path or prm text, data: a CSV path or CSV text (a str with "
-    "a line break), overrides: {'Subsection/Entry': value}. Writes nothing.");
+  bind_optimize(m);
+  bind_fit(m);
 }

@@ -1,4 +1,4 @@
-// The calibration in-process (app/fit.h):
+// The calibration in-process (design/fit.h):
 //  A. the data file and subsection Calibration: messages name the file, line,
 //     column or parameter;
 //  B. the Jacobian of the data points against central differences of ramps

@@ -1,4 +1,4 @@
-// The layout optimizer in-process (app/optimize.h):
+// The layout optimizer in-process (design/optimize.h):
 //  A. the checks of subsection Optimization (messages name the parameter) and
 //     the starting layouts (inside the bounds, rings at least w_min wide);
 //  B. LayoutEvaluator: a layout reached by continuation in the design

@@ -12,7 +12,7 @@
 // The serial-vs-mpirun identity and the command's bad-input handling are in
 // tests/sweep_mpi.sh and tests/sweep_bad_input.sh.
 
-#include <cdea/analysis/commands.h>
+#include <cdea/input/solver_settings.h>
 #include <cdea/base/mpi_session.h>
 #include <cdea/input/parameters.h>
 #include <cdea/design/sweep.h>

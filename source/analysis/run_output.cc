@@ -1,5 +1,5 @@
-#include <cdea/analysis/commands.h>
 #include <cdea/analysis/run_output.h>
+#include <cdea/analysis/run_record.h>
 #include <cdea/output/safe_files.h>
 
 #include <iomanip>
@@ -81,11 +81,7 @@ namespace cdea
 
   int RunOutput::finish(const RunResult &result)
   {
-    const std::string status =
-      result.completed ? std::string("complete") :
-                         "stopped after step " + std::to_string(int(results->n_steps()) - 1) +
-                           ": " + result.message;
-    const ResultsFile::Finish done = results->finish(status);
+    const ResultsFile::Finish done = results->finish(run_status(result, results->n_steps()));
     std::cout << "results: " << done.steps_written << " steps in "
               << (done.written ? done.file : std::string("no file")) << " ("
               << results->checkpoints() << " checkpoints, " << std::fixed << std::setprecision(3)

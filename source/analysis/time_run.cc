@@ -1,11 +1,9 @@
-#include <cdea/analysis/commands.h>
-#include <cdea/input/parameters.h>
-#include <cdea/analysis/session.h>
+#include <cdea/analysis/run_output.h>
+#include <cdea/analysis/run_setup.h>
 #include <cdea/analysis/time_run.h>
 #include <cdea/base/format.h>
-#include <cdea/analysis/run_output.h>
+#include <cdea/input/solver_settings.h>
 #include <cdea/output/results_file.h>
-#include <cdea/solver/time_stepper.h>
 
 #include <chrono>
 #include <cmath>
@@ -18,9 +16,6 @@ namespace cdea
 {
   namespace
   {
-    /// The root attribute `method` of a time run's results file.
-    const char *const time_method = "finite elements in time";
-
     double column(const StepSummary &s, const std::string &name)
     {
       return summary_column(s, name);
@@ -34,6 +29,151 @@ namespace cdea
       return ' ' + (std::isnan(value) ? std::string(width - 2, ' ') + "-" :
                                         format_fixed(value, decimals, width - 1));
     }
+
+    /// A value that a run stopped early never reached prints as "-", not "nan".
+    std::string number_or_dash(const double value, const int digits)
+    {
+      return std::isnan(value) ? std::string("-") : format_number(value, digits);
+    }
+
+    /// `cdea run` of a time run: the table of steps, the results file and
+    /// the final state with its energy budget.
+    class TimeRun
+    {
+    public:
+      explicit TimeRun(const RunInput &input)
+        : p(input.parameters)
+        , scene(input.scene)
+        , run(set_up_time_run(p, scene))
+        , stepper(*run.stepper)
+        , path(p.results_path())
+      {
+        std::vector<std::pair<std::string, std::string>> root_attributes = {
+          {"method", to_string(RunMethod::finite_elements_in_time)}};
+        root_attributes.insert(root_attributes.end(), run.root_attributes.begin(),
+                               run.root_attributes.end());
+        output = RunOutput::open(path, input.text, scene.n_rings(), root_attributes);
+      }
+
+      int go()
+      {
+        if (!output || !output->prepare([&] {
+              for (const SummaryColumn &c : stepper.columns())
+                output->file().describe_column(c.name, c.unit, c.description);
+            }))
+          return exit_input_error;
+        print_banner();
+        connect();
+        const auto      start  = std::chrono::steady_clock::now();
+        const RunResult result = output->guard([&] { return stepper.run(); });
+        const double    seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        print_final_state(result, seconds);
+        return output->finish(result);
+      }
+
+    private:
+      const Parameters          &p;
+      const Scene               &scene;
+      TimeRunSetup               run;
+      TimeStepper               &stepper;
+      const std::string          path;
+      std::unique_ptr<RunOutput> output;
+      StepSummary                last;
+      unsigned int               newton_iterations_of_steps = 0;
+      /// The disk's natural frequency at the first state in time (NaN before).
+      double frequency_start = std::numeric_limits<double>::quiet_NaN();
+
+      /// The disk's natural frequency sqrt(k/m) / 2 pi now (k: the condensed
+      /// static tangent).
+      double frequency() const
+      {
+        return scene.mass > 0. ? std::sqrt(std::max(run.model->disk_stiffness(), 0.) /
+                                           scene.mass) /
+                                   (2. * M_PI) :
+                                 std::numeric_limits<double>::quiet_NaN();
+      }
+
+      void print_banner() const
+      {
+        const TimeSettings &settings = run.settings;
+        std::cout << "FE model: " << run.model->n_elements() << " elements of degree "
+                  << p.discretization.polynomial_degree << ", " << run.model->n_dofs()
+                  << " unknowns\n"
+                  << "Time: " << to_string(p.time.waveform) << " waveform, peak "
+                  << format_kV(settings.waveform.peak()) << " over "
+                  << format_number(settings.waveform.end_time()) << " s, steps up to "
+                  << format_number(settings.max_step) << " s (" << to_string(settings.scheme)
+                  << "), material " << to_string(p.viscous_material.model)
+                  << (settings.inertia ? ", disk inertia" : ", no inertia")
+                  << (settings.water_density > 0. ? " and water column" : "") << '\n'
+                  << "writing " << path << '\n';
+        const unsigned int n = scene.n_rings();
+        std::cout << std::setw(6) << "step" << std::setw(12) << "stage" << std::setw(11)
+                  << "time (s)" << std::setw(7 * n) << "V (kV)" << std::setw(12) << "disp (mm)"
+                  << std::setw(12) << "stroke (mm)" << std::setw(11) << "level (mm)"
+                  << std::setw(11) << "v (mm/s)" << std::setw(11) << "min s2/mu" << std::setw(5)
+                  << "its" << '\n';
+      }
+
+      void connect()
+      {
+        stepper.on_step = [this](const StepSummary &s) {
+          if (std::isnan(frequency_start) && !std::isnan(column(s, "time_s")))
+            frequency_start = frequency();
+          step(s);
+        };
+        stepper.on_onset = [this](const OnsetRecord &onset) {
+          output->file().write_onset(onset);
+          std::cout << "      loss of tension (s2 = 0) at t = "
+                    << format_number(onset.load_factor, 8) << " s, " << format_kV(onset.voltages)
+                    << ", radius r = " << format_number(onset.radius * 1e3) << " mm"
+                    << std::endl;
+        };
+      }
+
+      /// A step written, then printed as a row of the table.
+      void step(const StepSummary &s)
+      {
+        ResultsFile &file = output->file();
+        file.append(s, stepper.fields_wanted() ? stepper.step_fields() : StepFields(), s.columns);
+        last = s;
+        RunOutput::stop_point();
+        std::ostringstream v;
+        for (const double x : s.voltages)
+          v << cell(x * 1e-3, 3, 7);
+        std::cout << std::setw(6) << file.n_steps() - 1 << std::setw(12)
+                  << (s.stage == Stage::voltage ? "time" : stage_name(s.stage))
+                  << cell(column(s, "time_s"), 4, 11) << v.str()
+                  << cell(s.displacement * 1e3, 5, 12) << cell(s.stroke * 1e3, 5, 12)
+                  << cell(column(s, "level_drop_mm"), 3, 11)
+                  << cell(column(s, "disk_velocity_mm_per_s"), 2, 11)
+                  << cell(s.s2_min / scene.material.shear_modulus, 4, 11) << ' ' << std::setw(4)
+                  << s.newton_iterations << '\n';
+        newton_iterations_of_steps += s.newton_iterations;
+      }
+
+      void print_final_state(const RunResult &result, const double seconds) const
+      {
+        std::cout << "\nFinal state: t = " << format_number(stepper.time(), 8) << " s, voltages "
+                  << format_kV(last.voltages) << ", displacement "
+                  << format_number(last.displacement * 1e3, 8) << " mm, stroke "
+                  << number_or_dash(last.stroke * 1e3, 8) << " mm, level drop "
+                  << number_or_dash(column(last, "level_drop_mm"), 6) << " mm\n"
+                  << "  energy since t = 0: electrical work "
+                  << number_or_dash(column(last, "electrical_work_mJ"), 6) << " mJ, stored "
+                  << number_or_dash(column(last, "stored_energy_change_mJ"), 6)
+                  << " mJ, dissipated "
+                  << number_or_dash(column(last, "dissipated_energy_mJ"), 6) << " mJ\n"
+                  << "  disk's natural frequency sqrt(k/m) / 2 pi: "
+                  << number_or_dash(frequency_start, 4) << " Hz at the start, "
+                  << number_or_dash(frequency(), 4) << " Hz at the end\n"
+                  << result.steps << " steps, "
+                  << (result.completed ? result.newton_iterations : newton_iterations_of_steps)
+                  << " Newton iterations, " << std::setprecision(3) << seconds << " s"
+                  << std::endl;
+      }
+    };
   } // namespace
 
   TimeRunSetup set_up_time_run(const Parameters &p, const Scene &scene)
@@ -53,10 +193,10 @@ namespace cdea
 
   RunRecord time_run_in_memory(const RunInput &input)
   {
-    TimeRunSetup run = set_up_time_run(input.parameters, input.scene);
+    TimeRunSetup run     = set_up_time_run(input.parameters, input.scene);
     TimeStepper &stepper = *run.stepper;
     RunRecord    record;
-    record.method          = time_method;
+    record.method          = RunMethod::finite_elements_in_time;
     record.root_attributes = run.root_attributes;
     record.time_run        = true;
     record.n_rings         = input.scene.n_rings();
@@ -71,107 +211,9 @@ namespace cdea
     return record;
   }
 
-  int run_time(const Parameters &p, const Scene &scene, const std::string &prm_text)
+  int run_time(const RunInput &input)
   {
-    TimeRunSetup        run      = set_up_time_run(p, scene);
-    const TimeSettings &settings = run.settings;
-    MembraneModel      *model    = run.model.get();
-    TimeStepper        &stepper  = *run.stepper;
-
-    const std::string path = p.results_path();
-    std::vector<std::pair<std::string, std::string>> root_attributes = {
-      {"method", time_method}};
-    root_attributes.insert(root_attributes.end(), run.root_attributes.begin(),
-                           run.root_attributes.end());
-    const auto output = RunOutput::open(path, prm_text, scene.n_rings(), root_attributes);
-    if (!output)
-      return exit_input_error;
-    ResultsFile *const file = &output->file();
-    if (!output->prepare([&] {
-          for (const SummaryColumn &c : stepper.columns())
-            file->describe_column(c.name, c.unit, c.description);
-        }))
-      return exit_input_error;
-
-    std::cout << "FE model: " << model->n_elements() << " elements of degree "
-              << p.discretization.polynomial_degree << ", " << model->n_dofs() << " unknowns\n"
-              << "Time: " << to_string(p.time.waveform) << " waveform, peak "
-              << format_kV(settings.waveform.peak())
-              << " over " << format_number(settings.waveform.end_time()) << " s, steps up to "
-              << format_number(settings.max_step) << " s (" << to_string(settings.scheme)
-              << "), material " << to_string(p.viscous_material.model)
-              << (settings.inertia ? ", disk inertia" : ", no inertia")
-              << (settings.water_density > 0. ? " and water column" : "") << '\n'
-              << "writing " << path << '\n';
-    const unsigned int n = scene.n_rings();
-    std::cout << std::setw(6) << "step" << std::setw(12) << "stage" << std::setw(11) << "time (s)"
-              << std::setw(7 * n) << "V (kV)" << std::setw(12) << "disp (mm)" << std::setw(12)
-              << "stroke (mm)" << std::setw(11) << "level (mm)" << std::setw(11) << "v (mm/s)"
-              << std::setw(11) << "min s2/mu" << std::setw(5) << "its" << '\n';
-    StepSummary  last;
-    unsigned int newton_iterations_of_steps = 0;
-    stepper.on_step = [&](const StepSummary &s) {
-      file->append(s, stepper.fields_wanted() ? stepper.step_fields() : StepFields(), s.columns);
-      last = s;
-      RunOutput::stop_point();
-      std::ostringstream v;
-      for (const double x : s.voltages)
-        v << cell(x * 1e-3, 3, 7);
-      std::cout << std::setw(6) << file->n_steps() - 1 << std::setw(12)
-                << (s.stage == Stage::voltage ? "time" : stage_name(s.stage))
-                << cell(column(s, "time_s"), 4, 11) << v.str() << cell(s.displacement * 1e3, 5, 12)
-                << cell(s.stroke * 1e3, 5, 12) << cell(column(s, "level_drop_mm"), 3, 11)
-                << cell(column(s, "disk_velocity_mm_per_s"), 2, 11)
-                << cell(s.s2_min / scene.material.shear_modulus, 4, 11) << ' ' << std::setw(4)
-                << s.newton_iterations << '\n';
-      newton_iterations_of_steps += s.newton_iterations;
-    };
-    stepper.on_onset = [&](const OnsetRecord &onset) {
-      file->write_onset(onset);
-      std::cout << "      loss of tension (s2 = 0) at t = " << format_number(onset.load_factor, 8)
-                << " s, " << format_kV(onset.voltages) << ", radius r = "
-                << format_number(onset.radius * 1e3) << " mm" << std::endl;
-    };
-
-    // The disk's natural frequency sqrt(k/m) / 2 pi at the first and the last
-    // state of the time integration (k: the condensed static tangent).
-    double     frequency_start = std::numeric_limits<double>::quiet_NaN();
-    const auto frequency       = [&] {
-      return scene.mass > 0. ? std::sqrt(std::max(model->disk_stiffness(), 0.) / scene.mass) /
-                                 (2. * M_PI) :
-                               std::numeric_limits<double>::quiet_NaN();
-    };
-    const auto on_step = stepper.on_step;
-    stepper.on_step    = [&](const StepSummary &s) {
-      if (std::isnan(frequency_start) && !std::isnan(column(s, "time_s")))
-        frequency_start = frequency();
-      on_step(s);
-    };
-
-    const auto      start  = std::chrono::steady_clock::now();
-    const RunResult result = output->guard([&] { return stepper.run(); });
-    const double    seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    // A value that a run stopped early never reached prints as "-", not "nan".
-    const auto number = [](const double value, const int digits) {
-      return std::isnan(value) ? std::string("-") : format_number(value, digits);
-    };
-    std::cout << "\nFinal state: t = " << format_number(stepper.time(), 8) << " s, voltages "
-              << format_kV(last.voltages) << ", displacement "
-              << format_number(last.displacement * 1e3, 8) << " mm, stroke "
-              << number(last.stroke * 1e3, 8) << " mm, level drop "
-              << number(column(last, "level_drop_mm"), 6) << " mm\n"
-              << "  energy since t = 0: electrical work "
-              << number(column(last, "electrical_work_mJ"), 6) << " mJ, stored "
-              << number(column(last, "stored_energy_change_mJ"), 6) << " mJ, dissipated "
-              << number(column(last, "dissipated_energy_mJ"), 6) << " mJ\n"
-              << "  disk's natural frequency sqrt(k/m) / 2 pi: "
-              << number(frequency_start, 4) << " Hz at the start, " << number(frequency(), 4)
-              << " Hz at the end\n"
-              << result.steps << " steps, "
-              << (result.completed ? result.newton_iterations : newton_iterations_of_steps)
-              << " Newton iterations, "
-              << std::setprecision(3) << seconds << " s" << std::endl;
-    return output->finish(result);
+    TimeRun run(input);
+    return run.go();
   }
 } // namespace cdea

@@ -1,5 +1,6 @@
 #include <cdea/base/text.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -15,15 +16,6 @@ namespace cdea
       std::ostringstream o;
       o << x;
       return o.str();
-    }
-
-    std::string trim(const std::string &s)
-    {
-      const auto first = s.find_first_not_of(" \t");
-      if (first == std::string::npos)
-        return "";
-      const auto last = s.find_last_not_of(" \t");
-      return s.substr(first, last - first + 1);
     }
 
     /// Round to 12 decimals: generated values equal the typed ones.
@@ -58,6 +50,34 @@ namespace cdea
     return out;
   }
 
+  std::vector<std::string> split_list(const std::string &text, const char separator)
+  {
+    std::vector<std::string> pieces;
+    std::size_t              begin = 0;
+    while (begin < text.size())
+      {
+        const std::size_t end = std::min(text.find(separator, begin), text.size());
+        pieces.push_back(text.substr(begin, end - begin));
+        begin = end + 1;
+      }
+    return pieces;
+  }
+
+  bool ends_with_separator(const std::string &text, const char separator)
+  {
+    const auto last = text.find_last_not_of(" \t");
+    return last != std::string::npos && text[last] == separator;
+  }
+
+  std::string trim_blanks(const std::string &text)
+  {
+    const auto first = text.find_first_not_of(" \t");
+    if (first == std::string::npos)
+      return "";
+    const auto last = text.find_last_not_of(" \t");
+    return text.substr(first, last - first + 1);
+  }
+
   double parse_number(const std::string &token, const std::string &name, const std::string &text)
   {
     std::size_t used  = 0;
@@ -84,21 +104,17 @@ namespace cdea
   std::vector<double> parse_number_list(const std::string &text, const std::string &name)
   {
     std::vector<double> values;
-    std::stringstream   items(text);
-    std::string         item;
-    while (std::getline(items, item, ','))
+    for (const std::string &item : split_list(text, ','))
       {
-        const auto first = item.find_first_not_of(" \t");
-        const auto last  = item.find_last_not_of(" \t");
-        if (first == std::string::npos)
+        const std::string token = trim_blanks(item);
+        if (token.empty())
           throw InputError(name + ": empty entry in '" + text +
                            "' (expected numbers separated by ',')");
-        values.push_back(parse_number(item.substr(first, last - first + 1), name, text));
+        values.push_back(parse_number(token, name, text));
       }
     if (values.empty())
       throw InputError(name + ": no value given (expected numbers separated by ',')");
-    if (text.find_last_not_of(" \t") != std::string::npos &&
-        text[text.find_last_not_of(" \t")] == ',')
+    if (ends_with_separator(text, ','))
       throw InputError(name + ": empty entry at the end of '" + text + "'");
     return values;
   }
@@ -114,11 +130,9 @@ namespace cdea
     // Items: numbers, or the marker "..." (represented by NaN in `items`).
     std::vector<double>      items;
     std::vector<std::string> tokens;
-    std::stringstream        stream(text);
-    std::string              item;
-    while (std::getline(stream, item, ','))
+    for (const std::string &item : split_list(text, ','))
       {
-        const std::string token = trim(item);
+        const std::string token = trim_blanks(item);
         if (token.empty())
           throw InputError(name + ": empty entry in '" + text +
                            "' (expected numbers separated by ',', and '...')");
@@ -131,7 +145,7 @@ namespace cdea
         items.push_back(parse_number(token, name, text));
         tokens.push_back(token);
       }
-    if (!text.empty() && text.back() == ',')
+    if (ends_with_separator(text, ','))
       throw InputError(name + ": empty entry at the end of '" + text + "'");
     if (items.empty())
       throw InputError(name + ": no value given (expected numbers separated by ',')");

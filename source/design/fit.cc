@@ -1,22 +1,14 @@
 // The least-squares calibration by Ceres (Levenberg-Marquardt with the exact
-// Jacobian), its error analysis, and the command `cdea fit`.
+// Jacobian) and its error analysis. The command is commands/fit.cc.
 
-#include <cdea/analysis/commands.h>
 #include <cdea/design/fit.h>
-#include <cdea/input/parameters.h>
 #include <cdea/base/run_control.h>
 #include <cdea/base/format.h>
-#include <cdea/output/hdf5_writer.h>
-#include <cdea/output/safe_files.h>
 
 #include <Eigen/SVD>
 #include <ceres/ceres.h>
 
-
-#include <chrono>
 #include <cmath>
-#include <iomanip>
-#include <iostream>
 
 namespace cdea
 {
@@ -100,41 +92,6 @@ namespace cdea
       const std::function<void(unsigned int, double, const std::vector<double> &)> &f;
       const std::vector<double> &q, &scale;
     };
-
-    /// A parameter in the units of its prm entry, with the unit.
-    std::pair<double, std::string> shown(const SceneParameter &p, const double value)
-    {
-      switch (p.kind)
-        {
-          case ParameterKind::shear_modulus:
-            return {value * 1e-3, "kPa"};
-          case ParameterKind::mass:
-            return {value * 1e3, "g"};
-          case ParameterKind::permittivity:
-            return {value, "F/m"};
-          default:
-            return {value, ""};
-        }
-    }
-
-    std::string label(const SceneParameter &p)
-    {
-      switch (p.kind)
-        {
-          case ParameterKind::shear_modulus:
-            return "shear modulus";
-          case ParameterKind::jlim:
-            return "Jlim";
-          case ParameterKind::permittivity:
-            return "permittivity";
-          case ParameterKind::mass:
-            return "mass";
-          case ParameterKind::prestretch:
-            return "pre-stretch";
-          default:
-            return p.name();
-        }
-    }
   } // namespace
 
   FitResult fit(const Scene &base, const CalibrationData &data, const FitSettings &settings,
@@ -256,166 +213,5 @@ namespace cdea
     else
       r.warnings.push_back("as many data points as free parameters: no standard errors");
     return r;
-  }
-
-  int run_fit(const std::string &prm_file, const std::string &data_file)
-  {
-    Parameters      p;
-    Scene           base;
-    FitSettings     settings;
-    CalibrationData data;
-    std::string     text;
-    try
-      {
-        p        = read_parameters(prm_file, &text);
-        base     = p.scene();
-        settings = fit_settings(p);
-        data     = read_calibration_data(data_file, base.n_rings());
-        if (data.size() < settings.free.size())
-          throw InputError(data_file + ": " + std::to_string(data.size()) + " data points for " +
-                           std::to_string(settings.free.size()) +
-                           " free parameters (Calibration/Free parameters): give at least as "
-                           "many points as parameters");
-      }
-    catch (const InputError &e)
-      {
-        std::cerr << "cdea: " << e.what() << '\n';
-        return exit_input_error;
-      }
-    const std::string h5_path  = p.results_path("_fit");
-    const std::string prm_path = p.output.directory + "/" + p.output.base_name + "_fit.prm";
-    // The output must be writable, and ours alone (a lock on the .h5 file),
-    // before anything is computed.
-    OutputLock lock;
-    {
-      std::string why;
-      if (!claim_output(h5_path, lock, why))
-        {
-          std::cerr << "cdea: cannot write '" << h5_path << "': " << why << '\n';
-          return exit_input_error;
-        }
-    }
-    // SIGINT, SIGTERM: the fit stops after its current iteration and writes
-    // the values reached (exit code 2).
-    const StopOnSignals stop_on_signals;
-
-    const auto start = std::chrono::steady_clock::now();
-    std::cout << "cdea " << CDEA_VERSION << " fit: " << data.size() << " points of " << data_file
-              << ", " << base.n_rings() << " ring(s); free:";
-    for (const auto &f : settings.free)
-      std::cout << "  " << label(f);
-    std::cout << "\n" << std::setw(5) << "iter" << std::setw(16) << "cost (mm^2)"
-              << "  parameters\n";
-    SteppingSettings stepping = stepping_settings(p);
-    stepping.arc_length       = false;
-    stepping.stability_check  = false;
-    stepping.breakdown_field  = 0.;
-    DisplacementModel model(base, data, settings.free, fe_discretization(p), newton_settings(p),
-                            stepping);
-    const FitResult   r = fit(base, data, settings, model,
-                            [&](unsigned int k, double cost, const std::vector<double> &v) {
-                              std::cout << std::setw(5) << k << std::setw(16)
-                                        << format_number(cost, 8);
-                              for (std::size_t j = 0; j < v.size(); ++j)
-                                std::cout << "  " << format_number(shown(settings.free[j], v[j]).first, 8);
-                              std::cout << std::endl;
-                            });
-    std::vector<std::vector<double>> curve_kV;
-    std::vector<double>              curve_mm;
-    if (r.fitted.size() > 0)
-      {
-        std::vector<std::vector<double>> v;
-        std::vector<double>              d;
-        model.curve(r.values, 8, v, d);
-        for (std::size_t k = 0; k < v.size(); ++k)
-          {
-            std::vector<double> kV;
-            for (const double x : v[k])
-              kV.push_back(x * 1e-3);
-            curve_kV.push_back(kV);
-            curve_mm.push_back(d[k] * 1e3);
-          }
-      }
-    const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-    std::cout << "\n" << (r.converged ? "Converged" : "NOT converged") << ": " << r.status << "\n"
-              << std::left << std::setw(22) << "parameter" << std::right << std::setw(16)
-              << "start" << std::setw(16) << "fitted" << std::setw(16) << "std. error"
-              << std::setw(10) << "rel." << '\n';
-    for (std::size_t j = 0; j < settings.free.size(); ++j)
-      {
-        const auto [v0, unit] = shown(settings.free[j], r.initial[j]);
-        const double v        = shown(settings.free[j], r.values[j]).first;
-        const double e        = shown(settings.free[j], r.standard_errors[j]).first;
-        std::cout << std::left << std::setw(22) << label(settings.free[j]) + (unit.empty() ? "" : " (" + unit + ")")
-                  << std::right << std::setw(16) << format_number(v0, 8) << std::setw(16)
-                  << format_number(v, 8) << std::setw(16) << format_number(e, 3) << std::setw(10)
-                  << format_number(e / std::abs(v), 2) << '\n';
-      }
-    if (settings.free.size() > 1)
-      {
-        std::cout << "correlation:\n";
-        for (std::size_t i = 0; i < settings.free.size(); ++i)
-          {
-            std::cout << "  " << std::left << std::setw(16) << label(settings.free[i]) << std::right;
-            for (std::size_t j = 0; j < settings.free.size(); ++j)
-              std::cout << std::setw(9) << format_fixed(r.correlation(i, j), 4);
-            std::cout << '\n';
-          }
-      }
-    if (r.fitted.size() > 0)
-      {
-        std::cout << "residuals (model - measured):\n" << std::setw(6) << "point" << std::setw(24)
-                  << "voltages (kV)" << std::setw(16) << "measured (mm)" << std::setw(16)
-                  << "model (mm)" << std::setw(16) << "residual (mm)" << '\n';
-        for (std::size_t i = 0; i < data.size(); ++i)
-          std::cout << std::setw(6) << i + 1 << std::setw(24) << format_kV(data.voltages[i], 5)
-                    << std::setw(16) << format_fixed(data.displacement[i] * 1e3, 6) << std::setw(16)
-                    << format_fixed(r.fitted[i] * 1e3, 6) << std::setw(16)
-                    << format_number(r.residuals[i] * 1e3, 3) << '\n';
-        std::cout << "weighted rms residual " << format_number(r.rms * 1e3, 4)
-                  << " mm, condition number of the scaled Jacobian "
-                  << format_number(r.condition, 3) << '\n';
-      }
-    for (const auto &w : r.warnings)
-      std::cout << "WARNING: " << w << '\n';
-    std::cout << r.iterations << " iterations, " << r.evaluations << " evaluations, "
-              << model.solves() << " equilibrium solves (" << model.ramps() << " ramps), "
-              << std::setprecision(3) << seconds << " s\n";
-
-    try
-      {
-        write_fit_file(h5_path, text, data, settings, r, curve_kV, curve_mm, model.solves());
-        if (r.fitted.size() > 0)
-          {
-            std::vector<ParameterChange> changes;
-            for (std::size_t j = 0; j < settings.free.size(); ++j)
-              changes.push_back(fitted_entry(settings.free[j], r.values[j]));
-            write_changed_parameters(prm_file, prm_path, changes,
-                                     "# Written by cdea fit: the parameter file with the fitted "
-                                     "values.\n");
-          }
-      }
-    catch (const std::exception &e)
-      {
-        std::cerr << "cdea: the results cannot be written: " << e.what()
-                  << " (older files of this name stay as they were)\n";
-        return exit_not_complete;
-      }
-    std::cout << "wrote " << h5_path << (r.fitted.size() ? " and " + prm_path : "") << '\n';
-    if (const int signal = StopOnSignals::requested())
-      {
-        std::cerr << "cdea: interrupted by " << signal_name(signal) << "; the values reached are in "
-                  << h5_path << '\n';
-        return exit_not_complete;
-      }
-    if (!r.converged)
-      {
-        std::cerr << "cdea: the fit did not converge (" << r.status << "); the last values are in "
-                  << h5_path << '\n';
-        return exit_not_complete;
-      }
-    return exit_success;
   }
 } // namespace cdea

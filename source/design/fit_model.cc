@@ -1,9 +1,11 @@
 // The input of `cdea fit` (the data file, subsection Calibration) and the
 // displacements of the data points with their Jacobian (DisplacementModel).
 
+#include <cdea/base/format.h>
 #include <cdea/design/fit.h>
 #include <cdea/input/parameters.h>
-#include <cdea/base/format.h>
+#include <cdea/input/solver_settings.h>
+#include <cdea/input/validation.h>
 
 #include <algorithm>
 #include <cctype>
@@ -16,13 +18,12 @@ namespace cdea
 {
   namespace
   {
-    /// Fields of one CSV line, blanks around each removed.
+    /// Fields of one CSV line, blanks around each removed; a ',' at the end
+    /// of the line ends in an empty field.
     std::vector<std::string> fields_of(const std::string &line)
     {
       std::vector<std::string> fields;
-      std::stringstream        in(line);
-      std::string              field;
-      while (std::getline(in, field, ','))
+      for (const std::string &field : split_list(line, ','))
         {
           std::size_t b = 0, e = field.size();
           while (b < e && std::isspace(static_cast<unsigned char>(field[b])))
@@ -52,13 +53,73 @@ namespace cdea
     return read_calibration_data(in, file, n_rings);
   }
 
+  namespace
+  {
+    /// The columns of the header line @p fields: every one known, each once,
+    /// a voltage per ring and the displacement there.
+    std::map<std::string, int> header_columns(const std::vector<std::string> &fields,
+                                              const std::string &where, const unsigned int n_rings)
+    {
+      std::map<std::string, int> column; // name -> index in a line
+      for (std::size_t k = 0; k < fields.size(); ++k)
+        {
+          const std::string &name  = fields[k];
+          bool               known = name == "displacement_mm" || name == "weight";
+          for (unsigned int r = 1; r <= n_rings; ++r)
+            known = known || name == "V" + std::to_string(r) + "_kV";
+          if (!known)
+            throw InputError(where + ": unknown column '" + name + "' (expected V1_kV .. V" +
+                             std::to_string(n_rings) +
+                             "_kV, one per ring of Electrodes/Ring edges (r/a), "
+                             "displacement_mm and optionally weight)");
+          if (!column.emplace(name, int(k)).second)
+            throw InputError(where + ": column '" + name + "' appears twice");
+        }
+      for (unsigned int r = 1; r <= n_rings; ++r)
+        if (!column.count("V" + std::to_string(r) + "_kV"))
+          throw InputError(where + ": no column V" + std::to_string(r) + "_kV (there are " +
+                           std::to_string(n_rings) + " rings)");
+      if (!column.count("displacement_mm"))
+        throw InputError(where + ": no column displacement_mm");
+      return column;
+    }
+
+    /// One data line @p line (its @p fields) appended to @p data.
+    void add_point(const std::vector<std::string> &fields, const std::string &line,
+                   const std::string &where, const std::map<std::string, int> &column,
+                   const unsigned int n_rings, CalibrationData &data)
+    {
+      const auto value = [&](const std::string &name) {
+        return parse_number(fields[column.at(name)], where + ", column " + name, line);
+      };
+      std::vector<double> volts;
+      for (unsigned int r = 1; r <= n_rings; ++r)
+        {
+          const std::string name = "V" + std::to_string(r) + "_kV";
+          const double      v    = value(name);
+          if (v < 0.)
+            throw InputError(where + ", column " + name +
+                             ": a voltage must not be negative, got " + format_number(v));
+          volts.push_back(v * 1e3);
+        }
+      const double d = value("displacement_mm");
+      const double w = column.count("weight") ? value("weight") : 1.;
+      if (!(w > 0.))
+        throw InputError(where + ", column weight: weights must be positive, got " +
+                         format_number(w));
+      data.voltages.push_back(volts);
+      data.displacement.push_back(d * 1e-3);
+      data.weight.push_back(w);
+    }
+  } // namespace
+
   CalibrationData read_calibration_data(std::istream &in, const std::string &file,
                                         const unsigned int n_rings)
   {
-    CalibrationData          data;
+    CalibrationData            data;
     std::map<std::string, int> column; // name -> index in a line
-    std::size_t              n_columns = 0;
-    std::string              line;
+    std::size_t                n_columns = 0;
+    std::string                line;
     for (unsigned int number = 1; std::getline(in, line); ++number)
       {
         if (const auto hash = line.find('#'); hash != std::string::npos)
@@ -71,54 +132,14 @@ namespace cdea
         const std::string where  = file + ", line " + std::to_string(number);
         if (column.empty())
           {
-            // The header: every column known, each once.
-            for (std::size_t k = 0; k < fields.size(); ++k)
-              {
-                const std::string &name  = fields[k];
-                bool               known = name == "displacement_mm" || name == "weight";
-                for (unsigned int r = 1; r <= n_rings; ++r)
-                  known = known || name == "V" + std::to_string(r) + "_kV";
-                if (!known)
-                  throw InputError(where + ": unknown column '" + name +
-                                   "' (expected V1_kV .. V" + std::to_string(n_rings) +
-                                   "_kV, one per ring of Electrodes/Ring edges (r/a), "
-                                   "displacement_mm and optionally weight)");
-                if (!column.emplace(name, int(k)).second)
-                  throw InputError(where + ": column '" + name + "' appears twice");
-              }
-            for (unsigned int r = 1; r <= n_rings; ++r)
-              if (!column.count("V" + std::to_string(r) + "_kV"))
-                throw InputError(where + ": no column V" + std::to_string(r) + "_kV (there are " +
-                                 std::to_string(n_rings) + " rings)");
-            if (!column.count("displacement_mm"))
-              throw InputError(where + ": no column displacement_mm");
+            column    = header_columns(fields, where, n_rings);
             n_columns = fields.size();
             continue;
           }
         if (fields.size() != n_columns)
-          throw InputError(where + ": " + std::to_string(fields.size()) + " fields, but the header has " +
-                           std::to_string(n_columns));
-        const auto value = [&](const std::string &name) {
-          return parse_number(fields[column.at(name)], where + ", column " + name, line);
-        };
-        std::vector<double> volts;
-        for (unsigned int r = 1; r <= n_rings; ++r)
-          {
-            const std::string name = "V" + std::to_string(r) + "_kV";
-            const double      v    = value(name);
-            if (v < 0.)
-              throw InputError(where + ", column " + name + ": a voltage must not be negative, got " +
-                               format_number(v));
-            volts.push_back(v * 1e3);
-          }
-        const double d = value("displacement_mm");
-        const double w = column.count("weight") ? value("weight") : 1.;
-        if (!(w > 0.))
-          throw InputError(where + ", column weight: weights must be positive, got " +
-                           format_number(w));
-        data.voltages.push_back(volts);
-        data.displacement.push_back(d * 1e-3);
-        data.weight.push_back(w);
+          throw InputError(where + ": " + std::to_string(fields.size()) +
+                           " fields, but the header has " + std::to_string(n_columns));
+        add_point(fields, line, where, column, n_rings, data);
       }
     if (column.empty())
       throw InputError(file + ": no header line (the column names V1_kV, ..., displacement_mm)");
@@ -137,10 +158,8 @@ namespace cdea
       {"permittivity", ParameterKind::permittivity},
       {"mass", ParameterKind::mass},
       {"pre-stretch", ParameterKind::prestretch}};
-    FitSettings       s;
-    std::stringstream items(p.calibration.free_parameters_text);
-    std::string       item;
-    while (std::getline(items, item, ','))
+    FitSettings s;
+    for (const std::string &item : split_list(p.calibration.free_parameters_text, ','))
       {
         const auto fields = fields_of(item);
         const std::string key = lower_case(fields.empty() ? "" : fields[0]);
@@ -163,6 +182,63 @@ namespace cdea
       throw InputError("cdea fit supports Wrinkling/Model = check and Reservoir/Water load = "
                        "false only (the displacement of the actuator under its dead load)");
     return s;
+  }
+
+  void require_enough_points(const CalibrationData &data, const FitSettings &settings,
+                             const std::string &name)
+  {
+    if (data.size() < settings.free.size())
+      throw InputError(name + ": " + std::to_string(data.size()) + " data points for " +
+                       std::to_string(settings.free.size()) +
+                       " free parameters (Calibration/Free parameters): give at least as "
+                       "many points as parameters");
+  }
+
+  std::string label(const SceneParameter &p)
+  {
+    switch (p.kind)
+      {
+        case ParameterKind::shear_modulus:
+          return "shear modulus";
+        case ParameterKind::jlim:
+          return "Jlim";
+        case ParameterKind::permittivity:
+          return "permittivity";
+        case ParameterKind::mass:
+          return "mass";
+        case ParameterKind::prestretch:
+          return "pre-stretch";
+        default:
+          return p.name();
+      }
+  }
+
+  Calibrated calibrate(const Parameters &p, const Scene &base, const CalibrationData &data,
+                       const FitSettings &settings,
+                       const std::function<void(unsigned int, double, const std::vector<double> &)>
+                         &progress)
+  {
+    DisplacementModel model(base, data, settings.free, fe_discretization(p), newton_settings(p),
+                            study_stepping_settings(p));
+    Calibrated c;
+    c.result = fit(base, data, settings, model, progress);
+    if (c.result.fitted.size() > 0)
+      {
+        std::vector<std::vector<double>> v;
+        std::vector<double>              d;
+        model.curve(c.result.values, 8, v, d);
+        for (std::size_t k = 0; k < v.size(); ++k)
+          {
+            std::vector<double> kV;
+            for (const double x : v[k])
+              kV.push_back(x * 1e-3);
+            c.curve_kV.push_back(kV);
+            c.curve_mm.push_back(d[k] * 1e3);
+          }
+      }
+    c.solves = model.solves();
+    c.ramps  = model.ramps();
+    return c;
   }
 
   Scene scene_with(const Scene &base, const std::vector<SceneParameter> &free,

@@ -1,5 +1,6 @@
 // What `cdea fit` writes: <Base name>_fit.h5 and <Base name>_fit.prm.
 
+#include <cdea/base/format.h>
 #include <cdea/design/fit.h>
 #include <cdea/output/hdf5_writer.h>
 

@@ -32,9 +32,7 @@ namespace cdea
     std::vector<double> numbers_or_free(const std::string &text, const std::string &name)
     {
       std::vector<double> values;
-      std::stringstream   items(text);
-      std::string         item;
-      while (std::getline(items, item, ','))
+      for (const std::string &item : split_list(text, ','))
         {
           const std::string token = trimmed(item);
           if (token.empty())
@@ -45,7 +43,7 @@ namespace cdea
         }
       if (values.empty())
         throw InputError(name + ": no value given (expected numbers or 'free')");
-      if (trimmed(text).back() == ',') // getline() yields no empty last entry
+      if (trimmed(text).back() == ',') // a ',' at the end closes the last entry only
         throw InputError(name + ": empty entry at the end of '" + text + "'");
       return values;
     }

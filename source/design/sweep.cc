@@ -1,39 +1,28 @@
-// `cdea sweep FILE.prm`: the map's rows over the MPI ranks, progress display
-// and the command itself. The input is read in sweep_settings.cc, one row is
-// continued in sweep_row.cc, the file is written in sweep_file.cc.
+// The map of `cdea sweep`: its rows dealt round-robin to the MPI ranks,
+// their progress relayed to rank 0 and the rows gathered there; the map of one
+// process in memory (the Python module). The input is read in
+// sweep_settings.cc, one row is continued in sweep_row.cc, the file is
+// written in sweep_file.cc; the command is commands/sweep.cc.
 
-#include <cdea/analysis/commands.h>
 #include <cdea/base/mpi_session.h>
-#include <cdea/input/parameters.h>
 #include <cdea/base/run_control.h>
-#include <cdea/base/progress.h>
 #include <cdea/design/sweep.h>
-#include <cdea/base/format.h>
-#include <cdea/output/safe_files.h>
-
-#include <unistd.h>
+#include <cdea/input/parameter_input.h>
+#include <cdea/input/parameters.h>
+#include <cdea/input/solver_settings.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <cstring>
-#include <iomanip>
-#include <iostream>
-#include <sstream>
 
 namespace cdea
 {
   namespace
   {
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-  } // namespace
 
-
-  namespace
-  {
     // ---------------------------------------------------------------------
     // Rows as bytes, for the gather (memcpy: the doubles arrive bit for bit).
 
@@ -132,6 +121,7 @@ namespace cdea
       out.put(std::uint64_t(index));
       out.put(r.rv_over_a);
       out.put(std::uint64_t(r.base_reached));
+      out.put(std::uint64_t(r.skipped));
       for (const double x : {r.base_displacement, r.base_s2_inner[0], r.base_s2_inner[1],
                              r.lowest_voltage, r.highest_voltage, r.seconds, r.base_seconds,
                              r.line_seconds})
@@ -154,6 +144,7 @@ namespace cdea
       const std::size_t index = in.get_uint();
       r.rv_over_a             = in.get_double();
       r.base_reached          = in.get_uint() != 0;
+      r.skipped               = in.get_uint() != 0;
       r.base_displacement     = in.get_double();
       r.base_s2_inner[0]      = in.get_double();
       r.base_s2_inner[1]      = in.get_double();
@@ -176,289 +167,218 @@ namespace cdea
     }
 
     constexpr int progress_tag = 7401;
+
+    /// Grid points done, told to on_points on rank 0 as they come in: rank 0
+    /// reports its own at once and polls for the counts of the other ranks,
+    /// which send theirs at most every 0.2 s and at the end of each row.
+    class ProgressRelay
+    {
+    public:
+      ProgressRelay(const std::uint64_t                     expected_from_others,
+                    const std::function<void(std::size_t)> &on_points)
+        : distributed(mpi::size() > 1)
+        , root(mpi::rank() == 0)
+        , channel(progress_tag)
+        , expected(expected_from_others)
+        , on_points(on_points)
+        , last_send(std::chrono::steady_clock::now())
+      {}
+
+      /// @p count more points of this rank are done.
+      void add(const std::size_t count)
+      {
+        if (!distributed || root)
+          {
+            if (on_points)
+              on_points(count);
+            poll();
+            return;
+          }
+        pending += count;
+        if (std::chrono::steady_clock::now() - last_send > std::chrono::milliseconds(200))
+          send();
+      }
+
+      /// At the end of a row: what this rank has not sent yet leaves now.
+      void end_of_row()
+      {
+        if (distributed && !root)
+          send();
+      }
+
+      /// At the end of this rank's rows: rank 0 takes every count still to
+      /// come, the others wait until theirs have left.
+      void finish()
+      {
+        if (!distributed)
+          return;
+        if (!root)
+          {
+            channel.wait_for_sends();
+            return;
+          }
+        while (received < expected)
+          {
+            const std::uint64_t count = channel.receive();
+            received += count;
+            if (on_points)
+              on_points(count);
+          }
+      }
+
+    private:
+      const bool                              distributed, root;
+      mpi::CountChannel                       channel;
+      const std::uint64_t                     expected;
+      const std::function<void(std::size_t)> &on_points;
+      std::uint64_t                           pending = 0, received = 0;
+      std::chrono::steady_clock::time_point   last_send;
+
+      void poll()
+      {
+        if (!distributed)
+          return;
+        std::uint64_t count = 0;
+        while (received < expected && channel.try_receive(count))
+          {
+            received += count;
+            if (on_points)
+              on_points(count);
+          }
+      }
+
+      void send()
+      {
+        if (pending == 0)
+          return;
+        channel.send(pending);
+        pending   = 0;
+        last_send = std::chrono::steady_clock::now();
+      }
+    };
+
+    /// A row without results (NaN everywhere) that says why.
+    SweepRow empty_row(const double rv, const std::size_t m, const std::string &message)
+    {
+      SweepRow row;
+      row.rv_over_a = rv;
+      for (auto *v : {&row.displacement, &row.stroke, &row.stroke_increase,
+                      &row.s2_inner_ring1, &row.s2_inner_ring2})
+        v->assign(m, nan);
+      row.message = message;
+      return row;
+    }
+
+    /// What every row of a map shares: its settings and the models' settings.
+    struct RowContext
+    {
+      const Scene           &base;
+      const SweepSettings   &settings;
+      const FeDiscretization disc;
+      const NewtonSettings   newton;
+      const SteppingSettings stepping;
+      double                 zero_voltage_displacement;
+    };
+
+    /// Row @p rv of the map, its points reported to @p progress. An error is
+    /// recorded, not fatal: the row stays NaN and the other ranks go on.
+    SweepRow map_row(const RowContext &c, const double rv, ProgressRelay &progress)
+    {
+      const std::size_t m = c.settings.outer_voltages.size();
+      if (const int signal = StopOnSignals::requested())
+        {
+          SweepRow row = empty_row(rv, m, RunInterrupted(signal).what());
+          row.skipped  = true;
+          progress.add(m);
+          return row;
+        }
+      std::size_t reported = 0;
+      try
+        {
+          const Scene   scene = sweep_scene(c.base, rv, c.settings.inner_voltage);
+          MembraneModel model(scene, c.disc, c.newton);
+          return compute_sweep_row(model, scene, c.settings, c.stepping,
+                                   c.zero_voltage_displacement, [&](const std::size_t count) {
+                                     reported += count;
+                                     progress.add(count);
+                                   });
+        }
+      catch (const std::exception &e)
+        {
+          if (reported < m)
+            progress.add(m - reported);
+          return empty_row(rv, m, "error: " + one_line_message(e));
+        }
+    }
+
+    /// Every rank's packed rows gathered on rank 0 into @p rows (n of them,
+    /// in map order); the other ranks keep their own.
+    void gather_rows(const Packer &local, const std::size_t n, std::vector<SweepRow> &rows)
+    {
+      const std::vector<std::string> packed = mpi::gather_bytes(local.bytes);
+      if (mpi::rank() != 0)
+        {
+          Unpacker in(local.bytes.data(), local.bytes.data() + local.bytes.size());
+          while (!in.done())
+            rows.push_back(unpack(in).second);
+          return;
+        }
+      rows.assign(n, SweepRow());
+      std::vector<bool> seen(n, false);
+      for (const std::string &bytes : packed)
+        {
+          Unpacker in(bytes.data(), bytes.data() + bytes.size());
+          while (!in.done())
+            {
+              auto [index, row] = unpack(in);
+              if (index >= n || seen[index])
+                throw std::runtime_error("cdea sweep: bad row index in the gather");
+              seen[index] = true;
+              rows[index] = std::move(row);
+            }
+        }
+      if (std::find(seen.begin(), seen.end(), false) != seen.end())
+        throw std::runtime_error("cdea sweep: a row is missing after the gather");
+    }
   } // namespace
 
   SweepMap compute_sweep_map(const Parameters &p, const Scene &base,
                              const SweepSettings &settings,
                              const std::function<void(std::size_t)> &on_points)
   {
-    const FeDiscretization disc     = fe_discretization(p);
-    const NewtonSettings   newton   = newton_settings(p);
-    const SteppingSettings stepping = sweep_stepping_settings(p);
-    const std::size_t      n        = settings.ring_edge_values.size();
-    const std::size_t      m        = settings.outer_voltages.size();
-
+    RowContext context{base,
+                       settings,
+                       fe_discretization(p),
+                       newton_settings(p),
+                       sweep_stepping_settings(p),
+                       0.};
     SweepMap map;
     map.settings = settings;
     // The same on every rank (same input, same arithmetic).
-    map.zero_voltage_displacement = zero_voltage_displacement(base, disc, newton, stepping);
+    map.zero_voltage_displacement =
+      zero_voltage_displacement(base, context.disc, context.newton, context.stepping);
+    context.zero_voltage_displacement = map.zero_voltage_displacement;
 
-    const unsigned int             rank = mpi::rank(), size = mpi::size();
-    const std::vector<std::size_t> mine = rows_of_rank(n, rank, size);
-    const bool                     distributed = size > 1;
-
-    // Progress: rank 0 reports its own points and polls for the counts the
-    // other ranks send (at most every 0.2 s and at the end of each row).
-    mpi::CountChannel   channel(progress_tag);
-    std::uint64_t       pending   = 0;
-    auto                last_send = std::chrono::steady_clock::now();
-    std::uint64_t       received  = 0;
-    const std::uint64_t expected  = std::uint64_t(n - mine.size()) * m;
-    auto poll = [&] {
-      if (!distributed || rank != 0)
-        return;
-      std::uint64_t count = 0;
-      while (received < expected && channel.try_receive(count))
-        {
-          received += count;
-          if (on_points)
-            on_points(count);
-        }
-    };
-    auto send = [&] {
-      if (pending == 0)
-        return;
-      channel.send(pending);
-      pending   = 0;
-      last_send = std::chrono::steady_clock::now();
-    };
-    auto points_done = [&](const std::size_t count) {
-      if (!distributed || rank == 0)
-        {
-          if (on_points)
-            on_points(count);
-          poll();
-          return;
-        }
-      pending += count;
-      if (std::chrono::steady_clock::now() - last_send > std::chrono::milliseconds(200))
-        send();
-    };
-
-    Packer local;
+    const std::size_t n = settings.ring_edge_values.size(), m = settings.outer_voltages.size();
+    const std::vector<std::size_t> mine = rows_of_rank(n, mpi::rank(), mpi::size());
+    const bool                     distributed = mpi::size() > 1;
+    ProgressRelay progress(std::uint64_t(n - mine.size()) * m, on_points);
+    Packer        local;
     for (const std::size_t i : mine)
       {
-        const double rv       = settings.ring_edge_values[i];
-        std::size_t  reported = 0;
-        SweepRow     row;
-        try
-          {
-            const Scene   scene = sweep_scene(base, rv, settings.inner_voltage);
-            MembraneModel model(scene, disc, newton);
-            row = compute_sweep_row(model, scene, settings, stepping,
-                                    map.zero_voltage_displacement, [&](const std::size_t c) {
-                                      reported += c;
-                                      points_done(c);
-                                    });
-          }
-        catch (const std::exception &e)
-          {
-            // Recorded, not fatal: the row stays NaN and the other ranks go on.
-            row           = SweepRow();
-            row.rv_over_a = rv;
-            for (auto *v : {&row.displacement, &row.stroke, &row.stroke_increase,
-                            &row.s2_inner_ring1, &row.s2_inner_ring2})
-              v->assign(m, nan);
-            row.message = "error: " + one_line_message(e);
-            if (reported < m)
-              points_done(m - reported);
-          }
-        if (distributed && rank != 0)
-          send();
+        SweepRow row = map_row(context, settings.ring_edge_values[i], progress);
+        progress.end_of_row();
         if (distributed)
           pack(local, i, row);
         else
           map.rows.push_back(std::move(row));
       }
-    if (!distributed)
-      return map;
-
-    if (rank == 0)
-      while (received < expected)
-        {
-          const std::uint64_t count = channel.receive();
-          received += count;
-          if (on_points)
-            on_points(count);
-        }
-    else
-      channel.wait_for_sends();
-
-    // Gather the packed rows on rank 0; the other ranks keep their own.
-    const std::vector<std::string> packed = mpi::gather_bytes(local.bytes);
-    if (rank != 0)
-      {
-        Unpacker in(local.bytes.data(), local.bytes.data() + local.bytes.size());
-        while (!in.done())
-          map.rows.push_back(unpack(in).second);
-        return map;
-      }
-    map.rows.assign(n, SweepRow());
-    std::vector<bool> seen(n, false);
-    for (const std::string &bytes : packed)
-      {
-        Unpacker in(bytes.data(), bytes.data() + bytes.size());
-        while (!in.done())
-          {
-            auto [index, row] = unpack(in);
-            if (index >= n || seen[index])
-              throw std::runtime_error("cdea sweep: bad row index in the gather");
-            seen[index]     = true;
-            map.rows[index] = std::move(row);
-          }
-      }
-    if (std::find(seen.begin(), seen.end(), false) != seen.end())
-      throw std::runtime_error("cdea sweep: a row is missing after the gather");
+    progress.finish();
+    if (distributed)
+      gather_rows(local, n, map.rows);
     return map;
   }
 
-  namespace
-  {
-    /// The maximum of a line's stroke increase over the rows (index or n).
-    std::size_t line_maximum(const SweepMap &map, SweepLine SweepRow::*line)
-    {
-      std::size_t best = map.rows.size();
-      for (std::size_t i = 0; i < map.rows.size(); ++i)
-        {
-          const double x = (map.rows[i].*line).stroke_increase;
-          if (!std::isnan(x) &&
-              (best == map.rows.size() || x > (map.rows[best].*line).stroke_increase))
-            best = i;
-        }
-      return best;
-    }
-  } // namespace
-
-  int run_sweep(const std::string &prm_file)
-  {
-    const bool  root = mpi::rank() == 0;
-    Parameters  p;
-    Scene       base;
-    std::string text;
-    SweepSettings settings;
-    try
-      {
-        p        = read_parameters(prm_file, &text);
-        base     = p.scene();
-        settings = sweep_settings(p, base);
-        for (const std::string &warning : p.input_warnings)
-          if (root)
-            std::cerr << "cdea: warning: " << warning << '\n';
-      }
-    catch (const InputError &e)
-      {
-        if (root)
-          std::cerr << "cdea: " << e.what() << '\n';
-        return exit_input_error;
-      }
-    const std::string path = p.results_path("_map");
-
-    // The output folder must be writable, and the map file ours alone,
-    // before hours of work start. Directories made here go again if no map
-    // is written.
-    int                      writable = 1;
-    OutputLock               lock;
-    std::vector<std::string> created;
-    std::string              why;
-    if (root && !claim_output(path, lock, why, &created))
-      {
-        std::cerr << "cdea: cannot write '" << path << "': " << why << '\n';
-        writable = 0;
-      }
-    mpi::broadcast(writable);
-    if (!writable)
-      return exit_input_error;
-
-    const std::size_t n = settings.ring_edge_values.size(), m = settings.outer_voltages.size();
-    if (root)
-      std::cout << "cdea " << CDEA_VERSION << " sweep: " << n << " layouts r_v/a = "
-                << settings.ring_edge_values.front() << " .. " << settings.ring_edge_values.back()
-                << " x " << m << " outer voltages " << settings.outer_from / 1e3 << " .. "
-                << settings.outer_voltages.back() / 1e3 << " kV (step "
-                << settings.outer_step / 1e3 << " kV), inner ring at "
-                << settings.inner_voltage / 1e3 << " kV\n"
-                << "FE model: degree " << p.discretization.polynomial_degree << ", "
-                << p.discretization.elements_per_ring << " elements per ring; " << mpi::size()
-                << (mpi::size() == 1 ? " rank" : " ranks") << " (rows round-robin); writing "
-                << path << std::endl;
-
-    const auto start = std::chrono::steady_clock::now();
-    Progress   progress(n * m, root);
-    SweepMap   map;
-    try
-      {
-        map = compute_sweep_map(p, base, settings,
-                                [&](const std::size_t c) { progress.add(c); });
-      }
-    catch (const std::exception &e)
-      {
-        std::cerr << "cdea: sweep failed: " << one_line_message(e) << '\n';
-        lock.release();
-        remove_created_directories(created);
-        return exit_input_error;
-      }
-    progress.finish();
-    const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (!root)
-      return exit_success;
-
-    const bool no_row_reached = !some_row_reached(map);
-    try
-      {
-        write_sweep_file(path, map, text);
-      }
-    catch (const std::exception &e)
-      {
-        std::cerr << "cdea: " << e.what() << " (the map is lost; an older map stays)\n";
-        return exit_not_complete;
-      }
-
-    // Table: one line per layout.
-    std::cout << "\nzero-voltage displacement under the dead load: " << std::setprecision(7)
-              << map.zero_voltage_displacement * 1e3 << " mm\n"
-              << std::setw(7) << "r_v/a" << std::setw(11) << "base (mm)" << std::setw(12)
-              << "reached kV" << std::setw(10) << "red kV" << std::setw(10) << "red %"
-              << std::setw(10) << "blue kV" << std::setw(10) << "blue %" << "  stop\n";
-    unsigned long solves = 0, iterations = 0;
-    for (const SweepRow &r : map.rows)
-      {
-        solves += r.solves;
-        iterations += r.newton_iterations;
-        std::cout << std::setw(7) << r.rv_over_a << std::setw(11) << format_fixed_or_dash(r.base_displacement * 1e3, 4)
-                  << std::setw(12) << format_fixed_or_dash(r.highest_voltage / 1e3, 3) << std::setw(10)
-                  << format_fixed_or_dash(r.red.outer_voltage / 1e3, 4) << std::setw(10)
-                  << format_fixed_or_dash(r.red.stroke_increase, 2) << std::setw(10)
-                  << format_fixed_or_dash(r.blue.outer_voltage / 1e3, 4) << std::setw(10)
-                  << format_fixed_or_dash(r.blue.stroke_increase, 2) << "  "
-                  << (r.message.empty() ? "-" : r.message.substr(0, 60)) << '\n';
-      }
-    for (const auto &[name, line] :
-         {std::pair<const char *, SweepLine SweepRow::*>{"red", &SweepRow::red},
-          std::pair<const char *, SweepLine SweepRow::*>{"blue", &SweepRow::blue}})
-      {
-        const std::size_t i = line_maximum(map, line);
-        if (i == map.rows.size())
-          std::cout << "largest stroke increase on the " << name << " line: none in the range\n";
-        else
-          std::cout << "largest stroke increase on the " << name << " line: "
-                    << format_fixed_or_dash((map.rows[i].*line).stroke_increase, 2) << " % at r_v/a = "
-                    << map.rows[i].rv_over_a << " (outer "
-                    << format_fixed_or_dash((map.rows[i].*line).outer_voltage / 1e3, 4) << " kV)\n";
-      }
-    std::cout << n * m << " map points, " << solves << " equilibrium solves, " << iterations
-              << " Newton iterations, " << std::setprecision(3) << seconds << " s on "
-              << mpi::size() << (mpi::size() == 1 ? " rank" : " ranks") << "\nwrote " << path << '\n';
-    if (no_row_reached)
-      {
-        std::cerr << "cdea: no layout reached the inner voltage of "
-                  << settings.inner_voltage / 1e3 << " kV (first row: "
-                  << (map.rows.empty() ? std::string("none") : map.rows.front().message)
-                  << "): the map is empty\n";
-        return exit_not_complete;
-      }
-    return exit_success;
-  }
 
   namespace
   {

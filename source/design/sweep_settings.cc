@@ -1,9 +1,9 @@
 // The input of `cdea sweep`: the value lists and the subsection Sweep, turned
 // into SweepSettings; the rows of each MPI rank.
 
-#include <cdea/analysis/commands.h>
-#include <cdea/input/parameters.h>
 #include <cdea/design/sweep.h>
+#include <cdea/input/parameters.h>
+#include <cdea/input/solver_settings.h>
 
 #include <algorithm>
 #include <cmath>
@@ -105,11 +105,7 @@ namespace cdea
 
   SteppingSettings sweep_stepping_settings(const Parameters &p)
   {
-    SteppingSettings s = stepping_settings(p);
-    s.arc_length       = false;
-    s.stability_check  = false;
-    s.breakdown_field  = 0.;
-    return s;
+    return study_stepping_settings(p);
   }
 
   std::vector<std::size_t> rows_of_rank(const std::size_t n_rows, const unsigned int rank,

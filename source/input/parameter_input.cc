@@ -1,9 +1,11 @@
 #include <deal.II/base/parameter_handler.h>
 
+#include <cdea/base/run_control.h>
+#include <cdea/input/duplicate_entries.h>
 #include <cdea/input/parameter_input.h>
 #include <cdea/input/parameters.h>
-#include <cdea/base/run_control.h>
 #include <cdea/input/validation.h>
+#include <cdea/output/safe_files.h>
 
 #include <filesystem>
 #include <fstream>
@@ -20,6 +22,13 @@ namespace cdea
       std::ostringstream message;
       e.print_info(message);
       return fold_whitespace(message.str());
+    }
+
+    /// "in parameter file 'x.prm': " or "in parameter text: ".
+    std::string where(const ParameterInput &input)
+    {
+      return input.is_text ? std::string("in parameter text: ") :
+                             "in parameter file '" + input.source + "': ";
     }
 
     /// Sets "Subsection/Entry" = value in @p prm, or throws an InputError
@@ -52,6 +61,47 @@ namespace cdea
         }
       prm.leave_subsection();
     }
+
+    /// @p prm with every entry declared, the file or text parsed and the
+    /// overrides set.
+    void parse_input(const ParameterInput &input, ParameterHandler &prm)
+    {
+      if (!input.is_text)
+        {
+          std::ifstream probe(input.source);
+          if (!probe || !std::filesystem::is_regular_file(input.source))
+            throw InputError("cannot read parameter file '" + input.source +
+                             "': it does not exist, is not a regular file or is not readable");
+        }
+      Parameters::declare(prm);
+      try
+        {
+          if (input.is_text)
+            {
+              std::istringstream in(input.source);
+              prm.parse_input(in, "parameter text", "", false);
+            }
+          else
+            prm.parse_input(input.source, "", false, false);
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          throw InputError(where(input) + message_of(e));
+        }
+      for (const auto &[key, value] : input.overrides)
+        apply_override(prm, key, value);
+    }
+
+    /// The entries set twice in the file or text.
+    std::vector<std::string> duplicate_warnings(const ParameterInput &input)
+    {
+      if (input.is_text)
+        return duplicate_entry_warnings(input.source, "parameter text");
+      std::ifstream      in(input.source);
+      std::ostringstream content;
+      content << in.rdbuf();
+      return duplicate_entry_warnings(content.str(), input.source);
+    }
   } // namespace
 
   ParameterInput ParameterInput::file(const std::string &path)
@@ -71,34 +121,8 @@ namespace cdea
 
   Parameters read_parameters(const ParameterInput &input, std::string *text)
   {
-    const std::string &filename = input.source;
-    if (!input.is_text)
-      {
-        std::ifstream probe(filename);
-        if (!probe || !std::filesystem::is_regular_file(filename))
-          throw InputError("cannot read parameter file '" + filename +
-                           "': it does not exist, is not a regular file or is not readable");
-      }
     ParameterHandler prm;
-    Parameters::declare(prm);
-    try
-      {
-        if (input.is_text)
-          {
-            std::istringstream in(input.source);
-            prm.parse_input(in, "parameter text", "", false);
-          }
-        else
-          prm.parse_input(filename, "", false, false);
-      }
-    catch (const dealii::ExceptionBase &e)
-      {
-        throw InputError((input.is_text ? std::string("in parameter text: ") :
-                                          "in parameter file '" + filename + "': ") +
-                         message_of(e));
-      }
-    for (const auto &[key, value] : input.overrides)
-      apply_override(prm, key, value);
+    parse_input(input, prm);
     Parameters parameters;
     try
       {
@@ -106,21 +130,11 @@ namespace cdea
       }
     catch (const dealii::ExceptionBase &e)
       {
-        throw InputError((input.is_text ? std::string("in parameter text: ") :
-                                          "in parameter file '" + filename + "': ") +
-                         message_of(e));
+        throw InputError(where(input) + message_of(e));
       }
     validate_ranges(parameters, parameters.scene()); // now, before anything is written
     validate_time(parameters);
-    if (input.is_text)
-      parameters.input_warnings = duplicate_entry_warnings(input.source, "parameter text");
-    else
-      {
-        std::ifstream      in(filename);
-        std::ostringstream content;
-        content << in.rdbuf();
-        parameters.input_warnings = duplicate_entry_warnings(content.str(), filename);
-      }
+    parameters.input_warnings = duplicate_warnings(input);
     if (text)
       {
         std::ostringstream out;
@@ -128,5 +142,31 @@ namespace cdea
         *text = out.str();
       }
     return parameters;
+  }
+
+  Parameters read_parameters(const std::string &filename, std::string *text)
+  {
+    return read_parameters(ParameterInput::file(filename), text);
+  }
+
+  void write_changed_parameters(const ParameterInput &input, const std::string &path,
+                                const std::vector<ParameterChange> &changes,
+                                const std::string                  &comment)
+  {
+    ParameterHandler prm;
+    parse_input(input, prm);
+    for (const ParameterChange &c : changes)
+      {
+        prm.enter_subsection(c.subsection);
+        prm.set(c.entry, c.value);
+        prm.leave_subsection();
+      }
+    std::ostringstream text;
+    text << comment;
+    prm.print_parameters(text, ParameterHandler::ShortText);
+    const std::string  bytes = text.str();
+    const WriteOutcome out   = replace_file(path, {bytes.begin(), bytes.end()}, true);
+    if (!out.ok)
+      throw std::runtime_error("cannot write '" + path + "': " + out.message);
   }
 } // namespace cdea

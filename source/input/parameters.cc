@@ -1,9 +1,6 @@
 #include <deal.II/base/parameter_handler.h>
 
-#include <cdea/input/parameter_input.h>
 #include <cdea/input/parameters.h>
-#include <cdea/base/run_control.h>
-#include <cdea/input/validation.h>
 
 #include <cmath>
 #include <sstream>
@@ -245,34 +242,6 @@ namespace cdea
       prm.leave_subsection();
     }
 
-    void Sweep::declare(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Sweep");
-      prm.declare_entry("Ring edge values (r/a)", "1.2, 1.25, 1.3, ..., 2.6", Anything(),
-                        "Inner-ring outer edges r_v/a of the two-ring layouts 1, r_v/a, b/a "
-                        "swept by `cdea sweep`, separated by ','. '...' continues the "
-                        "arithmetic sequence of the two values before it up to the value after "
-                        "it. Every value must lie strictly between 1 and b/a.");
-      prm.declare_entry("Inner voltage (kV)", "5", Anything(),
-                        "Voltage of the inner ring; both rings are first raised to it together.");
-      prm.declare_entry("Outer voltage range (kV)", "5, 8, 0.05", Anything(),
-                        "from, to, step of the outer ring's voltage in the map.");
-      prm.leave_subsection();
-    }
-
-    void Sweep::parse(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Sweep");
-      ring_edge_values_text    = prm.get("Ring edge values (r/a)");
-      const std::string inner  = prm.get("Inner voltage (kV)");
-      outer_voltage_range_text = prm.get("Outer voltage range (kV)");
-      prm.leave_subsection();
-      const auto v = parse_number_list(inner, "Sweep/Inner voltage (kV)");
-      if (v.size() != 1 || v[0] < 0.)
-        throw InputError("Sweep/Inner voltage (kV) must be one voltage >= 0, got '" + inner + "'");
-      inner_voltage_kV = v[0];
-    }
-
     void Reservoir::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Reservoir");
@@ -377,14 +346,6 @@ namespace cdea
     return choice == WrinklingModel::relaxed ? "relaxed" : "check";
   }
 
-
-
-  namespace
-  {
-    std::string format(const double x);
-  }
-
-
   namespace
   {
     std::string format(const double x)
@@ -394,120 +355,135 @@ namespace cdea
       return s.str();
     }
 
+    /// Sizes and constants a scene cannot be built from.
+    void check_geometry_and_material(const parameters::Geometry &geometry,
+                                     const parameters::Material &material,
+                                     const parameters::Loading  &loading)
+    {
+      require_positive(geometry.disk_radius_mm, "Geometry/Disk radius (mm)");
+      require_positive(geometry.frame_radius_mm, "Geometry/Frame radius (mm)");
+      require_positive(geometry.film_thickness_mm, "Geometry/Film thickness (mm)");
+      if (geometry.frame_radius_mm <= geometry.disk_radius_mm)
+        throw InputError("Geometry/Frame radius (mm) must be larger than Geometry/Disk radius "
+                         "(mm) (" + format(geometry.disk_radius_mm) + "), got " +
+                         format(geometry.frame_radius_mm));
+      if (!(geometry.prestretch > 1.))
+        throw InputError("Geometry/Prestretch must be larger than 1 (the film has to be taut), "
+                         "got " + format(geometry.prestretch));
+      require_positive(material.shear_modulus_kPa, "Material/Shear modulus (kPa)");
+      require_positive(material.jlim, "Material/Jlim");
+      require_positive(material.permittivity, "Material/Permittivity (F/m)");
+      if (loading.mass_g < 0.)
+        throw InputError("Loading/Mass (g) must be zero or positive, got " +
+                         format(loading.mass_g));
+      require_positive(loading.gravity, "Loading/Gravity (m/s^2)");
+
+      // The equi-biaxial pre-stretch alone must stay inside the Gent limit:
+      // I - 3 = 2 lam^2 + lam^-4 - 3 < Jlim.
+      const double lam = geometry.prestretch;
+      const double I3  = 2. * lam * lam + 1. / (lam * lam * lam * lam) - 3.;
+      if (I3 >= material.jlim)
+        throw InputError("Geometry/Prestretch " + format(lam) +
+                         " already exceeds the Gent limit: I1 - 3 = " + format(I3) +
+                         " must be below Material/Jlim = " + format(material.jlim));
+    }
+
+    /// Electrodes/Ring edges (r/a): 1 first, b/a last, increasing, no ring
+    /// narrower than 1e-6.
+    std::vector<double> ring_edges(const std::string &text, const double b_over_a)
+    {
+      const std::string name  = "Electrodes/Ring edges (r/a)";
+      auto              edges = parse_number_list(text, name);
+      if (edges.size() < 2)
+        throw InputError(name + ": needs at least two edges (1 and b/a = " + format(b_over_a) +
+                         "), got '" + text + "'");
+      if (std::abs(edges.front() - 1.) > 1e-9)
+        throw InputError(name + ": the first edge must be 1 (the disk edge), got " +
+                         format(edges.front()));
+      if (std::abs(edges.back() - b_over_a) > 1e-6 * b_over_a)
+        throw InputError(name + ": the last edge must be b/a = " + format(b_over_a) +
+                         " (the frame), got " + format(edges.back()));
+      for (std::size_t i = 1; i < edges.size(); ++i)
+        if (!(edges[i] > edges[i - 1]))
+          throw InputError(name + ": edges must increase strictly, but " + format(edges[i]) +
+                           " follows " + format(edges[i - 1]));
+      // A narrower ring's elements are too short for the Newton update and
+      // residual criteria (relative to a) to resolve it.
+      for (std::size_t i = 1; i < edges.size(); ++i)
+        if (edges[i] - edges[i - 1] < 1e-6)
+          throw InputError(name + ": every ring must be at least 1e-6 (r/a) wide, but the "
+                           "ring from " + format(edges[i - 1]) + " to " + format(edges[i]) +
+                           " is narrower");
+      edges.front() = 1.;
+      edges.back()  = b_over_a;
+      return edges;
+    }
+
+    /// Electrodes/Voltage path (kV): waypoints separated by ';', one
+    /// voltage per ring each, in V.
+    VoltagePath voltage_path(const std::string &text, const unsigned int n_rings)
+    {
+      const std::string                name = "Electrodes/Voltage path (kV)";
+      std::vector<std::vector<double>> waypoints;
+      for (const std::string &item : split_list(text, ';'))
+        {
+          auto w = parse_number_list(item, name);
+          if (w.size() != n_rings)
+            throw InputError(name + ": waypoint '" + item + "' has " +
+                             std::to_string(w.size()) + " voltage(s), but there are " +
+                             std::to_string(n_rings) +
+                             " ring(s): give one voltage per ring, waypoints separated by ';'");
+          for (double &v : w)
+            {
+              if (v < 0.)
+                throw InputError(name + ": voltages must not be negative (the energy "
+                                 "depends on Phi^2 only), got " + format(v));
+              v *= 1e3;
+            }
+          waypoints.push_back(w);
+        }
+      if (waypoints.empty())
+        throw InputError(name + ": no waypoint given");
+      if (ends_with_separator(text, ';'))
+        throw InputError(name + ": empty waypoint at the end of '" + text + "'");
+      return VoltagePath(waypoints);
+    }
+
+    void check_output_and_increments(const parameters::Output &output,
+                                     const parameters::Solver &solver)
+    {
+      if (output.base_name.empty() || output.base_name.find('/') != std::string::npos)
+        throw InputError("Output/Base name must be a non-empty file name without '/', got '" +
+                         output.base_name + "'");
+      if (output.directory.empty())
+        throw InputError("Output/Directory must not be empty (use . for the working directory)");
+      if (solver.min_voltage_increment_kV > solver.voltage_increment_kV)
+        throw InputError("Solver/Min voltage increment (kV) must not exceed Solver/Voltage "
+                         "increment (kV)");
+    }
   } // namespace
 
   Scene Parameters::scene() const
   {
-    require_positive(geometry.disk_radius_mm, "Geometry/Disk radius (mm)");
-    require_positive(geometry.frame_radius_mm, "Geometry/Frame radius (mm)");
-    require_positive(geometry.film_thickness_mm, "Geometry/Film thickness (mm)");
-    if (geometry.frame_radius_mm <= geometry.disk_radius_mm)
-      throw InputError("Geometry/Frame radius (mm) must be larger than Geometry/Disk radius (mm) (" +
-                       format(geometry.disk_radius_mm) + "), got " +
-                       format(geometry.frame_radius_mm));
-    if (!(geometry.prestretch > 1.))
-      throw InputError("Geometry/Prestretch must be larger than 1 (the film has to be taut), got " +
-                       format(geometry.prestretch));
-    require_positive(material.shear_modulus_kPa, "Material/Shear modulus (kPa)");
-    require_positive(material.jlim, "Material/Jlim");
-    require_positive(material.permittivity, "Material/Permittivity (F/m)");
-    if (loading.mass_g < 0.)
-      throw InputError("Loading/Mass (g) must be zero or positive, got " + format(loading.mass_g));
-    require_positive(loading.gravity, "Loading/Gravity (m/s^2)");
-
-    // The equi-biaxial pre-stretch alone must stay inside the Gent limit:
-    // I - 3 = 2 lam^2 + lam^-4 - 3 < Jlim.
-    const double lam = geometry.prestretch;
-    const double I3  = 2. * lam * lam + 1. / (lam * lam * lam * lam) - 3.;
-    if (I3 >= material.jlim)
-      throw InputError("Geometry/Prestretch " + format(lam) +
-                       " already exceeds the Gent limit: I1 - 3 = " + format(I3) +
-                       " must be below Material/Jlim = " + format(material.jlim));
-
+    check_geometry_and_material(geometry, material, loading);
     Scene scene;
     scene.disk_radius  = geometry.disk_radius_mm * 1e-3;
     scene.frame_radius = geometry.frame_radius_mm * 1e-3;
-    scene.prestretch   = lam;
+    scene.prestretch   = geometry.prestretch;
     scene.material     = {material.shear_modulus_kPa * 1e3, material.jlim,
                           material.permittivity, geometry.film_thickness_mm * 1e-3};
     scene.mass         = loading.mass_g * 1e-3;
     scene.gravity      = loading.gravity;
-
-    const std::string edges_name = "Electrodes/Ring edges (r/a)";
-    auto edges = parse_number_list(electrodes.ring_edges_text, edges_name);
-    const double b_over_a = geometry.frame_radius_mm / geometry.disk_radius_mm;
-    if (edges.size() < 2)
-      throw InputError(edges_name + ": needs at least two edges (1 and b/a = " + format(b_over_a) +
-                       "), got '" + electrodes.ring_edges_text + "'");
-    if (std::abs(edges.front() - 1.) > 1e-9)
-      throw InputError(edges_name + ": the first edge must be 1 (the disk edge), got " +
-                       format(edges.front()));
-    if (std::abs(edges.back() - b_over_a) > 1e-6 * b_over_a)
-      throw InputError(edges_name + ": the last edge must be b/a = " + format(b_over_a) +
-                       " (the frame), got " + format(edges.back()));
-    for (std::size_t i = 1; i < edges.size(); ++i)
-      if (!(edges[i] > edges[i - 1]))
-        throw InputError(edges_name + ": edges must increase strictly, but " +
-                         format(edges[i]) + " follows " + format(edges[i - 1]));
-    // A narrower ring's elements are too short for the Newton update and
-    // residual criteria (relative to a) to resolve it.
-    for (std::size_t i = 1; i < edges.size(); ++i)
-      if (edges[i] - edges[i - 1] < 1e-6)
-        throw InputError(edges_name + ": every ring must be at least 1e-6 (r/a) wide, but the "
-                         "ring from " + format(edges[i - 1]) + " to " + format(edges[i]) +
-                         " is narrower");
-    edges.front()           = 1.;
-    edges.back()            = b_over_a;
-    scene.ring_edges_over_a = edges;
-
-    const std::string path_name = "Electrodes/Voltage path (kV)";
-    std::vector<std::vector<double>> waypoints;
-    std::stringstream                items(electrodes.voltage_path_text);
-    std::string                      item;
-    while (std::getline(items, item, ';'))
-      {
-        auto w = parse_number_list(item, path_name);
-        if (w.size() != scene.n_rings())
-          throw InputError(path_name + ": waypoint '" + item + "' has " +
-                           std::to_string(w.size()) + " voltage(s), but there are " +
-                           std::to_string(scene.n_rings()) +
-                           " ring(s): give one voltage per ring, waypoints separated by ';'");
-        for (double &v : w)
-          {
-            if (v < 0.)
-              throw InputError(path_name + ": voltages must not be negative (the energy "
-                               "depends on Phi^2 only), got " + format(v));
-            v *= 1e3;
-          }
-        waypoints.push_back(w);
-      }
-    if (waypoints.empty())
-      throw InputError(path_name + ": no waypoint given");
-    const auto last = electrodes.voltage_path_text.find_last_not_of(" \t");
-    if (last != std::string::npos && electrodes.voltage_path_text[last] == ';')
-      throw InputError(path_name + ": empty waypoint at the end of '" +
-                       electrodes.voltage_path_text + "'");
-    scene.path = VoltagePath(waypoints);
-
-    if (output.base_name.empty() || output.base_name.find('/') != std::string::npos)
-      throw InputError("Output/Base name must be a non-empty file name without '/', got '" +
-                       output.base_name + "'");
-    if (output.directory.empty())
-      throw InputError("Output/Directory must not be empty (use . for the working directory)");
-    if (solver.min_voltage_increment_kV > solver.voltage_increment_kV)
-      throw InputError("Solver/Min voltage increment (kV) must not exceed Solver/Voltage "
-                       "increment (kV)");
+    scene.ring_edges_over_a =
+      ring_edges(electrodes.ring_edges_text, geometry.frame_radius_mm / geometry.disk_radius_mm);
+    scene.path = voltage_path(electrodes.voltage_path_text, scene.n_rings());
+    check_output_and_increments(output, solver);
     return scene;
   }
 
   std::string Parameters::results_path(const std::string &suffix) const
   {
     return output.directory + "/" + output.base_name + suffix + ".h5";
-  }
-
-  Parameters read_parameters(const std::string &filename, std::string *text)
-  {
-    return read_parameters(ParameterInput::file(filename), text);
   }
 
   std::string default_parameter_file(const ParameterFormat format)

@@ -1,12 +1,7 @@
 #include <deal.II/base/parameter_handler.h>
 
-#include <cdea/input/parameters.h>
+#include <cdea/base/text.h>
 #include <cdea/input/parameters_design.h>
-#include <cdea/output/safe_files.h>
-#include <cdea/input/parameters_time.h>
-
-#include <sstream>
-#include <stdexcept>
 
 namespace cdea
 {
@@ -26,41 +21,36 @@ namespace cdea
     return choice == DesignAlgorithm::mma ? "MMA" : "SLSQP";
   }
 
-  void require_quasi_static_elastic(const Parameters &p, const std::string &command)
-  {
-    if (p.viscous_material.model != MaterialModel::elastic)
-      throw InputError("Material/Model = " + to_string(p.viscous_material.model) +
-                       " is not supported by cdea " + command +
-                       ": its sensitivities are those of the elastic law (use elastic)");
-    if (p.time.enabled)
-      throw InputError("Time/Enabled = true is not supported by cdea " + command +
-                       ": it works on quasi-static equilibria (use false)");
-  }
-
-  void write_changed_parameters(const std::string &prm_file, const std::string &path,
-                                const std::vector<ParameterChange> &changes,
-                                const std::string                  &comment)
-  {
-    ParameterHandler prm;
-    Parameters::declare(prm);
-    prm.parse_input(prm_file, "", false, false);
-    for (const ParameterChange &c : changes)
-      {
-        prm.enter_subsection(c.subsection);
-        prm.set(c.entry, c.value);
-        prm.leave_subsection();
-      }
-    std::ostringstream text;
-    text << comment;
-    prm.print_parameters(text, ParameterHandler::ShortText);
-    const std::string  bytes = text.str();
-    const WriteOutcome out   = replace_file(path, {bytes.begin(), bytes.end()}, true);
-    if (!out.ok)
-      throw std::runtime_error("cannot write '" + path + "': " + out.message);
-  }
-
   namespace parameters
   {
+    void Sweep::declare(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Sweep");
+      prm.declare_entry("Ring edge values (r/a)", "1.2, 1.25, 1.3, ..., 2.6", Anything(),
+                        "Inner-ring outer edges r_v/a of the two-ring layouts 1, r_v/a, b/a "
+                        "swept by `cdea sweep`, separated by ','. '...' continues the "
+                        "arithmetic sequence of the two values before it up to the value after "
+                        "it. Every value must lie strictly between 1 and b/a.");
+      prm.declare_entry("Inner voltage (kV)", "5", Anything(),
+                        "Voltage of the inner ring; both rings are first raised to it together.");
+      prm.declare_entry("Outer voltage range (kV)", "5, 8, 0.05", Anything(),
+                        "from, to, step of the outer ring's voltage in the map.");
+      prm.leave_subsection();
+    }
+
+    void Sweep::parse(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Sweep");
+      ring_edge_values_text    = prm.get("Ring edge values (r/a)");
+      const std::string inner  = prm.get("Inner voltage (kV)");
+      outer_voltage_range_text = prm.get("Outer voltage range (kV)");
+      prm.leave_subsection();
+      const auto v = parse_number_list(inner, "Sweep/Inner voltage (kV)");
+      if (v.size() != 1 || v[0] < 0.)
+        throw InputError("Sweep/Inner voltage (kV) must be one voltage >= 0, got '" + inner + "'");
+      inner_voltage_kV = v[0];
+    }
+
     void Optimization::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Optimization");

@@ -1,18 +1,10 @@
 #include <deal.II/base/parameter_handler.h>
 
-#include <cdea/material/gent_law.h>
-#include <cdea/input/parameters.h>
-#include <cdea/input/parameters_time.h>
-#include <cdea/input/pump.h>
-#include <cdea/input/validation.h>
 #include <cdea/base/format.h>
-#include <cdea/material/two_network_gent.h>
+#include <cdea/base/text.h>
+#include <cdea/input/parameters_time.h>
 
-#include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <limits>
-#include <sstream>
 
 namespace cdea
 {
@@ -127,6 +119,27 @@ namespace cdea
       fields_interval_s     = prm.get_double("Fields interval (s)");
       prm.leave_subsection();
     }
+
+    double Time::rest_time() const
+    {
+      const std::string name = "Time/Rest time before voltage (s)";
+      if (rest_time_text == "relaxed")
+        return std::numeric_limits<double>::infinity();
+      double value = 0.;
+      try
+        {
+          value = parse_number(rest_time_text, name, rest_time_text);
+        }
+      catch (const InputError &)
+        {
+          throw InputError(name + " must be 'relaxed' or a time >= 0 in s, got '" +
+                           rest_time_text + "'");
+        }
+      if (!(value >= 0.))
+        throw InputError(name + " must be 'relaxed' or a time >= 0 in s, got " +
+                         format_number(value));
+      return value;
+    }
   } // namespace parameters
 
   std::string to_string(const MaterialModel choice)
@@ -153,263 +166,5 @@ namespace cdea
   std::string to_string(const TimeScheme choice)
   {
     return choice == TimeScheme::trapezoidal ? "trapezoidal" : "backward Euler";
-  }
-
-  namespace
-  {
-    double rest_time(const parameters::Time &t)
-    {
-      const std::string name = "Time/Rest time before voltage (s)";
-      if (t.rest_time_text == "relaxed")
-        return std::numeric_limits<double>::infinity();
-      double value = 0.;
-      try
-        {
-          value = parse_number(t.rest_time_text, name, t.rest_time_text);
-        }
-      catch (const InputError &)
-        {
-          throw InputError(name + " must be 'relaxed' or a time >= 0 in s, got '" +
-                           t.rest_time_text + "'");
-        }
-      if (!(value >= 0.))
-        throw InputError(name + " must be 'relaxed' or a time >= 0 in s, got " +
-                         format_number(value));
-      return value;
-    }
-
-    /// The table file as messages name it: a relative path with the path it
-    /// resolves to from the working directory.
-    std::string describe_file(const std::string &file)
-    {
-      const std::filesystem::path path(file);
-      std::error_code             error;
-      const auto                  resolved = std::filesystem::absolute(path, error);
-      if (path.is_absolute() || error)
-        return "'" + file + "'";
-      return "'" + file + "' (relative to the working directory: " + resolved.string() + ")";
-    }
-
-    /// Rows of the table file: times (s) and voltages (V) per ring, each
-    /// voltage at most @p ceiling (V; the film's, as for the voltage path).
-    void read_table(const std::string &file, const Scene &scene, std::vector<double> &times,
-                    std::vector<std::vector<double>> &volts)
-    {
-      const unsigned int n_rings = scene.n_rings();
-      const double       ceiling = voltage_ceiling(scene);
-      const std::string name = "Time/Table file";
-      if (file.empty())
-        throw InputError(name + " must be given for Time/Waveform = table");
-      std::error_code error;
-      if (std::filesystem::is_directory(file, error))
-        throw InputError(name + ": cannot read " + describe_file(file) + ": it is a directory");
-      std::ifstream in(file);
-      if (!in)
-        throw InputError(name + ": cannot read " + describe_file(file));
-      std::string  line;
-      unsigned int number         = 0;
-      bool         header_allowed = true; // the first non-comment line may be a header
-      while (std::getline(in, line))
-        {
-          ++number;
-          const auto first = line.find_first_not_of(" \t\r");
-          if (first == std::string::npos || line[first] == '#')
-            continue;
-          while (!line.empty() && (line.back() == '\r' || line.back() == ' '))
-            line.pop_back();
-          // A header starts with a name; a row that starts like a number and
-          // does not parse is a mistake in the data, not a header.
-          const bool header = std::string("0123456789+-.").find(line[first]) == std::string::npos;
-          if (header && header_allowed)
-            {
-              header_allowed = false;
-              continue;
-            }
-          header_allowed          = false;
-          const std::string where = name + " '" + file + "', line " + std::to_string(number);
-          const std::vector<double> row = parse_number_list(line, where);
-          if (row.size() != n_rings + 1)
-            throw InputError(where + ": expected time and " + std::to_string(n_rings) +
-                             " voltage(s), got " + std::to_string(row.size()) + " value(s)");
-          if (row[0] < 0. || (!times.empty() && !(row[0] > times.back())))
-            throw InputError(where + ": times must be >= 0 and increase strictly, got " +
-                             format_number(row[0]));
-          std::vector<double> v(row.begin() + 1, row.end());
-          for (double &x : v)
-            {
-              if (x < 0.)
-                throw InputError(where + ": voltages must not be negative, got " +
-                                 format_number(x));
-              if (!(x <= ceiling * 1e-3))
-                throw InputError(where + ": " + format_number(x) + " kV is above the voltage "
-                                 "ceiling of " + format_number(ceiling * 1e-3) + " kV for this "
-                                 "film (as for Electrodes/Voltage path (kV))");
-              x *= 1e3;
-            }
-          times.push_back(row[0]);
-          volts.push_back(v);
-        }
-      if (in.bad())
-        throw InputError(name + ": cannot read " + describe_file(file));
-      if (times.empty())
-        throw InputError(name + " " + describe_file(file) + " has no rows of numbers");
-    }
-  } // namespace
-
-  void validate_time(const Parameters &p)
-  {
-    // A million steps (as for the quasi-static path) is three times the
-    // longest documented scene (doc/time.md, 0.01 Hz at 1.25 ms) and keeps the
-    // results held in memory below a gigabyte; more is most likely a mistyped
-    // duration.
-    constexpr double max_time_steps = 1e6;
-    const auto &m = p.viscous_material;
-    const auto &t = p.time;
-    if (m.model == MaterialModel::viscoelastic)
-      {
-        // Bounds the solver can meet: network B more than 1e4 times as stiff
-        // as network A leaves no equilibrium under the dead load (measured at
-        // 1e5), and relaxation times outside 1e-12..1e12 s are below the
-        // smallest time step or beyond any run's duration.
-        const double mu_a = p.material.shear_modulus_kPa;
-        const double mu_b = m.network_b_shear_modulus_kPa;
-        if (!(mu_b >= 1e-6 * mu_a && mu_b <= 1e4 * mu_a))
-          throw InputError("Material/Network B shear modulus (kPa) must be between 1e-6 and 1e4 "
-                           "times Material/Shear modulus (kPa) (" + format_number(1e-6 * mu_a) +
-                           " to " + format_number(1e4 * mu_a) + " kPa), got " +
-                           format_number(mu_b));
-        if (!(m.network_b_jlim >= 1e-12 && m.network_b_jlim <= 1e12))
-          throw InputError("Material/Network B Jlim must be between 1e-12 and 1e12, got " +
-                           format_number(m.network_b_jlim));
-        if (!(m.relaxation_time_s >= 1e-12 && m.relaxation_time_s <= 1e12))
-          throw InputError("Material/Relaxation time (s) must be between 1e-12 and 1e12 s, got " +
-                           format_number(m.relaxation_time_s));
-        if (!t.enabled)
-          throw InputError("Material/Model = viscoelastic needs Time/Enabled = true (a "
-                           "quasi-static run has no time for the dashpots; its long-time limit "
-                           "is Material/Model = elastic)");
-        if (p.wrinkling.model == WrinklingModel::relaxed)
-          throw InputError("Wrinkling/Model = relaxed needs Material/Model = elastic (the "
-                           "tension-field relaxation wraps an elastic law)");
-      }
-    if (!t.enabled)
-      return;
-    if (p.solver.continuation == Continuation::arc_length)
-      throw InputError("Time/Enabled = true follows the waveform in time steps: set "
-                       "Solver/Continuation = load stepping");
-    require_positive(t.time_step_s, "Time/Time step (s)");
-    require_positive(t.min_time_step_s, "Time/Min time step (s)");
-    if (t.min_time_step_s > t.time_step_s)
-      throw InputError("Time/Min time step (s) must not exceed Time/Time step (s)");
-    if (!(t.fields_interval_s >= 0.))
-      throw InputError("Time/Fields interval (s) must be zero or positive, got " +
-                       format_number(t.fields_interval_s));
-    // How long the run is, to bound its number of steps.
-    double      duration = 0.;
-    std::string duration_entries;
-    switch (t.waveform)
-      {
-        case WaveformKind::ramp_hold:
-          require_positive(t.ramp_time_s, "Time/Ramp time (s)");
-          if (!(t.hold_time_s >= 0.))
-            throw InputError("Time/Hold time (s) must be zero or positive, got " +
-                             format_number(t.hold_time_s));
-          duration         = t.ramp_time_s + t.hold_time_s;
-          duration_entries = "Time/Ramp time (s) + Time/Hold time (s)";
-          break;
-        case WaveformKind::square:
-          require_positive(t.frequency_Hz, "Time/Frequency (Hz)");
-          if (!(t.rise_time_s >= t.min_time_step_s))
-            throw InputError("Time/Rise time (s) must be at least Time/Min time step (s) = " +
-                             format_number(t.min_time_step_s) + " s (an edge needs a step), got " +
-                             format_number(t.rise_time_s));
-          if (!(t.rise_time_s < 0.5 / t.frequency_Hz))
-            throw InputError("Time/Rise time (s) must be shorter than half a period, 1 / (2 "
-                             "Frequency) = " + format_number(0.5 / t.frequency_Hz) + " s, got " +
-                             format_number(t.rise_time_s));
-          duration         = t.cycles / t.frequency_Hz;
-          duration_entries = "Time/Cycles / Time/Frequency (Hz)";
-          break;
-        case WaveformKind::sine:
-          require_positive(t.frequency_Hz, "Time/Frequency (Hz)");
-          duration         = t.cycles / t.frequency_Hz;
-          duration_entries = "Time/Cycles / Time/Frequency (Hz)";
-          break;
-        case WaveformKind::table:
-          {
-            std::vector<double>              times;
-            std::vector<std::vector<double>> volts;
-            read_table(t.table_file, p.scene(), times, volts);
-            duration         = times.back();
-            duration_entries = "the last time in Time/Table file";
-          }
-          break;
-      }
-    const double rest = rest_time(t);
-    if (std::isfinite(rest) && rest > 1e12)
-      throw InputError("Time/Rest time before voltage (s) must be 'relaxed' or at most 1e12 s, "
-                       "got " + format_number(rest));
-    if (std::isfinite(rest))
-      {
-        duration += rest;
-        duration_entries += " + Time/Rest time before voltage (s)";
-      }
-    if (!(duration / t.time_step_s <= max_time_steps))
-      throw InputError("the run would take " + format_number(duration / t.time_step_s) +
-                       " time steps, more than " + format_number(max_time_steps) +
-                       ": its duration " + format_number(duration) + " s (" + duration_entries +
-                       ") over Time/Time step (s) = " + format_number(t.time_step_s) +
-                       "; shorten the run or raise the time step");
-  }
-
-  std::shared_ptr<const MembraneLaw> material_law(const Parameters &p, const Scene &scene)
-  {
-    if (p.viscous_material.model == MaterialModel::elastic)
-      return std::make_shared<GentDielectricLaw>(scene.material);
-    const auto &m = p.viscous_material;
-    return std::make_shared<TwoNetworkGentLaw>(
-      scene.material,
-      ViscousNetwork{m.network_b_shear_modulus_kPa * 1e3, m.network_b_jlim, m.relaxation_time_s});
-  }
-
-  TimeSettings time_settings(const Parameters &p, const Scene &scene)
-  {
-    const auto  &t = p.time;
-    TimeSettings s;
-    s.max_step     = t.time_step_s;
-    s.min_step     = t.min_time_step_s;
-    s.max_cutbacks = p.solver.max_cutbacks;
-    s.scheme       = t.scheme;
-    s.inertia      = t.inertia;
-    s.rest_time    = rest_time(t);
-    s.fields_interval = t.fields_interval_s;
-    if (t.inertia && t.water_inertia && p.reservoir.water_load)
-      {
-        s.water_density = p.reservoir.water_density;
-        s.water_volume  = p.reservoir.water_volume_ml * 1e-6;
-        s.tube_area     = tube_area(p);
-      }
-    const std::vector<double> peak = scene.path.voltages(scene.path.n_segments());
-    switch (t.waveform)
-      {
-        case WaveformKind::ramp_hold:
-          s.waveform = Waveform::ramp_hold(peak, t.ramp_time_s, t.hold_time_s);
-          break;
-        case WaveformKind::square:
-          s.waveform = Waveform::square(peak, t.frequency_Hz, t.cycles, t.rise_time_s);
-          break;
-        case WaveformKind::sine:
-          s.waveform = Waveform::sine(peak, t.frequency_Hz, t.cycles);
-          break;
-        case WaveformKind::table:
-          {
-            std::vector<double>              times;
-            std::vector<std::vector<double>> volts;
-            read_table(t.table_file, scene, times, volts);
-            s.waveform = Waveform::table(times, volts);
-          }
-          break;
-      }
-    return s;
   }
 } // namespace cdea

@@ -1,15 +1,15 @@
-#include <cdea/input/parameters.h>
+#include <cdea/base/format.h>
 #include <cdea/base/text.h>
+#include <cdea/input/parameters.h>
 #include <cdea/input/validation.h>
+#include <cdea/input/voltage_table.h>
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <sstream>
 
 namespace cdea
 {
-
   namespace
   {
     std::string format(const double x)
@@ -80,6 +80,204 @@ namespace cdea
                          "pre-stretched film must stay below " +
                          format(max_flat_field * 1e-9) + " GV/m)");
     }
+
+    /// Lengths, material constants, loads and the Reservoir: finite and
+    /// physically sensible.
+    void check_dimensions(const Parameters &p)
+    {
+      const auto dim = [](const double v, const std::string &name, const bool zero = false) {
+        require_range(v, lo_dimensional, hi_dimensional, name, dimensional, zero);
+      };
+      dim(p.geometry.disk_radius_mm, "Geometry/Disk radius (mm)");
+      dim(p.geometry.frame_radius_mm, "Geometry/Frame radius (mm)");
+      dim(p.geometry.film_thickness_mm, "Geometry/Film thickness (mm)");
+      require_range(p.geometry.frame_radius_mm / p.geometry.disk_radius_mm, 1., 1000.,
+                    "Geometry/Frame radius (mm) / Geometry/Disk radius (mm)",
+                    " (b/a; the meridian is meshed between them)");
+      require_range(p.geometry.prestretch, 1., 1000., "Geometry/Prestretch", "");
+      dim(p.material.shear_modulus_kPa, "Material/Shear modulus (kPa)");
+      require_range(p.material.jlim, lo_dimensional, hi_dimensional, "Material/Jlim", "");
+      require_range(p.material.permittivity, epsilon_0, 1e6 * epsilon_0,
+                    "Material/Permittivity (F/m)",
+                    " (from the vacuum permittivity to a relative permittivity of 1e6)");
+      dim(p.loading.mass_g, "Loading/Mass (g)", true);
+      dim(p.loading.gravity, "Loading/Gravity (m/s^2)");
+      dim(p.reservoir.width_mm, "Reservoir/Width (mm)");
+      dim(p.reservoir.depth_mm, "Reservoir/Depth (mm)");
+      dim(p.reservoir.water_volume_ml, "Reservoir/Water volume (ml)");
+      dim(p.reservoir.water_density, "Reservoir/Water density (kg/m^3)");
+    }
+
+    /// Every voltage of the file below the film's @p ceiling (V), and the
+    /// Sweep lists' syntax: checked for every command, so that a file is
+    /// refused (or accepted) by run and sweep alike.
+    void check_voltages(const Parameters &p, const double ceiling)
+    {
+      // From the text: a value near the largest double overflows in volts.
+      for (const std::string &waypoint : split_list(p.electrodes.voltage_path_text, ';'))
+        for (const double kV : parse_number_list(waypoint, "Electrodes/Voltage path (kV)"))
+          check_voltage(kV, ceiling, "Electrodes/Voltage path (kV)");
+      expand_value_list(p.sweep.ring_edge_values_text, "Sweep/Ring edge values (r/a)");
+      check_voltage(p.sweep.inner_voltage_kV, ceiling, "Sweep/Inner voltage (kV)");
+      const auto range =
+        parse_number_list(p.sweep.outer_voltage_range_text, "Sweep/Outer voltage range (kV)");
+      for (std::size_t i = 0; i < std::min<std::size_t>(range.size(), 2); ++i)
+        check_voltage(range[i], ceiling, "Sweep/Outer voltage range (kV)");
+      require_range(p.solver.breakdown_field_MV_per_m, 0., max_flat_field * 1e-6,
+                    "Solver/Breakdown field (MV/m)", " (0: off)");
+    }
+
+    void check_solver(const Parameters &p, const double ceiling)
+    {
+      // Relative criteria: below about 100 double roundoffs Newton cannot get there.
+      require_range(p.solver.residual_tolerance, 1e-14, 0.1, "Solver/Residual tolerance",
+                    " (relative; rounding keeps the residual above about 1e-14)");
+      require_range(p.solver.update_tolerance, 1e-14, 0.1, "Solver/Update tolerance",
+                    " (relative; rounding keeps the update above about 1e-14)");
+      require_range(p.solver.voltage_increment_kV, 1e-8, ceiling * 1e-3,
+                    "Solver/Voltage increment (kV)", " (up to the voltage ceiling)");
+      require_range(p.solver.max_displacement_mm, 0., hi_dimensional,
+                    "Solver/Max displacement (mm)", " (0: no limit)");
+      require_range(p.wrinkling.onset_tolerance_V, 1e-9, 1e6, "Wrinkling/Onset tolerance (V)",
+                    "");
+    }
+
+    /// The size of the run: elements, samples, steps, and the results held in memory.
+    void check_run_size(const Parameters &p, const Scene &scene)
+    {
+      const double elements = double(scene.n_rings()) * p.discretization.elements_per_ring *
+                              std::pow(2., p.discretization.refinements);
+      if (elements > max_elements)
+        throw InputError("Discretization: " + format(elements) + " elements (rings x Elements "
+                         "per ring x 2^Global refinements) are too many; at most " +
+                         format(max_elements));
+      const double samples = elements * p.discretization.samples_per_element;
+      if (samples > max_samples)
+        throw InputError("Discretization/Samples per element: " + format(samples) +
+                         " samples per step are too many; at most " + format(max_samples));
+      const double      steps = estimated_steps(p, scene);
+      const std::string step_entries =
+        p.solver.continuation == Continuation::arc_length ?
+          "Solver/Max arc-length steps, Load increment or Prestretch steps" :
+          "Solver/Voltage increment (kV), Load increment or Prestretch steps";
+      if (steps > max_steps)
+        throw InputError("the run would take at least " + format(steps) + " steps (at most " +
+                         format(max_steps) + "): raise " + step_entries);
+      const double bytes = steps * (bytes_per_step + bytes_per_sample * samples);
+      if (bytes > max_results_bytes)
+        throw InputError("the results of at least " + format(steps) + " steps of " +
+                         format(samples) + " samples would take about " + format(bytes * 1e-9) +
+                         " GB, above the " + format(max_results_bytes * 1e-9) +
+                         " GB that a results file may hold in memory: change " + step_entries +
+                         " or Discretization/Samples per element");
+    }
+
+    /// Output names the file system can take, with room for the suffixes
+    /// of the run's side files (".partial.h5.tmp", ".recovered-N.h5").
+    void check_output_names(const parameters::Output &output)
+    {
+      const std::string &base = output.base_name;
+      if (base.size() > max_base_name)
+        throw InputError("Output/Base name must have at most " + std::to_string(max_base_name) +
+                         " characters, got " + std::to_string(base.size()));
+      if (base == "." || base == "..")
+        throw InputError("Output/Base name must be a file name, got '" + base + "'");
+      for (const char c : base + output.directory)
+        if (static_cast<unsigned char>(c) < 0x20)
+          throw InputError("Output/Directory and Output/Base name must not contain control "
+                           "characters");
+      if (output.directory.size() > 3000)
+        throw InputError("Output/Directory must have at most 3000 characters, got " +
+                         std::to_string(output.directory.size()));
+      for (const std::string &part : split_list(output.directory, '/'))
+        if (part.size() > 255)
+          throw InputError("Output/Directory: a folder name has " + std::to_string(part.size()) +
+                           " characters, more than the file system allows (255)");
+    }
+
+    /// Network B and its interplay with the rest of the file (viscoelastic law).
+    void check_viscous_material(const Parameters &p)
+    {
+      // Bounds the solver can meet: network B more than 1e4 times as stiff
+      // as network A leaves no equilibrium under the dead load (measured at
+      // 1e5), and relaxation times outside 1e-12..1e12 s are below the
+      // smallest time step or beyond any run's duration.
+      const auto  &m    = p.viscous_material;
+      const double mu_a = p.material.shear_modulus_kPa;
+      const double mu_b = m.network_b_shear_modulus_kPa;
+      if (!(mu_b >= 1e-6 * mu_a && mu_b <= 1e4 * mu_a))
+        throw InputError("Material/Network B shear modulus (kPa) must be between 1e-6 and 1e4 "
+                         "times Material/Shear modulus (kPa) (" + format_number(1e-6 * mu_a) +
+                         " to " + format_number(1e4 * mu_a) + " kPa), got " +
+                         format_number(mu_b));
+      if (!(m.network_b_jlim >= 1e-12 && m.network_b_jlim <= 1e12))
+        throw InputError("Material/Network B Jlim must be between 1e-12 and 1e12, got " +
+                         format_number(m.network_b_jlim));
+      if (!(m.relaxation_time_s >= 1e-12 && m.relaxation_time_s <= 1e12))
+        throw InputError("Material/Relaxation time (s) must be between 1e-12 and 1e12 s, got " +
+                         format_number(m.relaxation_time_s));
+      if (!p.time.enabled)
+        throw InputError("Material/Model = viscoelastic needs Time/Enabled = true (a "
+                         "quasi-static run has no time for the dashpots; its long-time limit "
+                         "is Material/Model = elastic)");
+      if (p.wrinkling.model == WrinklingModel::relaxed)
+        throw InputError("Wrinkling/Model = relaxed needs Material/Model = elastic (the "
+                         "tension-field relaxation wraps an elastic law)");
+    }
+
+    void check_time_steps(const Parameters &p)
+    {
+      const auto &t = p.time;
+      if (p.solver.continuation == Continuation::arc_length)
+        throw InputError("Time/Enabled = true follows the waveform in time steps: set "
+                         "Solver/Continuation = load stepping");
+      require_positive(t.time_step_s, "Time/Time step (s)");
+      require_positive(t.min_time_step_s, "Time/Min time step (s)");
+      if (t.min_time_step_s > t.time_step_s)
+        throw InputError("Time/Min time step (s) must not exceed Time/Time step (s)");
+      if (!(t.fields_interval_s >= 0.))
+        throw InputError("Time/Fields interval (s) must be zero or positive, got " +
+                         format_number(t.fields_interval_s));
+    }
+
+    /// How long the waveform lasts (s), its entries checked; @p entries
+    /// receives the entries the duration comes from, for messages.
+    double waveform_duration(const Parameters &p, std::string &entries)
+    {
+      const auto &t = p.time;
+      switch (t.waveform)
+        {
+          case WaveformKind::ramp_hold:
+            require_positive(t.ramp_time_s, "Time/Ramp time (s)");
+            if (!(t.hold_time_s >= 0.))
+              throw InputError("Time/Hold time (s) must be zero or positive, got " +
+                               format_number(t.hold_time_s));
+            entries = "Time/Ramp time (s) + Time/Hold time (s)";
+            return t.ramp_time_s + t.hold_time_s;
+          case WaveformKind::square:
+            require_positive(t.frequency_Hz, "Time/Frequency (Hz)");
+            if (!(t.rise_time_s >= t.min_time_step_s))
+              throw InputError("Time/Rise time (s) must be at least Time/Min time step (s) = " +
+                               format_number(t.min_time_step_s) +
+                               " s (an edge needs a step), got " + format_number(t.rise_time_s));
+            if (!(t.rise_time_s < 0.5 / t.frequency_Hz))
+              throw InputError("Time/Rise time (s) must be shorter than half a period, 1 / (2 "
+                               "Frequency) = " + format_number(0.5 / t.frequency_Hz) +
+                               " s, got " + format_number(t.rise_time_s));
+            entries = "Time/Cycles / Time/Frequency (Hz)";
+            return t.cycles / t.frequency_Hz;
+          case WaveformKind::sine:
+            require_positive(t.frequency_Hz, "Time/Frequency (Hz)");
+            entries = "Time/Cycles / Time/Frequency (Hz)";
+            return t.cycles / t.frequency_Hz;
+          case WaveformKind::table:
+            break;
+        }
+      const Scene scene = p.scene();
+      entries           = "the last time in Time/Table file";
+      return read_voltage_table(t.table_file, scene.n_rings(), voltage_ceiling(scene))
+        .times.back();
+    }
   } // namespace
 
   double voltage_ceiling(const Scene &scene)
@@ -89,173 +287,79 @@ namespace cdea
 
   void validate_ranges(const Parameters &p, const Scene &scene)
   {
-    const auto dim = [](const double v, const std::string &name, const bool zero = false) {
-      require_range(v, lo_dimensional, hi_dimensional, name, dimensional, zero);
-    };
-    dim(p.geometry.disk_radius_mm, "Geometry/Disk radius (mm)");
-    dim(p.geometry.frame_radius_mm, "Geometry/Frame radius (mm)");
-    dim(p.geometry.film_thickness_mm, "Geometry/Film thickness (mm)");
-    require_range(p.geometry.frame_radius_mm / p.geometry.disk_radius_mm, 1., 1000.,
-                  "Geometry/Frame radius (mm) / Geometry/Disk radius (mm)",
-                  " (b/a; the meridian is meshed between them)");
-    require_range(p.geometry.prestretch, 1., 1000., "Geometry/Prestretch", "");
-    dim(p.material.shear_modulus_kPa, "Material/Shear modulus (kPa)");
-    require_range(p.material.jlim, lo_dimensional, hi_dimensional, "Material/Jlim", "");
-    require_range(p.material.permittivity, epsilon_0, 1e6 * epsilon_0,
-                  "Material/Permittivity (F/m)",
-                  " (from the vacuum permittivity to a relative permittivity of 1e6)");
-    dim(p.loading.mass_g, "Loading/Mass (g)", true);
-    dim(p.loading.gravity, "Loading/Gravity (m/s^2)");
-    dim(p.reservoir.width_mm, "Reservoir/Width (mm)");
-    dim(p.reservoir.depth_mm, "Reservoir/Depth (mm)");
-    dim(p.reservoir.water_volume_ml, "Reservoir/Water volume (ml)");
-    dim(p.reservoir.water_density, "Reservoir/Water density (kg/m^3)");
-
-    // Voltages: below the ceiling of this film.
+    check_dimensions(p);
     const double ceiling = voltage_ceiling(scene);
-    {
-      // From the text: a value near the largest double overflows in volts.
-      std::stringstream waypoints(p.electrodes.voltage_path_text);
-      std::string       waypoint;
-      while (std::getline(waypoints, waypoint, ';'))
-        for (const double kV : parse_number_list(waypoint, "Electrodes/Voltage path (kV)"))
-          check_voltage(kV, ceiling, "Electrodes/Voltage path (kV)");
-    }
-    // The Sweep lists' syntax is checked for every command, so that a file
-    // is refused (or accepted) by run and sweep alike.
-    expand_value_list(p.sweep.ring_edge_values_text, "Sweep/Ring edge values (r/a)");
-    check_voltage(p.sweep.inner_voltage_kV, ceiling, "Sweep/Inner voltage (kV)");
-    {
-      const auto range = parse_number_list(p.sweep.outer_voltage_range_text,
-                                           "Sweep/Outer voltage range (kV)");
-      for (std::size_t i = 0; i < std::min<std::size_t>(range.size(), 2); ++i)
-        check_voltage(range[i], ceiling, "Sweep/Outer voltage range (kV)");
-    }
-    require_range(p.solver.breakdown_field_MV_per_m, 0., max_flat_field * 1e-6,
-                  "Solver/Breakdown field (MV/m)", " (0: off)");
-
-    // Solver settings.
-    // Relative criteria: below about 100 double roundoffs Newton cannot get there.
-    require_range(p.solver.residual_tolerance, 1e-14, 0.1, "Solver/Residual tolerance",
-                  " (relative; rounding keeps the residual above about 1e-14)");
-    require_range(p.solver.update_tolerance, 1e-14, 0.1, "Solver/Update tolerance",
-                  " (relative; rounding keeps the update above about 1e-14)");
-    require_range(p.solver.voltage_increment_kV, 1e-8, ceiling * 1e-3,
-                  "Solver/Voltage increment (kV)", " (up to the voltage ceiling)");
-    require_range(p.solver.max_displacement_mm, 0., hi_dimensional,
-                  "Solver/Max displacement (mm)", " (0: no limit)");
-    require_range(p.wrinkling.onset_tolerance_V, 1e-9, 1e6, "Wrinkling/Onset tolerance (V)", "");
-
-    // The size of the run.
-    const double elements = double(scene.n_rings()) * p.discretization.elements_per_ring *
-                            std::pow(2., p.discretization.refinements);
-    if (elements > max_elements)
-      throw InputError("Discretization: " + format(elements) + " elements (rings x Elements "
-                       "per ring x 2^Global refinements) are too many; at most " +
-                       format(max_elements));
-    const double samples = elements * p.discretization.samples_per_element;
-    if (samples > max_samples)
-      throw InputError("Discretization/Samples per element: " + format(samples) +
-                       " samples per step are too many; at most " + format(max_samples));
-    const double steps = estimated_steps(p, scene);
-    const std::string step_entries =
-      p.solver.continuation == Continuation::arc_length ?
-        "Solver/Max arc-length steps, Load increment or Prestretch steps" :
-        "Solver/Voltage increment (kV), Load increment or Prestretch steps";
-    if (steps > max_steps)
-      throw InputError("the run would take at least " + format(steps) + " steps (at most " +
-                       format(max_steps) + "): raise " + step_entries);
-    const double bytes = steps * (bytes_per_step + bytes_per_sample * samples);
-    if (bytes > max_results_bytes)
-      throw InputError("the results of at least " + format(steps) + " steps of " +
-                       format(samples) + " samples would take about " + format(bytes * 1e-9) +
-                       " GB, above the " + format(max_results_bytes * 1e-9) +
-                       " GB that a results file may hold in memory: change " + step_entries +
-                       " or Discretization/Samples per element");
-
-    // Output names the file system can take, with room for the suffixes
-    // of the run's side files (".partial.h5.tmp", ".recovered-N.h5").
-    const std::string &base = p.output.base_name;
-    if (base.size() > max_base_name)
-      throw InputError("Output/Base name must have at most " + std::to_string(max_base_name) +
-                       " characters, got " + std::to_string(base.size()));
-    if (base == "." || base == "..")
-      throw InputError("Output/Base name must be a file name, got '" + base + "'");
-    for (const char c : base + p.output.directory)
-      if (static_cast<unsigned char>(c) < 0x20)
-        throw InputError("Output/Directory and Output/Base name must not contain control "
-                         "characters");
-    if (p.output.directory.size() > 3000)
-      throw InputError("Output/Directory must have at most 3000 characters, got " +
-                       std::to_string(p.output.directory.size()));
-    {
-      std::stringstream parts(p.output.directory);
-      std::string       part;
-      while (std::getline(parts, part, '/'))
-        if (part.size() > 255)
-          throw InputError("Output/Directory: a folder name has " + std::to_string(part.size()) +
-                           " characters, more than the file system allows (255)");
-    }
+    check_voltages(p, ceiling);
+    check_solver(p, ceiling);
+    check_run_size(p, scene);
+    check_output_names(p.output);
   }
 
-  std::vector<std::string> duplicate_entry_warnings(const std::string &prm_text,
-                                                    const std::string &filename)
+  void validate_time(const Parameters &p)
   {
-    std::vector<std::string>              warnings;
-    std::vector<std::string>              sections;
-    std::map<std::string, unsigned int>   first_line;
-    std::istringstream                    in(prm_text);
-    std::string                           line, logical;
-    unsigned int                          number = 0, start = 0;
-    const auto trim = [](const std::string &s) {
-      const auto a = s.find_first_not_of(" \t\r");
-      const auto b = s.find_last_not_of(" \t\r");
-      return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
-    };
-    while (std::getline(in, line))
+    // A million steps (as for the quasi-static path) is three times the
+    // longest documented scene (doc/time.md, 0.01 Hz at 1.25 ms) and keeps the
+    // results held in memory below a gigabyte; more is most likely a mistyped
+    // duration.
+    constexpr double max_time_steps = 1e6;
+    if (p.viscous_material.model == MaterialModel::viscoelastic)
+      check_viscous_material(p);
+    if (!p.time.enabled)
+      return;
+    check_time_steps(p);
+    std::string  duration_entries;
+    double       duration = waveform_duration(p, duration_entries);
+    const double rest     = p.time.rest_time();
+    if (std::isfinite(rest) && rest > 1e12)
+      throw InputError("Time/Rest time before voltage (s) must be 'relaxed' or at most 1e12 s, "
+                       "got " + format_number(rest));
+    if (std::isfinite(rest))
       {
-        ++number;
-        if (logical.empty())
-          start = number;
-        // A trailing backslash continues the line (deal.II's syntax).
-        const std::string stripped = trim(line.substr(0, line.find('#')));
-        if (!stripped.empty() && stripped.back() == '\\')
-          {
-            logical += stripped.substr(0, stripped.size() - 1) + ' ';
-            continue;
-          }
-        logical += stripped;
-        const std::string statement = trim(logical);
-        logical.clear();
-        if (statement.rfind("subsection", 0) == 0)
-          sections.push_back(trim(statement.substr(10)));
-        else if (statement == "end")
-          {
-            if (!sections.empty())
-              sections.pop_back();
-          }
-        else if (statement.rfind("set", 0) == 0)
-          {
-            const auto equal = statement.find('=');
-            if (equal == std::string::npos)
-              continue;
-            std::string name;
-            for (const auto &s : sections)
-              name += s + "/";
-            // deal.II folds runs of blanks in names.
-            std::string entry;
-            for (const char c : trim(statement.substr(3, equal - 3)))
-              if (c != ' ' || entry.empty() || entry.back() != ' ')
-                entry += c;
-            name += entry;
-            const auto [it, fresh] = first_line.emplace(name, start);
-            if (!fresh)
-              warnings.push_back(filename + " line " + std::to_string(start) + ": " + name +
-                                 " is set again (first on line " +
-                                 std::to_string(it->second) + "); the last value is used");
-          }
+        duration += rest;
+        duration_entries += " + Time/Rest time before voltage (s)";
       }
-    return warnings;
+    const double step = p.time.time_step_s;
+    if (!(duration / step <= max_time_steps))
+      throw InputError("the run would take " + format_number(duration / step) +
+                       " time steps, more than " + format_number(max_time_steps) +
+                       ": its duration " + format_number(duration) + " s (" + duration_entries +
+                       ") over Time/Time step (s) = " + format_number(step) +
+                       "; shorten the run or raise the time step");
   }
 
+  void validate_reservoir(const Parameters &p)
+  {
+    const auto &r = p.reservoir;
+    require_positive(r.width_mm, "Reservoir/Width (mm)");
+    require_positive(r.depth_mm, "Reservoir/Depth (mm)");
+    require_positive(r.water_volume_ml, "Reservoir/Water volume (ml)");
+    require_positive(r.water_density, "Reservoir/Water density (kg/m^3)");
+  }
+
+  void require_shooting_options(const Parameters &p, const std::string &command)
+  {
+    if (p.reservoir.water_load)
+      throw InputError("Reservoir/Water load = true is implemented in the FE model only: use "
+                       "'cdea run', or set it to false for 'cdea " +
+                       command + "'");
+    if (p.wrinkling.model == WrinklingModel::relaxed)
+      throw InputError("Wrinkling/Model = relaxed is implemented in the FE model only: use "
+                       "'cdea run', or set it to check for 'cdea " +
+                       command + "'");
+    if (p.time.enabled)
+      throw InputError("Time/Enabled = true is implemented for 'cdea run' only: set it to "
+                       "false for 'cdea " +
+                       command + "'");
+  }
+
+  void require_quasi_static_elastic(const Parameters &p, const std::string &command)
+  {
+    if (p.viscous_material.model != MaterialModel::elastic)
+      throw InputError("Material/Model = " + to_string(p.viscous_material.model) +
+                       " is not supported by cdea " + command +
+                       ": its sensitivities are those of the elastic law (use elastic)");
+    if (p.time.enabled)
+      throw InputError("Time/Enabled = true is not supported by cdea " + command +
+                       ": it works on quasi-static equilibria (use false)");
+  }
 } // namespace cdea

@@ -2,10 +2,11 @@
 // The results file of a command's run from start to end, shared by the
 // quasi-static run (`cdea run`, `cdea shoot`) and the time run: the file is
 // claimed at the start (a run that cannot have it exits 1 and writes
-// nothing), every step is appended and, after it, a SIGINT/SIGTERM stops the
-// run at that step boundary; a stop or an output error ends the run as
-// incomplete instead of killing it; at the end the file is written whole and
-// renamed into place (doc/usage.md, "What survives what").
+// nothing), every step is appended and, after it, a SIGINT/SIGTERM (which the
+// command front turns into a stop request, StopOnSignals) stops the run at
+// that step boundary; a stop or an output error ends the run as incomplete
+// instead of killing it; at the end the file is written whole and renamed
+// into place (doc/usage.md, "What survives what").
 
 #include <cdea/base/run_control.h>
 #include <cdea/output/results_file.h>
@@ -49,7 +50,6 @@ namespace cdea
 
   private:
     RunOutput() = default;
-    StopOnSignals                stop_on_signals;
     std::unique_ptr<ResultsFile> results;
   };
 } // namespace cdea

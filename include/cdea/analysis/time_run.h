@@ -5,7 +5,8 @@
 // writes as it goes) and for the in-process run (time_run_in_memory(), which
 // keeps every step as the results file holds it).
 
-#include <cdea/analysis/session.h>
+#include <cdea/analysis/run_input.h>
+#include <cdea/analysis/run_record.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/solver/time_stepper.h>
 
@@ -16,9 +17,6 @@
 
 namespace cdea
 {
-  struct Parameters;
-  struct Scene;
-
   /// The model and stepper of a time run, with every postprocessor of the
   /// run registered, and the root attributes of its results file.
   struct TimeRunSetup
@@ -32,8 +30,8 @@ namespace cdea
   TimeRunSetup set_up_time_run(const Parameters &p, const Scene &scene);
 
   /// `cdea run` of a time run: prints the steps and writes the results file.
-  /// Returns the process exit code (commands.h).
-  int run_time(const Parameters &p, const Scene &scene, const std::string &prm_text);
+  /// Returns the process exit code (ExitCode).
+  int run_time(const RunInput &input);
 
   /// The same run kept in memory (nothing printed or written): one row per
   /// /summary row, with the fields of the rows the file gives a /steps group

@@ -1,5 +1,6 @@
 #pragma once
-// How a run reacts to signals, and errors turned into one line for the user.
+// How a run reacts to signals, how a command ends (its exit code), and errors
+// turned into one line for the user.
 
 #include <exception>
 #include <stdexcept>
@@ -7,6 +8,17 @@
 
 namespace cdea
 {
+  /// Exit codes of every command: 0 success, 1 bad input or unwritable output
+  /// (nothing is written), 2 the work stopped before its end or could not
+  /// write all of its results (signal, full disk, vanished directory; the
+  /// messages say where the results so far are).
+  enum ExitCode : int
+  {
+    exit_success      = 0,
+    exit_input_error  = 1,
+    exit_not_complete = 2
+  };
+
   /// For the lifetime of the object SIGINT, SIGTERM and SIGHUP only ask the
   /// run to stop: it stops after its current step and finishes its results
   /// file. A second such signal ends the process at once, as without the

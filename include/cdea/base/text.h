@@ -1,7 +1,8 @@
 #pragma once
-// Text the user typed: the one error type for bad input, and the one parser
-// of number lists ("1, 1.7, 3"; "1.2, 1.25, ..., 2.6"). Every message names
-// the parameter it is about and what is allowed.
+// Text the user typed: the one error type for bad input, the one splitter of
+// lists ("5, 5; 5, 6.5" at ';', then at ','), and the one parser of number
+// lists ("1, 1.7, 3"; "1.2, 1.25, ..., 2.6"). Every message names the
+// parameter it is about and what is allowed.
 
 #include <stdexcept>
 #include <string>
@@ -28,6 +29,18 @@ namespace cdea
 
   /// An InputError "NAME must be positive, got VALUE" unless 0 < value < infinity.
   void require_positive(double value, const std::string &name);
+
+  /// @p text cut at every @p separator, the pieces as they are (blanks kept).
+  /// As std::getline() reads them: an empty @p text has no piece, and a
+  /// separator at the very end closes the last piece without opening another
+  /// (callers that refuse a trailing separator check ends_with_separator()).
+  std::vector<std::string> split_list(const std::string &text, char separator);
+
+  /// Whether the last character of @p text other than blanks is @p separator.
+  bool ends_with_separator(const std::string &text, char separator);
+
+  /// @p text without its leading and trailing blanks (spaces and tabs).
+  std::string trim_blanks(const std::string &text);
 
   /// Parse "1, 1.7, 3" into numbers; @p name is used in error messages.
   std::vector<double> parse_number_list(const std::string &text, const std::string &name);

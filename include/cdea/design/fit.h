@@ -15,7 +15,7 @@
 // weighted residual variance, and a nearly singular J^T W J is reported as
 // parameters the data do not determine.
 
-#include <cdea/input/parameters_design.h>
+#include <cdea/input/parameter_input.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/fe/sensitivities.h>
 #include <cdea/solver/load_stepper.h>
@@ -57,6 +57,15 @@ namespace cdea
 
   /// Subsection Calibration checked; throws InputError naming the parameter.
   FitSettings fit_settings(const Parameters &p);
+
+  /// Throws InputError (naming the data @p name) if @p data has fewer points
+  /// than @p settings has free parameters.
+  void require_enough_points(const CalibrationData &data, const FitSettings &settings,
+                             const std::string &name);
+
+  /// The name of @p p in the fit's messages and tables ("shear modulus",
+  /// "pre-stretch").
+  std::string label(const SceneParameter &p);
 
   /// @p base with the free parameters set to @p values.
   Scene scene_with(const Scene &base, const std::vector<SceneParameter> &free,
@@ -135,7 +144,21 @@ namespace cdea
                       const FitResult &result, const std::vector<std::vector<double>> &curve_kV,
                       const std::vector<double> &curve_mm, unsigned int solves);
 
-  /// `cdea fit FILE.prm DATA.csv`: 0 converged, 2 not converged (the best
-  /// values are written), 1 bad input.
-  int run_fit(const std::string &prm_file, const std::string &data_file);
+  /// A whole calibration as `cdea fit` and cdea.fit() run it: the fit, and
+  /// the model along the data at the fitted values (if it got there).
+  struct Calibrated
+  {
+    FitResult                        result;
+    std::vector<std::vector<double>> curve_kV; ///< ring voltages along the data
+    std::vector<double>              curve_mm; ///< the model's displacement there
+    unsigned int                     solves = 0, ramps = 0;
+  };
+
+  /// Fits @p settings to @p data with the model of @p p (@p base its
+  /// scene), as fit() does, then traces the model along the data with 8
+  /// steps between points.
+  Calibrated calibrate(const Parameters &p, const Scene &base, const CalibrationData &data,
+                       const FitSettings &settings,
+                       const std::function<void(unsigned int, double, const std::vector<double> &)>
+                         &progress = {});
 } // namespace cdea

@@ -19,6 +19,7 @@
 // final state is unstable, is rejected (objective +inf), which makes the
 // optimizer shorten its step.
 
+#include <cdea/input/parameter_input.h>
 #include <cdea/input/parameters_design.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/fe/sensitivities.h>
@@ -190,7 +191,9 @@ namespace cdea
 
   /// Every start of @p settings (under mpirun: dealt round-robin to the
   /// ranks, gathered on rank 0, where the best is chosen), told about every
-  /// evaluation and every finished start of this rank. No output.
+  /// evaluation and every finished start of this rank. No output. After a
+  /// stop request (StopOnSignals) only a rank's first start runs, and stops
+  /// at its next evaluation with the best layout so far.
   OptimizationRun optimize_layouts(const Parameters &p, const Scene &base,
                                    const OptimizationSettings &settings,
                                    const std::function<void(const HistoryRow &)>  &on_evaluation = {},
@@ -202,16 +205,13 @@ namespace cdea
                           const OptimizationSettings &settings, const Scene &base,
                           const std::string &parameter_text);
 
-  /// <Base name>_optimum.prm: @p prm_file with the layout as electrodes and
-  /// a one-waypoint voltage path by load stepping, which `cdea run` replays
-  /// to the optimum (its results go to <Base name>_optimum_run.h5). A finite
-  /// @p max_field (V/m, the field limit) becomes its Breakdown field, so that
-  /// the replay reports the largest field.
-  void write_replay_parameters(const std::string &prm_file, const std::string &path,
+  /// <Base name>_optimum.prm: the parameters of @p input (its overrides
+  /// included) with the layout as electrodes and a one-waypoint voltage path
+  /// by load stepping, which `cdea run` replays to the optimum (its results
+  /// go to <Base name>_optimum_run.h5). A finite @p max_field (V/m, the field
+  /// limit) becomes its Breakdown field, so that the replay reports the
+  /// largest field.
+  void write_replay_parameters(const ParameterInput &input, const std::string &path,
                                const Layout &layout, const std::string &base_name,
                                double max_field);
-
-  /// `cdea optimize FILE.prm`; returns the exit code (0 converged, 2 not
-  /// converged: the best layout is still written, 1 bad input).
-  int run_optimize(const std::string &prm_file);
 } // namespace cdea

@@ -31,10 +31,6 @@ namespace cdea
 {
   struct Parameters;
 
-  /// Returns the process exit code (see ExitCode in commands.h).
-  int run_sweep(const std::string &prm_file);
-
-
   /// What one map is made of (SI units: volts).
   struct SweepSettings
   {
@@ -79,6 +75,9 @@ namespace cdea
     double rv_over_a = nan;
     /// Both rings reached the inner voltage (else the whole row is NaN).
     bool   base_reached = false;
+    /// Not computed: the sweep was asked to stop (SIGINT, SIGTERM) before
+    /// this row began; message says by what.
+    bool   skipped = false;
     double base_displacement = nan; ///< m, both rings at the inner voltage
     double base_s2_inner[2]  = {nan, nan}; ///< Pa
     /// Lowest and highest outer voltage reached by the continuation (V).
@@ -134,7 +133,9 @@ namespace cdea
   /// The whole map with the FE model. Collective over MPI_COMM_WORLD: every
   /// rank computes its rows (rows_of_rank) and rank 0 gets all of them (the
   /// other ranks return their own rows only). @p on_points (rank 0 only) is
-  /// told about finished grid points of every rank as they come in.
+  /// told about finished grid points of every rank as they come in. Once a
+  /// stop is requested (StopOnSignals) a rank computes no further row: the
+  /// rows it has not begun are skipped (NaN, SweepRow::skipped).
   SweepMap compute_sweep_map(const Parameters &p, const Scene &base,
                              const SweepSettings &settings,
                              const std::function<void(std::size_t)> &on_points = {});
@@ -183,8 +184,12 @@ namespace cdea
   /// is empty).
   bool some_row_reached(const SweepMap &map);
 
-  /// The map's run_status: "complete", or why it is no map (no layout
-  /// reached the inner voltage).
+  /// The rows skipped after a stop request (0 for a whole map).
+  std::size_t skipped_rows(const SweepMap &map);
+
+  /// The map's run_status: "complete", or why not: "stopped: interrupted by
+  /// SIGINT after 3 of 29 layouts", or "stopped: no layout reached the inner
+  /// voltage".
   std::string sweep_run_status(const SweepMap &map);
 
   /// A design map kept in memory.

@@ -1,8 +1,13 @@
 #pragma once
 // Run-time parameters, one struct per subsection of the .prm file (as in the
 // deal.II tutorial step-44). Each struct declares its entries, documented where
-// they are declared, and parses them. Parameters::validate() turns them into a
-// Scene and rejects bad input with an InputError that names the parameter.
+// they are declared, and parses them; choices become enums. The subsections of
+// the model are here, those of time runs in parameters_time.h and those of the
+// design studies in parameters_design.h; Parameters holds them all.
+// Parameters::scene() turns them into a Scene and rejects bad input with an
+// InputError that names the parameter. Reading a file (with overrides) is
+// parameter_input.h, the range checks validation.h, the solver settings made
+// from them solver_settings.h.
 
 #include <cdea/base/text.h>
 #include <cdea/input/parameters_design.h>
@@ -124,16 +129,6 @@ namespace cdea
       void         parse(dealii::ParameterHandler &prm);
     };
 
-    /// `cdea sweep`: two-ring layouts 1, r_v/a, b/a; validated by the sweep.
-    struct Sweep
-    {
-      std::string ring_edge_values_text;    ///< "1.2, 1.25, 1.3, ..., 2.6"
-      double      inner_voltage_kV;
-      std::string outer_voltage_range_text; ///< "from, to, step"
-      static void declare(dealii::ParameterHandler &prm);
-      void        parse(dealii::ParameterHandler &prm);
-    };
-
     /// The pump module's water reservoir above the actuator.
     struct Reservoir
     {
@@ -188,11 +183,6 @@ namespace cdea
     std::vector<std::string> input_warnings;
   };
 
-  /// Read and validate a .prm file. Throws InputError with a message that
-  /// names the file, the line or the parameter. @p text receives the file's
-  /// parameters as deal.II writes them back (for the results file).
-  Parameters read_parameters(const std::string &filename, std::string *text = nullptr);
-
   enum class ParameterFormat
   {
     prm, ///< a .prm file with every entry documented
@@ -201,7 +191,4 @@ namespace cdea
 
   /// A complete, documented parameter file with every default.
   std::string default_parameter_file(ParameterFormat format = ParameterFormat::prm);
-
-
-
 } // namespace cdea

@@ -1,13 +1,11 @@
 #pragma once
-// The subsections of the design commands: Optimization (`cdea optimize`,
-// doc/optimization.md) and Calibration (`cdea fit`). Entries are read as
-// text here; optimize_settings() and fit_settings() check them and name the
+// The subsections of the design studies: Sweep (`cdea sweep`,
+// doc/design-maps.md), Optimization (`cdea optimize`, doc/optimization.md) and
+// Calibration (`cdea fit`). Entries are read as text here; sweep_settings(),
+// optimization_settings() and fit_settings() check them and name the
 // parameter in every message.
 
-#include <cdea/base/format.h> // exact_number() for the parameter files the commands write
-
 #include <string>
-#include <vector>
 
 namespace dealii
 {
@@ -33,29 +31,18 @@ namespace cdea
   std::string to_string(DesignObjective choice);
   std::string to_string(DesignAlgorithm choice);
 
-  /// One entry of a parameter file to set: subsection, entry, value.
-  struct ParameterChange
-  {
-    std::string subsection, entry, value;
-  };
-
-  /// Write @p prm_file with @p changes applied to @p path (all entries, as
-  /// deal.II prints them; replaced only once complete), after the comment
-  /// lines @p comment. Throws std::runtime_error naming @p path.
-  void write_changed_parameters(const std::string &prm_file, const std::string &path,
-                                const std::vector<ParameterChange> &changes,
-                                const std::string                  &comment);
-
-  struct Parameters;
-
-  /// The design commands (@p command: "optimize", "fit") work on the
-  /// quasi-static elastic model, whose sensitivities they use: throws
-  /// InputError naming Time/Enabled or Material/Model if the file asks for
-  /// a time run or the viscoelastic law.
-  void require_quasi_static_elastic(const Parameters &p, const std::string &command);
-
   namespace parameters
   {
+    /// `cdea sweep`: two-ring layouts 1, r_v/a, b/a; validated by the sweep.
+    struct Sweep
+    {
+      std::string ring_edge_values_text;    ///< "1.2, 1.25, 1.3, ..., 2.6"
+      double      inner_voltage_kV;
+      std::string outer_voltage_range_text; ///< "from, to, step"
+      static void declare(dealii::ParameterHandler &prm);
+      void        parse(dealii::ParameterHandler &prm);
+    };
+
     struct Optimization
     {
       unsigned int    rings;

@@ -1,13 +1,13 @@
 #pragma once
 // Parameters of time-dependent runs (doc/time.md): the material model's
 // viscous network (entries of subsection Material) and subsection Time. One
-// struct each with declare/parse, as in parameters.h; choices are enums.
+// struct each with declare/parse, as in parameters.h; choices are enums. Their
+// checks are validate_time() (validation.h), the stepper's settings
+// time_settings() (solver_settings.h).
 
-#include <cdea/material/membrane_law.h>
-#include <cdea/solver/time_stepper.h>
-#include <cdea/model/waveform.h>
+#include <cdea/material/membrane_law.h> // TimeScheme
+#include <cdea/model/waveform.h>        // WaveformKind
 
-#include <memory>
 #include <string>
 
 namespace dealii
@@ -17,9 +17,6 @@ namespace dealii
 
 namespace cdea
 {
-  struct Parameters;
-  struct Scene;
-
   /// Material/Model.
   enum class MaterialModel
   {
@@ -59,20 +56,14 @@ namespace cdea
       double       fields_interval_s;
       static void  declare(dealii::ParameterHandler &prm);
       void         parse(dealii::ParameterHandler &prm);
+
+      /// Rest time before voltage (s): infinity for 'relaxed'; throws
+      /// InputError naming the entry unless it is 'relaxed' or a time >= 0.
+      double rest_time() const;
     };
   } // namespace parameters
 
   std::string to_string(MaterialModel choice);
   std::string to_string(WaveformKind choice);
   std::string to_string(TimeScheme choice);
-
-  /// Check the Material/Model and Time entries (reads the table file);
-  /// throws InputError naming the parameter.
-  void validate_time(const Parameters &p);
-
-  /// The material law of the FE model: Gent (elastic) or the two-network law.
-  std::shared_ptr<const MembraneLaw> material_law(const Parameters &p, const Scene &scene);
-
-  /// The time stepper's settings (waveform from the last waypoint or the table).
-  TimeSettings time_settings(const Parameters &p, const Scene &scene);
 } // namespace cdea

@@ -1,10 +1,12 @@
 #pragma once
-// Range checks of every numeric input at parse time, checks of the output
-// names, duplicate entries, and messages kept short. The allowed ranges are
-// listed in doc/usage.md ("Allowed ranges").
+// Checks of the input beyond what deal.II's patterns check: the range of every
+// numeric input at parse time (validate_ranges(), the allowed ranges of
+// doc/usage.md), the entries of time runs (validate_time()), the Reservoir,
+// and what a command or study cannot do (the FE-only options for the shooting
+// model, time runs and the viscoelastic law for the design studies). Every
+// message names the parameter and is one short line.
 
 #include <string>
-#include <vector>
 
 namespace cdea
 {
@@ -24,9 +26,22 @@ namespace cdea
   /// @p scene is p.scene().
   void validate_ranges(const Parameters &p, const Scene &scene);
 
-  /// Warnings about entries set more than once in the parameter file text
-  /// @p prm_text (the last value is used), one per repetition.
-  std::vector<std::string> duplicate_entry_warnings(const std::string &prm_text,
-                                                    const std::string &filename);
+  /// Checks the Material/Model and Time entries (reads the table file);
+  /// throws InputError naming the parameter.
+  void validate_time(const Parameters &p);
 
+  /// Rejects bad Reservoir entries with an InputError that names the
+  /// parameter, e.g. "Reservoir/Width (mm) must be positive, got -3".
+  void validate_reservoir(const Parameters &p);
+
+  /// Refuses the options only the FE model has (water load, relaxed law)
+  /// and time runs for the command @p command ("shoot", "compare"): throws
+  /// InputError.
+  void require_shooting_options(const Parameters &p, const std::string &command);
+
+  /// The design commands (@p command: "optimize", "fit") work on the
+  /// quasi-static elastic model, whose sensitivities they use: throws
+  /// InputError naming Time/Enabled or Material/Model if the file asks for
+  /// a time run or the viscoelastic law.
+  void require_quasi_static_elastic(const Parameters &p, const std::string &command);
 } // namespace cdea

@@ -1,0 +1,255 @@
+#include <cdea/analysis/quasi_static_run.h>
+#include <cdea/analysis/run_output.h>
+#include <cdea/analysis/run_record.h>
+#include <cdea/analysis/run_setup.h>
+#include <cdea/base/format.h>
+#include <cdea/input/solver_settings.h>
+#include <cdea/output/paraview_writer.h>
+#include <cdea/output/results_file.h>
+#include <cdea/solver/load_stepper.h>
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+
+namespace cdea
+{
+  namespace
+  {
+    double column(const StepSummary &s, const std::string &name)
+    {
+      return summary_column(s, name);
+    }
+
+    /// "-" for NaN, else fixed-point with @p decimals.
+    std::string fixed_or_dash(const double value, const int decimals)
+    {
+      return std::isnan(value) ? std::string("-") : format_fixed(value, decimals);
+    }
+
+    /// Prints one table row per converged step and writes it to the file.
+    class StepRecorder
+    {
+    public:
+      StepRecorder(ResultsFile &file, LoadStepper &stepper, const Scene &scene)
+        : file(file)
+        , stepper(stepper)
+        , scene(scene)
+      {
+        for (const SummaryColumn &c : stepper.columns())
+          file.describe_column(c.name, c.unit, c.description);
+      }
+
+      void header() const
+      {
+        std::cout << std::setw(5) << "step" << std::setw(13) << "stage" << std::setw(10)
+                  << "t" << "  " << std::setw(7 * scene.n_rings()) << "V (kV)"
+                  << std::setw(12) << "disp (mm)" << std::setw(12) << "stroke (mm)"
+                  << std::setw(12) << "dV (mm3)" << std::setw(12) << "min s2/mu" << std::setw(6)
+                  << "wrk" << std::setw(7) << "stable" << std::setw(6) << "its" << '\n';
+      }
+
+      void step(const StepSummary &s)
+      {
+        file.append(s, stepper.step_fields(), s.columns);
+        last = s;
+        std::ostringstream v;
+        for (const double x : s.voltages)
+          v << ' ' << std::setw(6) << format_fixed(x * 1e-3, 3);
+        // Fixed-point from the first row on, for the rows and the lines after them.
+        // Every column keeps a blank before it, also for t >= 1000 or s2 < -1000 mu.
+        std::cout << std::fixed;
+        std::cout << std::setw(5) << file.n_steps() - 1 << std::setw(13) << stage_name(s.stage)
+                  << ' ' << std::setw(9) << format_fixed(s.load_factor, 5) << "  " << v.str()
+                  << ' ' << std::setw(11) << format_fixed(s.displacement * 1e3, 6) << ' '
+                  << std::setw(11) << fixed_or_dash(s.stroke * 1e3, 6) << ' ' << std::setw(11)
+                  << fixed_or_dash(column(s, "volume_change_mm3"), 3) << ' ' << std::setw(11)
+                  << format_fixed(s.s2_min / scene.material.shear_modulus, 6) << std::setw(6)
+                  << (s.wrinkled ? "yes" : "no") << std::setw(7)
+                  << (std::isnan(s.min_eigenvalue) ? "-" : s.min_eigenvalue > 0. ? "yes" : "NO")
+                  << std::setw(6) << s.newton_iterations << std::endl;
+      }
+
+      StepSummary last;
+
+    private:
+      ResultsFile       &file;
+      LoadStepper       &stepper;
+      const Scene       &scene;
+    };
+
+    /// One run: its results file, stepper, table and ParaView output.
+    class QuasiStaticRun
+    {
+    public:
+      QuasiStaticRun(EquilibriumModel &model, const RunInput &input, const RunMethod method)
+        : p(input.parameters)
+        , scene(input.scene)
+        , method(method)
+        , path(results_path(p, method))
+        , output(RunOutput::open(path, input.text, scene.n_rings(),
+                                 {{"method", to_string(method)}}))
+        , stepper(scene, model, stepping_settings(p))
+      {
+        add_run_postprocessors(stepper, p, scene);
+      }
+
+      int run()
+      {
+        if (!output || !prepare())
+          return exit_input_error;
+        connect();
+        std::cout << "cdea " << CDEA_VERSION << " (" << to_string(method)
+                  << "): " << scene.n_rings() << " ring(s), writing " << path << '\n';
+        recorder->header();
+        const auto start = std::chrono::steady_clock::now();
+        // ---- the run: a signal, an output failure or an error stops it ----
+        RunResult    result = output->guard([&] { return stepper.run(); });
+        const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        finish_paraview(result);
+        print_final_state();
+        print_outcome(result, seconds);
+        return output->finish(result);
+      }
+
+    private:
+      const Parameters               &p;
+      const Scene                    &scene;
+      const RunMethod                 method;
+      const std::string               path;
+      std::unique_ptr<RunOutput>      output;
+      LoadStepper                     stepper;
+      std::unique_ptr<ParaViewWriter> paraview;
+      std::optional<StepRecorder>     recorder;
+      std::vector<LimitPoint>         limits;
+
+      ResultsFile &file() { return output->file(); }
+
+      /// The writes before the first step: false (the output given up) if one fails.
+      bool prepare()
+      {
+        // Limit points: /summary attributes limit_point_voltage_kV (k x rings)
+        // and limit_point_displacement_mm (k), rewritten as each is found.
+        return output->prepare([&] {
+          file().write_onset(OnsetRecord());
+          recorder.emplace(file(), stepper, scene);
+          write_summary_attributes(file(), limit_point_attributes(limits, scene.n_rings()));
+          // ParaView output (Output/ParaView): a VTU per step, moved in place at the end.
+          if (p.output.paraview)
+            paraview = std::make_unique<ParaViewWriter>(path.substr(0, path.size() - 3),
+                                                        p.output.paraview_segments);
+        });
+      }
+
+      /// What the stepper reports is printed and written as it comes.
+      void connect()
+      {
+        stepper.on_step = [this](const StepSummary &s) {
+          recorder->step(s);
+          if (paraview)
+            paraview->write_step(s, stepper.step_fields());
+          RunOutput::stop_point();
+        };
+        stepper.on_onset = [this](const OnsetRecord &onset) {
+          file().write_onset(onset);
+          std::cout << "      loss of tension (s2 = 0) at " << format_kV(onset.voltages)
+                    << ", radius r = " << std::setprecision(6) << onset.radius * 1e3
+                    << " mm (r/a = " << onset.radius / scene.disk_radius << ")" << std::endl;
+        };
+        stepper.on_limit_point = [this](const LimitPoint &limit) {
+          limits.push_back(limit);
+          write_summary_attributes(file(), limit_point_attributes(limits, scene.n_rings()));
+          std::cout << "      limit point (fold) at " << format_kV(limit.voltages)
+                    << ", displacement " << std::setprecision(7) << limit.displacement * 1e3
+                    << " mm" << std::endl;
+        };
+        stepper.on_breakdown = [this](const OnsetRecord &breakdown) {
+          write_summary_attributes(file(), breakdown_attributes(breakdown));
+          std::cout << "      breakdown field " << p.solver.breakdown_field_MV_per_m
+                    << " MV/m reached at " << format_kV(breakdown.voltages) << ", r = "
+                    << std::setprecision(6) << breakdown.radius * 1e3 << " mm" << std::endl;
+        };
+      }
+
+      /// The ParaView collection moved in place; a failure makes the run incomplete.
+      void finish_paraview(RunResult &result)
+      {
+        if (!paraview)
+          return;
+        try
+          {
+            paraview->finish();
+            std::cout << "ParaView: " << paraview->n_steps() << " steps in "
+                      << path.substr(0, path.size() - 3) << ".pvd\n";
+          }
+        catch (const std::exception &e)
+          {
+            // The HDF5 results do not depend on it: the run ends as incomplete.
+            std::cerr << "cdea: the ParaView output is incomplete: " << e.what() << '\n';
+            if (result.completed)
+              {
+                result.completed = false;
+                result.message   = std::string("the ParaView output failed: ") + e.what();
+              }
+          }
+      }
+
+      void print_final_state() const
+      {
+        const StepSummary &s = recorder->last;
+        std::cout << "\nFinal state: voltages " << format_kV(s.voltages) << ", displacement "
+                  << std::setprecision(7) << s.displacement * 1e3 << " mm, stroke "
+                  << s.stroke * 1e3 << " mm\n";
+        const double       volume_mm3 = column(s, "volume_mm3");
+        std::ostringstream o;
+        o << std::setprecision(7) << "  enclosed volume " << volume_mm3 << " mm^3, change "
+          << column(s, "volume_change_mm3") << " mm^3, level drop "
+          << column(s, "level_drop_mm") << " mm (tube " << p.reservoir.width_mm << " mm x "
+          << p.reservoir.depth_mm << " mm)\n";
+        if (p.reservoir.water_load)
+          o << "  water: free surface "
+            << (p.reservoir.water_volume_ml * 1e-6 - volume_mm3 * 1e-9) / tube_area(p) * 1e3
+            << " mm above the frame plane\n";
+        std::cout << o.str();
+        std::cout << "  s2/mu at the inner edge of each ring:";
+        for (const double x : s.s2_ring_inner)
+          std::cout << ' ' << std::setprecision(6) << x / scene.material.shear_modulus;
+        std::cout << '\n';
+      }
+
+      /// Onset, limit points, breakdown, how arc length ended, and the counts.
+      void print_outcome(const RunResult &result, const double seconds) const
+      {
+        if (result.onset.found)
+          std::cout << "Wrinkling onset (loss of tension): " << format_kV(result.onset.voltages)
+                    << " at r = " << result.onset.radius * 1e3 << " mm\n";
+        else
+          std::cout << "Wrinkling onset: none along the path (s2 > 0 everywhere)\n";
+        for (const LimitPoint &limit : result.limit_points)
+          std::cout << "Limit point (fold): " << format_kV(limit.voltages) << ", displacement "
+                    << std::setprecision(7) << limit.displacement * 1e3 << " mm\n";
+        if (p.solver.breakdown_field_MV_per_m > 0.)
+          std::cout << "Breakdown field " << p.solver.breakdown_field_MV_per_m << " MV/m: "
+                    << (result.breakdown.found ?
+                          "first reached at " + format_kV(result.breakdown.voltages) :
+                          std::string("not reached"))
+                    << '\n';
+        if (!result.end.empty())
+          std::cout << "Arc-length continuation ended: " << result.end << '\n';
+        std::cout << result.steps << " steps, " << result.newton_iterations
+                  << " Newton iterations, " << std::setprecision(3) << seconds << " s\n";
+      }
+    };
+  } // namespace
+
+  int run_quasi_static(EquilibriumModel &model, const RunInput &input, const RunMethod method)
+  {
+    QuasiStaticRun run(model, input, method);
+    return run.run();
+  }
+} // namespace cdea

@@ -1,0 +1,45 @@
+#include <cdea/analysis/run_setup.h>
+#include <cdea/input/solver_settings.h>
+#include <cdea/shooting/shooting_model.h>
+#include <cdea/solver/postprocessors.h>
+#include <cdea/solver/state_check.h>
+
+namespace cdea
+{
+  std::unique_ptr<MembraneModel> make_fe_model(const Parameters &p, const Scene &scene)
+  {
+    auto model = std::make_unique<MembraneModel>(scene, fe_discretization(p), newton_settings(p));
+    model->set_linear_solver(p.solver.linear_solver);
+    model->set_relaxed(p.wrinkling.model == WrinklingModel::relaxed);
+    model->set_water_load(water_load(p));
+    return model;
+  }
+
+  std::unique_ptr<EquilibriumModel> make_model(const RunInput &input, const RunMethod method)
+  {
+    if (method == RunMethod::shooting)
+      return std::make_unique<shooting::ShootingModel>(input.scene,
+                                                       shooting_options(input.parameters));
+    return make_fe_model(input.parameters, input.scene);
+  }
+
+  std::vector<TimeStepper::PostprocessorFactory> run_postprocessors(const Parameters &p,
+                                                                    const Scene      &scene)
+  {
+    const double area = tube_area(p), frame_radius = scene.frame_radius;
+    return {[area] { return std::make_unique<EnclosedVolume>(area); },
+            [frame_radius] { return std::make_unique<NonPhysicalCheck>(frame_radius); }};
+  }
+
+  void add_run_postprocessors(LoadStepper &stepper, const Parameters &p, const Scene &scene)
+  {
+    for (const auto &make : run_postprocessors(p, scene))
+      stepper.add_postprocessor(make());
+  }
+
+  void add_run_postprocessors(TimeStepper &stepper, const Parameters &p, const Scene &scene)
+  {
+    for (const auto &make : run_postprocessors(p, scene))
+      stepper.add_postprocessor(make);
+  }
+} // namespace cdea

@@ -1,0 +1,198 @@
+// `cdea fit FILE.prm DATA.csv`: the calibration of subsection Calibration to
+// the measured displacements (design/fit.h), each iteration printed, the
+// fitted values with their errors and correlations, the residuals, and the
+// files <Base name>_fit.h5 and <Base name>_fit.prm. 0 converged, 2 not
+// converged or interrupted (the values reached are written), 1 bad input.
+
+#include <cdea/base/format.h>
+#include <cdea/base/run_control.h>
+#include <cdea/commands/command.h>
+#include <cdea/design/fit.h>
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+
+namespace cdea
+{
+  namespace
+  {
+    /// A parameter in the units of its prm entry, with the unit.
+    std::pair<double, std::string> shown(const SceneParameter &p, const double value)
+    {
+      switch (p.kind)
+        {
+          case ParameterKind::shear_modulus:
+            return {value * 1e-3, "kPa"};
+          case ParameterKind::mass:
+            return {value * 1e3, "g"};
+          case ParameterKind::permittivity:
+            return {value, "F/m"};
+          default:
+            return {value, ""};
+        }
+    }
+
+    class Fit final : public CommandJob
+    {
+    public:
+      void check(Invocation &invocation) override
+      {
+        const std::string &data_file = invocation.arguments.at(1);
+        base     = invocation.parameters.scene();
+        settings = fit_settings(invocation.parameters);
+        data     = read_calibration_data(data_file, base.n_rings());
+        require_enough_points(data, settings, data_file);
+      }
+
+      std::string output_path(const Invocation &invocation) const override
+      {
+        return invocation.parameters.results_path("_fit");
+      }
+
+      int run(Invocation &invocation) override
+      {
+        const auto start = std::chrono::steady_clock::now();
+        print_banner(invocation.arguments.at(1));
+        const Calibrated c =
+          calibrate(invocation.parameters, base, data, settings,
+                    [&](unsigned int k, double cost, const std::vector<double> &v) {
+                      print_iteration(k, cost, v);
+                    });
+        const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        print_values(c.result);
+        print_residuals(c.result);
+        for (const auto &w : c.result.warnings)
+          std::cout << "WARNING: " << w << '\n';
+        std::cout << c.result.iterations << " iterations, " << c.result.evaluations
+                  << " evaluations, " << c.solves << " equilibrium solves (" << c.ramps
+                  << " ramps), " << std::setprecision(3) << seconds << " s\n";
+        return write_and_report(invocation, c);
+      }
+
+    private:
+      Scene           base;
+      FitSettings     settings;
+      CalibrationData data;
+
+      void print_banner(const std::string &data_file) const
+      {
+        std::cout << "cdea " << CDEA_VERSION << " fit: " << data.size() << " points of "
+                  << data_file << ", " << base.n_rings() << " ring(s); free:";
+        for (const auto &f : settings.free)
+          std::cout << "  " << label(f);
+        std::cout << "\n" << std::setw(5) << "iter" << std::setw(16) << "cost (mm^2)"
+                  << "  parameters\n";
+      }
+
+      void print_iteration(const unsigned int k, const double cost,
+                           const std::vector<double> &v) const
+      {
+        std::cout << std::setw(5) << k << std::setw(16) << format_number(cost, 8);
+        for (std::size_t j = 0; j < v.size(); ++j)
+          std::cout << "  " << format_number(shown(settings.free[j], v[j]).first, 8);
+        std::cout << std::endl;
+      }
+
+      /// Start, fitted value, standard error per parameter; the correlations.
+      void print_values(const FitResult &r) const
+      {
+        std::cout << "\n" << (r.converged ? "Converged" : "NOT converged") << ": " << r.status
+                  << "\n" << std::left << std::setw(22) << "parameter" << std::right
+                  << std::setw(16) << "start" << std::setw(16) << "fitted" << std::setw(16)
+                  << "std. error" << std::setw(10) << "rel." << '\n';
+        const std::size_t K = settings.free.size();
+        for (std::size_t j = 0; j < K; ++j)
+          {
+            const auto [v0, unit] = shown(settings.free[j], r.initial[j]);
+            const double v        = shown(settings.free[j], r.values[j]).first;
+            const double e        = shown(settings.free[j], r.standard_errors[j]).first;
+            std::cout << std::left << std::setw(22)
+                      << label(settings.free[j]) + (unit.empty() ? "" : " (" + unit + ")")
+                      << std::right << std::setw(16) << format_number(v0, 8) << std::setw(16)
+                      << format_number(v, 8) << std::setw(16) << format_number(e, 3)
+                      << std::setw(10) << format_number(e / std::abs(v), 2) << '\n';
+          }
+        if (K < 2)
+          return;
+        std::cout << "correlation:\n";
+        for (std::size_t i = 0; i < K; ++i)
+          {
+            std::cout << "  " << std::left << std::setw(16) << label(settings.free[i])
+                      << std::right;
+            for (std::size_t j = 0; j < K; ++j)
+              std::cout << std::setw(9) << format_fixed(r.correlation(i, j), 4);
+            std::cout << '\n';
+          }
+      }
+
+      void print_residuals(const FitResult &r) const
+      {
+        if (r.fitted.size() == 0)
+          return;
+        std::cout << "residuals (model - measured):\n" << std::setw(6) << "point"
+                  << std::setw(24) << "voltages (kV)" << std::setw(16) << "measured (mm)"
+                  << std::setw(16) << "model (mm)" << std::setw(16) << "residual (mm)" << '\n';
+        for (std::size_t i = 0; i < data.size(); ++i)
+          std::cout << std::setw(6) << i + 1 << std::setw(24) << format_kV(data.voltages[i], 5)
+                    << std::setw(16) << format_fixed(data.displacement[i] * 1e3, 6)
+                    << std::setw(16) << format_fixed(r.fitted[i] * 1e3, 6) << std::setw(16)
+                    << format_number(r.residuals[i] * 1e3, 3) << '\n';
+        std::cout << "weighted rms residual " << format_number(r.rms * 1e3, 4)
+                  << " mm, condition number of the scaled Jacobian "
+                  << format_number(r.condition, 3) << '\n';
+      }
+
+      /// The fit file and the parameter file with the fitted values, and how
+      /// the fit ended.
+      int write_and_report(const Invocation &invocation, const Calibrated &c) const
+      {
+        const Parameters  &p        = invocation.parameters;
+        const FitResult   &r        = c.result;
+        const std::string &h5_path  = invocation.output.path;
+        const std::string  prm_path = p.output.directory + "/" + p.output.base_name + "_fit.prm";
+        try
+          {
+            write_fit_file(h5_path, invocation.parameter_text, data, settings, r, c.curve_kV,
+                           c.curve_mm, c.solves);
+            if (r.fitted.size() > 0)
+              {
+                std::vector<ParameterChange> changes;
+                for (std::size_t j = 0; j < settings.free.size(); ++j)
+                  changes.push_back(fitted_entry(settings.free[j], r.values[j]));
+                write_changed_parameters(invocation.input, prm_path, changes,
+                                         "# Written by cdea fit: the parameter file with the "
+                                         "fitted values.\n");
+              }
+          }
+        catch (const std::exception &e)
+          {
+            std::cerr << "cdea: the results cannot be written: " << e.what()
+                      << " (older files of this name stay as they were)\n";
+            return exit_not_complete;
+          }
+        std::cout << "wrote " << h5_path << (r.fitted.size() ? " and " + prm_path : "") << '\n';
+        if (const int signal = StopOnSignals::requested())
+          {
+            std::cerr << "cdea: interrupted by " << signal_name(signal)
+                      << "; the values reached are in " << h5_path << '\n';
+            return exit_not_complete;
+          }
+        if (!r.converged)
+          {
+            std::cerr << "cdea: the fit did not converge (" << r.status
+                      << "); the last values are in " << h5_path << '\n';
+            return exit_not_complete;
+          }
+        return exit_success;
+      }
+    };
+  } // namespace
+
+  std::unique_ptr<CommandJob> fit_job()
+  {
+    return std::make_unique<Fit>();
+  }
+} // namespace cdea

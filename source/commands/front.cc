@@ -1,0 +1,204 @@
+// The command front: every command runs through run_command(), which does by
+// the flags of the command's row what every command needs (command.h).
+
+#include <cdea/base/mpi_session.h>
+#include <cdea/base/run_control.h>
+#include <cdea/base/text.h>
+#include <cdea/commands/command.h>
+
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+namespace cdea
+{
+  void ClaimedOutput::give_up()
+  {
+    lock.release();
+    remove_created_directories(created);
+    created.clear();
+  }
+
+  namespace
+  {
+    /// A --set value "Subsection/Entry=value" as an override; throws
+    /// InputError if it has no '='.
+    std::pair<std::string, std::string> override_of(const std::string &setting)
+    {
+      const auto equal = setting.find('=');
+      if (equal == std::string::npos)
+        throw InputError("--set '" + setting +
+                         "': expected 'Subsection/Entry=value', e.g. --set 'Loading/Mass (g)=300'");
+      return {trim_blanks(setting.substr(0, equal)), trim_blanks(setting.substr(equal + 1))};
+    }
+
+    /// The words after the command's name: the arguments, and the --set
+    /// overrides taken out of them (in their order).
+    void split_words(const std::vector<std::string> &words, Invocation &invocation)
+    {
+      for (std::size_t i = 1; i < words.size(); ++i)
+        if (words[i] == "--set" && invocation.command.has(reads_parameters))
+          {
+            if (i + 1 == words.size())
+              throw InputError("--set needs a value: --set 'Subsection/Entry=value'");
+            invocation.input.overrides.push_back(override_of(words[++i]));
+          }
+        else if (words[i].rfind("--set=", 0) == 0 && invocation.command.has(reads_parameters))
+          invocation.input.overrides.push_back(override_of(words[i].substr(6)));
+        else
+          invocation.arguments.push_back(words[i]);
+    }
+
+    /// Whether @p arguments fit one of the row's forms.
+    bool fits_a_form(const Command &command, const std::vector<std::string> &arguments)
+    {
+      for (const std::string &form : command.forms)
+        {
+          if (form == "...")
+            return true;
+          std::istringstream       in(form);
+          std::vector<std::string> tokens;
+          for (std::string t; in >> t;)
+            tokens.push_back(t);
+          bool fits = tokens.size() == arguments.size();
+          for (std::size_t i = 0; fits && i < tokens.size(); ++i)
+            fits = tokens[i][0] != '-' || tokens[i] == arguments[i];
+          if (fits)
+            return true;
+        }
+      return false;
+    }
+
+    int usage_error(const std::string &word)
+    {
+      if (mpi::rank() == 0)
+        std::cerr << "cdea: unknown command or wrong number of arguments: '" << word << "'\n\n"
+                  << usage_text();
+      return exit_input_error;
+    }
+
+    /// A serial job started by an MPI launcher on several ranks: each would
+    /// write the same results.
+    bool refused_on_several_ranks(const Command &command)
+    {
+      if (command.ranks != Ranks::one || mpi::size() == 1)
+        return false;
+      if (mpi::rank() == 0)
+        std::cerr << "cdea: '" << command.name << "' is a serial job, but an MPI launcher "
+                  << "started " << mpi::size() << " processes of it (each would "
+                  << "write the same results): run it without mpirun or with -np 1; "
+                  << "'cdea sweep' and 'cdea optimize' use several processes\n";
+      return true;
+    }
+
+    /// The parameter file read with its overrides and validated, then the
+    /// command's own checks; false (the message printed) on bad input.
+    bool read_input(CommandJob &job, Invocation &invocation)
+    {
+      try
+        {
+          if (invocation.command.has(reads_parameters))
+            {
+              invocation.input.is_text = false;
+              invocation.input.source  = invocation.arguments.at(0);
+              invocation.parameters =
+                read_parameters(invocation.input, &invocation.parameter_text);
+            }
+          job.check(invocation);
+          return true;
+        }
+      catch (const InputError &e)
+        {
+          if (invocation.root)
+            std::cerr << "cdea: " << e.what() << '\n';
+          return false;
+        }
+    }
+
+    void print_warnings(const Invocation &invocation)
+    {
+      if (invocation.root)
+        for (const std::string &warning : invocation.parameters.input_warnings)
+          std::cerr << "cdea: warning: " << warning << '\n';
+    }
+
+    /// The output folder must be writable and the file ours alone before the
+    /// work starts; rank 0 claims it, the others follow its verdict.
+    bool claim(const CommandJob &job, Invocation &invocation)
+    {
+      int writable = 1;
+      if (invocation.root)
+        {
+          ClaimedOutput &out = invocation.output;
+          out.path           = job.output_path(invocation);
+          std::string why;
+          if (!claim_output(out.path, out.lock, why, &out.created))
+            {
+              std::cerr << "cdea: cannot write '" << out.path << "': " << why << '\n';
+              writable = 0;
+            }
+        }
+      if (invocation.command.ranks == Ranks::all)
+        mpi::broadcast(writable);
+      return writable != 0;
+    }
+
+    /// The common sequence of every command (command.h).
+    int run_command(Invocation &invocation)
+    {
+      const Command &command = invocation.command;
+      if (refused_on_several_ranks(command))
+        return exit_input_error;
+      if (command.ranks == Ranks::first_only && !invocation.root)
+        return exit_success;
+      const std::unique_ptr<CommandJob> job = command.make_job();
+      if (!read_input(*job, invocation))
+        return exit_input_error;
+      print_warnings(invocation);
+      if (command.output == Output::claimed_first && !claim(*job, invocation))
+        return exit_input_error;
+      // A stop request ends the work at its next step, row, evaluation or
+      // iteration, with the results so far written (exit code 2).
+      std::optional<StopOnSignals> stop_on_signals;
+      if (command.has(stops_on_signals))
+        stop_on_signals.emplace();
+      return job->run(invocation);
+    }
+  } // namespace
+
+  int run_command_line(const std::vector<std::string> &words)
+  {
+    ignore_output_signals();
+    try
+      {
+        if (words.empty())
+          {
+            if (mpi::rank() == 0)
+              std::cerr << usage_text();
+            return exit_input_error;
+          }
+        const Command *command = find_command(words[0]);
+        if (!command)
+          return usage_error(words[0]);
+        Invocation invocation{*command, {}, mpi::rank() == 0};
+        try
+          {
+            split_words(words, invocation);
+          }
+        catch (const InputError &e)
+          {
+            if (invocation.root)
+              std::cerr << "cdea: " << e.what() << '\n';
+            return exit_input_error;
+          }
+        if (!fits_a_form(*command, invocation.arguments))
+          return usage_error(words[0]);
+        return run_command(invocation);
+      }
+    catch (const std::exception &e)
+      {
+        std::cerr << "cdea: error: " << one_line_message(e) << '\n';
+        return exit_input_error;
+      }
+  }
+} // namespace cdea

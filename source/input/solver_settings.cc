@@ -1,0 +1,131 @@
+#include <cdea/input/parameters.h>
+#include <cdea/input/solver_settings.h>
+#include <cdea/input/validation.h>
+#include <cdea/input/voltage_table.h>
+#include <cdea/material/gent_law.h>
+#include <cdea/material/two_network_gent.h>
+
+namespace cdea
+{
+  SteppingSettings stepping_settings(const Parameters &p)
+  {
+    SteppingSettings s;
+    s.prestretch_steps      = p.solver.prestretch_steps;
+    s.load_increment        = p.solver.load_increment;
+    s.voltage_increment     = p.solver.voltage_increment_kV * 1e3;
+    s.min_voltage_increment = p.solver.min_voltage_increment_kV * 1e3;
+    s.max_cutbacks          = p.solver.max_cutbacks;
+    s.onset_tolerance       = p.wrinkling.onset_tolerance_V;
+    s.arc_length            = p.solver.continuation == Continuation::arc_length;
+    s.max_arc_length_steps  = p.solver.max_arc_length_steps;
+    s.max_displacement      = p.solver.max_displacement_mm * 1e-3;
+    s.stability_check       = p.solver.stability_check;
+    s.breakdown_field       = p.solver.breakdown_field_MV_per_m * 1e6;
+    s.residual_tolerance    = p.solver.residual_tolerance;
+    s.update_tolerance      = p.solver.update_tolerance;
+    return s;
+  }
+
+  SteppingSettings study_stepping_settings(const Parameters &p)
+  {
+    SteppingSettings s = stepping_settings(p);
+    s.arc_length       = false;
+    s.stability_check  = false;
+    s.breakdown_field  = 0.;
+    return s;
+  }
+
+  FeDiscretization fe_discretization(const Parameters &p)
+  {
+    FeDiscretization d;
+    d.degree              = p.discretization.polynomial_degree;
+    d.elements_per_ring   = p.discretization.elements_per_ring;
+    d.grading             = p.discretization.grading;
+    d.refinements         = p.discretization.refinements;
+    d.samples_per_element = p.discretization.samples_per_element;
+    return d;
+  }
+
+  NewtonSettings newton_settings(const Parameters &p)
+  {
+    NewtonSettings n;
+    n.residual_tolerance = p.solver.residual_tolerance;
+    n.update_tolerance   = p.solver.update_tolerance;
+    n.max_iterations     = p.solver.max_newton_iterations;
+    return n;
+  }
+
+  shooting::ShootingOptions shooting_options(const Parameters &p)
+  {
+    shooting::ShootingOptions o;
+    o.tolerance        = p.shooting.tolerance;
+    o.samples_per_ring = p.shooting.samples_per_ring;
+    return o;
+  }
+
+  double tube_area(const Parameters &p)
+  {
+    return p.reservoir.width_mm * 1e-3 * p.reservoir.depth_mm * 1e-3;
+  }
+
+  WaterLoad water_load(const Parameters &p)
+  {
+    WaterLoad w;
+    w.enabled      = p.reservoir.water_load;
+    w.density      = p.reservoir.water_density;
+    w.gravity      = p.loading.gravity;
+    w.water_volume = p.reservoir.water_volume_ml * 1e-6;
+    w.tube_area    = tube_area(p);
+    return w;
+  }
+
+  std::shared_ptr<const MembraneLaw> material_law(const Parameters &p, const Scene &scene)
+  {
+    if (p.viscous_material.model == MaterialModel::elastic)
+      return std::make_shared<GentDielectricLaw>(scene.material);
+    const auto &m = p.viscous_material;
+    return std::make_shared<TwoNetworkGentLaw>(
+      scene.material,
+      ViscousNetwork{m.network_b_shear_modulus_kPa * 1e3, m.network_b_jlim, m.relaxation_time_s});
+  }
+
+  TimeSettings time_settings(const Parameters &p, const Scene &scene)
+  {
+    const auto  &t = p.time;
+    TimeSettings s;
+    s.max_step     = t.time_step_s;
+    s.min_step     = t.min_time_step_s;
+    s.max_cutbacks = p.solver.max_cutbacks;
+    s.scheme       = t.scheme;
+    s.inertia      = t.inertia;
+    s.rest_time    = t.rest_time();
+    s.fields_interval = t.fields_interval_s;
+    if (t.inertia && t.water_inertia && p.reservoir.water_load)
+      {
+        s.water_density = p.reservoir.water_density;
+        s.water_volume  = p.reservoir.water_volume_ml * 1e-6;
+        s.tube_area     = tube_area(p);
+      }
+    const std::vector<double> peak = scene.path.voltages(scene.path.n_segments());
+    switch (t.waveform)
+      {
+        case WaveformKind::ramp_hold:
+          s.waveform = Waveform::ramp_hold(peak, t.ramp_time_s, t.hold_time_s);
+          break;
+        case WaveformKind::square:
+          s.waveform = Waveform::square(peak, t.frequency_Hz, t.cycles, t.rise_time_s);
+          break;
+        case WaveformKind::sine:
+          s.waveform = Waveform::sine(peak, t.frequency_Hz, t.cycles);
+          break;
+        case WaveformKind::table:
+          {
+            const VoltageTable table =
+              read_voltage_table(t.table_file, scene.n_rings(), voltage_ceiling(scene));
+            s.waveform = Waveform::table(table.times, table.volts);
+          }
+          break;
+      }
+    return s;
+  }
+} // namespace cdea
