@@ -2,7 +2,8 @@
 // failure, growth after an easy step, the cap (also moved along the path),
 // the minimum step (also in another unit), the maximum number of cut-backs
 // (consecutive or in total), the reason for giving up, steps computed from
-// the attempted step, and factors from the caller.
+// the attempted step, factors from the caller, and the landing on a
+// breakpoint.
 
 #include <cdea/numerics/step_control.h>
 
@@ -156,6 +157,16 @@ namespace
     check(g.step() == 1.5, "the growth factor of the settings (1.5)");
   }
 
+  void landing()
+  {
+    std::cout << "Landing on a breakpoint\n";
+    const StepController c(StepControlSettings(), 1.);
+    check(c.step_towards(0.3) == 0.3, "within a step: all of it");
+    check(c.step_towards(1. + 5e-7) == 1. + 5e-7, "within a step and 1e-6: all of it");
+    check(c.step_towards(1.2) == 0.6, "within one and a half steps: half of it");
+    check(c.step_towards(1.5) == 1. && c.step_towards(5.) == 1., "farther: one step");
+  }
+
   // The rules the five paths used before they shared the controller, as
   // written there, against the controller on random attempts.
   void same_sequences()
@@ -224,6 +235,7 @@ int main()
   cutbacks();
   attempted_base();
   factors();
+  landing();
   same_sequences();
   return finish();
 }

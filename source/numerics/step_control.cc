@@ -31,6 +31,13 @@ namespace cdea
     min_step_scale    = scale;
   }
 
+  double StepController::step_towards(const double remaining) const
+  {
+    return remaining <= step_ * (1. + 1e-6) ? remaining :
+           remaining < 1.5 * step_          ? 0.5 * remaining :
+                                              step_;
+  }
+
   double StepController::base(const StepBase which, const double attempted) const
   {
     return which == StepBase::attempted ? attempted : step_;

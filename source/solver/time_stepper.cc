@@ -275,17 +275,6 @@ namespace cdea
     return first;
   }
 
-  // The end of the next step: the next breakpoint if it is within a step;
-  // with less than one and a half steps to go, half the way there (never a
-  // sliver of a step before a breakpoint); else one step on.
-  double TimeStepper::next_time(const double breakpoint, const double step) const
-  {
-    const double to_go = breakpoint - t_now;
-    return to_go <= step * (1. + 1e-6) ? breakpoint :
-           to_go < 1.5 * step          ? t_now + 0.5 * to_go :
-                                         t_now + step;
-  }
-
   // One implicit step of length h from state0: from the extrapolation of the
   // last accepted states, and once more from state0 if that fails.
   SolveReport TimeStepper::attempt_step(const ModelState &state0, const InertiaState &motion0,
@@ -397,7 +386,9 @@ namespace cdea
   bool TimeStepper::take_step(StepController &control, const double breakpoint,
                               StepSummary &previous)
   {
-    const double t_next = next_time(breakpoint, control.step());
+    const double to_go  = breakpoint - t_now;
+    const double step   = control.step_towards(to_go);
+    const double t_next = step == to_go ? breakpoint : t_now + step;
     const double h      = t_next - t_now;
     if (!(h > 0.))
       {

@@ -5,7 +5,8 @@
 // variables between two layouts (design/layout_evaluator).
 //
 // It holds the step h to try next. A caller takes its attempt a from step()
-// (shortened, if it likes, to land on a breakpoint), solves, and reports:
+// (shortened, if it likes, to land on a breakpoint; step_towards() does so
+// without leaving a sliver before it), solves, and reports:
 //   accept(a, iterations): an easy step (at most `easy_iterations` Newton
 //     iterations) grows the step to min(growth b, max_step); otherwise the
 //     step becomes b;
@@ -73,6 +74,11 @@ namespace cdea
     unsigned int cutbacks() const { return cutbacks_; }
     /// Why the last reject() gave up (none if it did not).
     StepStop reason() const { return reason_; }
+    /// The step towards a breakpoint @p remaining away, leaving no sliver of
+    /// a step before it: all of it within one step (and a relative 1e-6),
+    /// half of it within one and a half steps, else step(). Returns
+    /// @p remaining itself when the step lands on the breakpoint.
+    double step_towards(double remaining) const;
 
     void set_max_step(double max_step);
     /// Give up when a cut-back leaves h scale < @p min_step: @p scale converts

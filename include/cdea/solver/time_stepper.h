@@ -137,7 +137,6 @@ namespace cdea
     StepSummary         start_time_stage();
     StepControlSettings step_control() const;
     bool        take_step(StepController &control, double breakpoint, StepSummary &previous);
-    double      next_time(double breakpoint, double step) const;
     SolveReport attempt_step(const ModelState &state0, const InertiaState &motion0, double h);
     /// One implicit step from the accepted state (model, motion) at t to
     /// t + dt; on success the new state is accepted and motion updated.
