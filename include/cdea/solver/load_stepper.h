@@ -3,8 +3,9 @@
 //   0  pre-stretch: the unstretched film is stretched to lam_pre (homogeneous);
 //   1  dead load:   the mass on the disk is ramped from 0 to m;
 //   2  voltage:     the ring voltages follow the VoltagePath, t in [0, n_segments].
-// Increments adapt: a failed Newton solve halves the increment (restarting from
-// the last converged state), a fast one lets it grow back to its maximum. The
+// Increments adapt (StepController, numerics/step_control.h): a failed Newton
+// solve halves the increment (restarting from the last converged state), a
+// fast one lets it grow back to its maximum. The
 // voltage stage can instead be followed by pseudo-arclength continuation
 // (through folds, every limit point located) when the model offers it.
 // After every converged step of stages 1 and 2 the registered postprocessors

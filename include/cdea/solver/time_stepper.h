@@ -11,8 +11,9 @@
 //     equilibrium with the internal variables' update (backward Euler or the
 //     trapezoidal rule) and, if on, the Newmark inertia of the disk (and the
 //     pump's water column), halving the step where Newton fails and growing
-//     it back after easy steps. A converged step's internal variables are
-//     accepted and the disk's velocity and acceleration updated:
+//     it back after easy steps (StepController, numerics/step_control.h). A
+//     converged step's internal variables are accepted and the disk's
+//     velocity and acceleration updated:
 //       a1 = (z1 - z_pred) / (beta dt^2),  v1 = v0 + dt ((1 - gamma) a0 + gamma a1).
 //
 // Every converged step goes through the same postprocessors as the
