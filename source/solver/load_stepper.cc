@@ -290,8 +290,8 @@ namespace cdea
     const bool extrapolated = settings.extrapolate && !previous_state.unknowns.empty();
     if (extrapolated && t > previous_t)
       model.predict(previous_state, (t_next - t) / (t - previous_t));
-    const LoadState   target = load(stage, t_next);
-    SolveReport       report = solve(target);
+    const LoadState target = load(stage, t_next);
+    SolveReport     report = solve(target);
     if (!report.converged && extrapolated)
       {
         // The predictor can overshoot near a limit point: retry from the
@@ -303,9 +303,8 @@ namespace cdea
   }
 
   std::string LoadStepper::no_equilibrium_message(const Stage stage, const double t,
-                                                  const double t_next,
-                                                  const unsigned int  cutbacks,
-                                                  const std::string  &why) const
+                                                  const double t_next, const unsigned int cutbacks,
+                                                  const std::string &why) const
   {
     std::ostringstream m;
     m << "stage '" << stage_name(stage) << "': no equilibrium found beyond load "
