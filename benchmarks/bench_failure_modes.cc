@@ -34,6 +34,7 @@
 //   build/benchmarks/bench_failure_modes [DIR] [--smoke]
 
 #include <cdea/fe/membrane_model.h>
+#include <cdea/numerics/step_control.h>
 #include <cdea/shooting/angle_trace.h>
 #include <cdea/shooting/meridian.h>
 #include <cdea/shooting/shooting_model.h>
@@ -162,18 +163,25 @@ namespace
   {
     std::vector<CurvePoint>           curve;
     std::vector<shooting::AnglePoint> done;
-    double th = start.theta0, t_guess = start.t, slope = 0., dth = 0.002;
+    double th = start.theta0, t_guess = start.t, slope = 0.;
     double l1 = start.lambda1_start;
+    // Steps in theta0 of at most 0.004, halved on a failure down to 5e-8,
+    // growing by half after every point reached.
+    StepControlSettings step_settings;
+    step_settings.max_step        = 0.004;
+    step_settings.min_step        = 5e-8;
+    step_settings.growth          = 1.5;
+    step_settings.easy_iterations = StepControlSettings::unlimited;
+    StepController control(step_settings, 0.002);
     while (th > theta_stop)
       {
         const shooting::AnglePoint a = trace.solve(th, t_guess, l1);
         if (!a.ok)
           {
-            if (done.empty() || dth < 1e-7)
+            if (done.empty() || !control.reject(control.step()))
               break;
-            th = done.back().theta0 - 0.5 * dth;
-            dth *= 0.5;
-            t_guess = done.back().t + slope * dth;
+            th      = done.back().theta0 - control.step();
+            t_guess = done.back().t + slope * control.step();
             continue;
           }
         if (!done.empty())
@@ -194,9 +202,9 @@ namespace
                          s2_min_of(integrator, pc, a), int(folds.size())});
         done.push_back(a);
         l1      = a.lambda1_start;
-        t_guess = a.t + slope * dth;
-        th -= dth;
-        dth = std::min(0.004, 1.5 * dth);
+        t_guess = a.t + slope * control.step();
+        th -= control.step();
+        control.accept(control.step(), 0);
       }
     return curve;
   }

@@ -92,6 +92,107 @@ namespace cdea
       const std::function<void(unsigned int, double, const std::vector<double> &)> &f;
       const std::vector<double> &q, &scale;
     };
+
+
+
+    /// The free parameters with large entries in @p v (a singular vector).
+    std::string parameter_names(const Eigen::VectorXd &v, const FitSettings &settings)
+    {
+      std::string list;
+      for (std::size_t j = 0; j < settings.free.size(); ++j)
+        if (std::abs(v[j]) > 0.1)
+          list += (list.empty() ? "" : ", ") + label(settings.free[j]);
+      return list;
+    }
+
+    /// Bounds inside the laws' range: positive constants, a taut film, Jlim
+    /// above the pre-stretched film's I - 3 (in the scaled variables q).
+    void set_lower_bounds(ceres::Problem &problem, std::vector<double> &q, const Scene &base,
+                          const FitSettings &settings, const std::vector<double> &scale)
+    {
+      for (std::size_t j = 0; j < settings.free.size(); ++j)
+        {
+          double lower = 1e-3;
+          if (settings.free[j].kind == ParameterKind::prestretch)
+            lower = 1.01 / scale[j];
+          if (settings.free[j].kind == ParameterKind::jlim)
+            {
+              const double l = base.prestretch;
+              lower          = 1.001 * (2. * l * l + std::pow(l, -4) - 3.) / scale[j];
+            }
+          problem.SetParameterLowerBound(q.data(), int(j), lower);
+        }
+    }
+
+    ceres::Solver::Options solver_options(const FitSettings &settings)
+    {
+      ceres::Solver::Options options;
+      options.linear_solver_type           = ceres::DENSE_QR;
+      options.max_num_iterations           = int(settings.max_iterations);
+      options.function_tolerance           = settings.tolerance;
+      options.parameter_tolerance          = settings.tolerance;
+      options.gradient_tolerance           = 1e-3 * settings.tolerance;
+      options.logging_type                 = ceres::SILENT;
+      options.minimizer_progress_to_stdout = false;
+      options.update_state_every_iteration = true;
+      return options;
+    }
+
+    /// Standard errors from s^2 (J^T W J)^-1 with the weighted Jacobian
+    /// @p Jw and residuals @p weighted at the optimum, in the column-scaled
+    /// variables p_j / |column j| so that the condition number is
+    /// scale-free; correlations, and warnings about parameters the data do
+    /// not determine.
+    void analyse_errors(const Eigen::MatrixXd &Jw, const Eigen::VectorXd &weighted,
+                        const FitSettings &settings, FitResult &r)
+    {
+      const std::size_t K = settings.free.size(), M = std::size_t(Jw.rows());
+      Eigen::VectorXd   norms(K);
+      for (std::size_t j = 0; j < K; ++j)
+        norms[j] = Jw.col(j).norm();
+      const Eigen::MatrixXd             Jn = Jw * norms.cwiseInverse().asDiagonal();
+      Eigen::JacobiSVD<Eigen::MatrixXd> svd(Jn, Eigen::ComputeThinV);
+      const Eigen::VectorXd            &sv = svd.singularValues();
+      r.condition = sv[K - 1] > 0. ? sv[0] / sv[K - 1] : std::numeric_limits<double>::infinity();
+      r.standard_errors.assign(K, nan);
+      r.correlation = Eigen::MatrixXd::Constant(K, K, nan);
+      if (!(r.condition < singular_condition))
+        {
+          r.warnings.push_back("the data do not determine " +
+                               parameter_names(svd.matrixV().col(K - 1), settings) +
+                               " separately (condition number of the scaled Jacobian " +
+                               format_number(r.condition, 3) +
+                               "): changing them together leaves every displacement the same; "
+                               "fix all but one of them (Calibration/Free parameters)");
+          return;
+        }
+      if (M <= K)
+        {
+          r.warnings.push_back("as many data points as free parameters: no standard errors");
+          return;
+        }
+      const double          s2 = weighted.squaredNorm() / double(M - K);
+      const Eigen::MatrixXd V  = svd.matrixV();
+      const Eigen::MatrixXd cn =
+        s2 * V * sv.array().square().inverse().matrix().asDiagonal() * V.transpose();
+      const Eigen::MatrixXd cov =
+        norms.cwiseInverse().asDiagonal() * cn * norms.cwiseInverse().asDiagonal();
+      for (std::size_t j = 0; j < K; ++j)
+        r.standard_errors[j] = std::sqrt(cov(j, j));
+      for (std::size_t i = 0; i < K; ++i)
+        for (std::size_t j = 0; j < K; ++j)
+          r.correlation(i, j) = cn(i, j) / std::sqrt(cn(i, i) * cn(j, j));
+      if (r.condition > weak_condition)
+        r.warnings.push_back("the data determine " + parameter_names(V.col(K - 1), settings) +
+                             " only poorly together (condition number " +
+                             format_number(r.condition, 3) + "): see their correlation");
+      for (std::size_t i = 0; i < K; ++i)
+        for (std::size_t j = i + 1; j < K; ++j)
+          if (std::abs(r.correlation(i, j)) > 0.99)
+            r.warnings.push_back(label(settings.free[i]) + " and " + label(settings.free[j]) +
+                                 " are correlated (" + format_number(r.correlation(i, j), 4) +
+                                 "): the data constrain mainly a combination of them");
+    }
   } // namespace
 
   FitResult fit(const Scene &base, const CalibrationData &data, const FitSettings &settings,
@@ -108,30 +209,9 @@ namespace cdea
     ceres::Problem problem;
     problem.AddResidualBlock(new DisplacementResiduals(model, data, scale, r.evaluations), nullptr,
                              q.data());
-    // Inside the laws' range: positive constants, a taut film, Jlim above
-    // the pre-stretched film's I - 3.
-    for (std::size_t j = 0; j < K; ++j)
-      {
-        double lower = 1e-3;
-        if (settings.free[j].kind == ParameterKind::prestretch)
-          lower = 1.01 / scale[j];
-        if (settings.free[j].kind == ParameterKind::jlim)
-          {
-            const double l = base.prestretch;
-            lower          = 1.001 * (2. * l * l + std::pow(l, -4) - 3.) / scale[j];
-          }
-        problem.SetParameterLowerBound(q.data(), int(j), lower);
-      }
-    ceres::Solver::Options options;
-    options.linear_solver_type           = ceres::DENSE_QR;
-    options.max_num_iterations           = int(settings.max_iterations);
-    options.function_tolerance           = settings.tolerance;
-    options.parameter_tolerance          = settings.tolerance;
-    options.gradient_tolerance           = 1e-3 * settings.tolerance;
-    options.logging_type                 = ceres::SILENT;
-    options.minimizer_progress_to_stdout = false;
-    options.update_state_every_iteration = true;
-    Progress callback(progress, q, scale);
+    set_lower_bounds(problem, q, base, settings, scale);
+    ceres::Solver::Options options = solver_options(settings);
+    Progress               callback(progress, q, scale);
     options.callbacks.push_back(&callback);
     ceres::Solver::Summary summary;
     ceres::Solve(options, &problem, &summary);
@@ -160,58 +240,7 @@ namespace cdea
       }
     const Eigen::VectorXd weighted = root_w.cwiseProduct(r.residuals);
     r.rms                          = std::sqrt(weighted.squaredNorm() / sum_w);
-
-    // Standard errors from s^2 (J^T W J)^-1, in the column-scaled variables
-    // p_j / |column j| so that the condition number is scale-free.
-    Eigen::MatrixXd Jw = root_w.asDiagonal() * J;
-    Eigen::VectorXd norms(K);
-    for (std::size_t j = 0; j < K; ++j)
-      norms[j] = Jw.col(j).norm();
-    const Eigen::MatrixXd Jn = Jw * norms.cwiseInverse().asDiagonal();
-    Eigen::JacobiSVD<Eigen::MatrixXd> svd(Jn, Eigen::ComputeThinV);
-    const Eigen::VectorXd &sv = svd.singularValues();
-    r.condition = sv[K - 1] > 0. ? sv[0] / sv[K - 1] : std::numeric_limits<double>::infinity();
-    r.standard_errors.assign(K, nan);
-    r.correlation = Eigen::MatrixXd::Constant(K, K, nan);
-    const auto names = [&](const Eigen::VectorXd &v) {
-      std::string list;
-      for (std::size_t j = 0; j < K; ++j)
-        if (std::abs(v[j]) > 0.1)
-          list += (list.empty() ? "" : ", ") + label(settings.free[j]);
-      return list;
-    };
-    if (!(r.condition < singular_condition))
-      r.warnings.push_back("the data do not determine " + names(svd.matrixV().col(K - 1)) +
-                           " separately (condition number of the scaled Jacobian " +
-                           format_number(r.condition, 3) +
-                           "): changing them together leaves every displacement the same; fix "
-                           "all but one of them (Calibration/Free parameters)");
-    else if (M > K)
-      {
-        const double          s2 = weighted.squaredNorm() / double(M - K);
-        const Eigen::MatrixXd V  = svd.matrixV();
-        const Eigen::MatrixXd cn =
-          s2 * V * sv.array().square().inverse().matrix().asDiagonal() * V.transpose();
-        const Eigen::MatrixXd cov = norms.cwiseInverse().asDiagonal() * cn *
-                                    norms.cwiseInverse().asDiagonal();
-        for (std::size_t j = 0; j < K; ++j)
-          r.standard_errors[j] = std::sqrt(cov(j, j));
-        for (std::size_t i = 0; i < K; ++i)
-          for (std::size_t j = 0; j < K; ++j)
-            r.correlation(i, j) = cn(i, j) / std::sqrt(cn(i, i) * cn(j, j));
-        if (r.condition > weak_condition)
-          r.warnings.push_back("the data determine " + names(V.col(K - 1)) +
-                               " only poorly together (condition number " +
-                               format_number(r.condition, 3) + "): see their correlation");
-        for (std::size_t i = 0; i < K; ++i)
-          for (std::size_t j = i + 1; j < K; ++j)
-            if (std::abs(r.correlation(i, j)) > 0.99)
-              r.warnings.push_back(label(settings.free[i]) + " and " + label(settings.free[j]) +
-                                   " are correlated (" + format_number(r.correlation(i, j), 4) +
-                                   "): the data constrain mainly a combination of them");
-      }
-    else
-      r.warnings.push_back("as many data points as free parameters: no standard errors");
+    analyse_errors(root_w.asDiagonal() * J, weighted, settings, r);
     return r;
   }
 } // namespace cdea

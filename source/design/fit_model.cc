@@ -6,6 +6,7 @@
 #include <cdea/input/parameters.h>
 #include <cdea/input/solver_settings.h>
 #include <cdea/input/validation.h>
+#include <cdea/model/load_state.h>
 
 #include <algorithm>
 #include <cctype>
@@ -280,14 +281,7 @@ namespace cdea
 
   LoadState DisplacementModel::load_of(const unsigned int point) const
   {
-    LoadState l;
-    l.stage       = Stage::voltage;
-    l.load_factor = 1.;
-    l.stretch     = scene.prestretch;
-    l.mass        = scene.mass;
-    l.force       = scene.dead_load();
-    l.voltages    = data.voltages[point];
-    return l;
+    return full_load(scene, data.voltages[point]);
   }
 
   bool DisplacementModel::ramp(const unsigned int point, std::string *message)

@@ -3,6 +3,8 @@
 // design variables from the last layout reached (see optimize.h).
 
 #include <cdea/design/optimize.h>
+#include <cdea/model/load_state.h>
+#include <cdea/numerics/step_control.h>
 
 #include <algorithm>
 #include <cmath>
@@ -71,14 +73,9 @@ namespace cdea
   // at the end of a one-waypoint voltage path (loaded).
   LoadState LayoutEvaluator::load_of(const Layout &layout, const bool loaded) const
   {
-    LoadState l;
-    l.stage       = loaded ? Stage::voltage : Stage::dead_load;
-    l.load_factor = 1.;
-    l.stretch     = base.prestretch;
-    l.mass        = base.mass;
-    l.force       = base.dead_load();
-    l.voltages    = loaded ? layout.voltages : std::vector<double>(layout.voltages.size(), 0.);
-    return l;
+    if (loaded)
+      return full_load(base, layout.voltages);
+    return full_load(base, std::vector<double>(layout.voltages.size(), 0.), 1., Stage::dead_load);
   }
 
   bool LayoutEvaluator::solve(MembraneModel &m, const LoadState &load, const ModelState &guess)
@@ -154,71 +151,88 @@ namespace cdea
     return result();
   }
 
+  // One continuation step to the fraction @p next of the way from the free
+  // values @p from to @p to, from the tangent predictor x + dx/dp dp of both
+  // states of the last layout reached; on success that layout is the new
+  // last one. A step that lands beyond a fold (on an unstable branch) fails
+  // too.
+  bool LayoutEvaluator::step_to(const std::vector<double> &from, const std::vector<double> &to,
+                                const double next)
+  {
+    std::vector<double>       values(free.size());
+    Eigen::VectorXd           dp(free.size());
+    const std::vector<double> now = last->layout.free_values(free);
+    for (std::size_t j = 0; j < free.size(); ++j)
+      {
+        values[j] = next == 1. ? to[j] : from[j] + next * (to[j] - from[j]);
+        dp[j]     = values[j] - now[j];
+      }
+    Layout layout = last->layout;
+    layout.set_free_values(free, values);
+
+    MembraneModel &m             = model_for(layout.edges);
+    const bool     edges_changed = layout.edges != last->layout.edges;
+    auto           reached       = std::make_unique<Reached>(*last);
+    reached->layout              = layout;
+    bool ok                      = true;
+    if (edges_changed)
+      {
+        ok = solve(m, load_of(layout, false),
+                   predicted_state(last->reference, last->d_reference, dp));
+        if (ok)
+          reached->set_reference(m, free);
+      }
+    if (ok)
+      {
+        ModelState guess = predicted_state(last->loaded, last->d_loaded, dp);
+        guess.load       = load_of(layout, true);
+        ok               = solve(m, guess.load, guess);
+      }
+    if (!ok)
+      return false;
+    const StateSensitivity at(m, free);
+    if (!at.stable())
+      return false;
+    reached->loaded     = m.state();
+    reached->d_loaded   = at.state_derivative();
+    reached->evaluation = loaded_part(at);
+    last                = std::move(reached);
+    return true;
+  }
+
   // From the last layout to @p target in steps no larger than the ramp's
-  // (voltage) and edge_increment (edges), each from the tangent predictor
-  // x + dx/dp dp of both states; a failed step is halved.
+  // (voltage) and edge_increment (edges); a failed step is halved, at most
+  // max_cutbacks times on the way, and the step doubles after every step
+  // reached.
   bool LayoutEvaluator::continue_to(const Layout &target)
   {
-    const std::vector<double> from = last->layout.free_values(free);
-    const std::vector<double> to   = target.free_values(free);
+    const std::vector<double> from  = last->layout.free_values(free);
+    const std::vector<double> to    = target.free_values(free);
     double                    steps = 1.;
     for (std::size_t j = 0; j < free.size(); ++j)
       steps = std::max(steps, std::abs(to[j] - from[j]) /
                                 (free[j].kind == ParameterKind::voltage ?
                                    voltage_increments * stepping.voltage_increment :
                                    edge_increment));
-    const double full = 1. / std::ceil(steps);
-    double       h = full, s = 0.;
-    unsigned int cutbacks = 0;
-    while (s < 1.)
+    StepControlSettings s;
+    s.max_step          = 1. / std::ceil(steps);
+    s.max_cutbacks      = max_cutbacks;
+    s.cutbacks_in_total = true;
+    s.easy_iterations   = StepControlSettings::unlimited;
+    StepController control(s, s.max_step);
+    double         done = 0.; // fraction of the way
+    while (done < 1.)
       {
-        const double        next = std::min(1., s + h);
-        std::vector<double> values(free.size());
-        Eigen::VectorXd     dp(free.size());
-        const std::vector<double> now = last->layout.free_values(free);
-        for (std::size_t j = 0; j < free.size(); ++j)
+        const double       next              = std::min(1., done + control.step());
+        const unsigned int iterations_before = iterations_;
+        if (!step_to(from, to, next))
           {
-            values[j] = next == 1. ? to[j] : from[j] + next * (to[j] - from[j]);
-            dp[j]     = values[j] - now[j];
-          }
-        Layout layout = last->layout;
-        layout.set_free_values(free, values);
-
-        MembraneModel &m             = model_for(layout.edges);
-        const bool     edges_changed = layout.edges != last->layout.edges;
-        auto           reached       = std::make_unique<Reached>(*last);
-        reached->layout              = layout;
-        bool ok                      = true;
-        if (edges_changed)
-          {
-            ok = solve(m, load_of(layout, false),
-                       predicted_state(last->reference, last->d_reference, dp));
-            if (ok)
-              reached->set_reference(m, free);
-          }
-        if (ok)
-          {
-            ModelState guess = predicted_state(last->loaded, last->d_loaded, dp);
-            guess.load       = load_of(layout, true);
-            ok         = solve(m, guess.load, guess);
-          }
-        std::unique_ptr<StateSensitivity> at;
-        if (ok)
-          at = std::make_unique<StateSensitivity>(m, free);
-        // A step that lands beyond a fold (on an unstable branch) fails too.
-        if (!ok || !at->stable())
-          {
-            if (++cutbacks > max_cutbacks)
+            if (!control.reject(next - done))
               return false;
-            h *= 0.5;
             continue;
           }
-        reached->loaded     = m.state();
-        reached->d_loaded   = at->state_derivative();
-        reached->evaluation = loaded_part(*at);
-        last                = std::move(reached);
-        s                   = next;
-        h                   = std::min(2. * h, full);
+        control.accept(next - done, iterations_ - iterations_before);
+        done = next;
       }
     return true;
   }

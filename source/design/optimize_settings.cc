@@ -105,117 +105,159 @@ namespace cdea
     return scene;
   }
 
+  namespace
+  {
+    /// What cdea optimize does not support.
+    void require_supported(const Parameters &p)
+    {
+      require_quasi_static_elastic(p, "optimize");
+      if (p.wrinkling.model != WrinklingModel::check)
+        throw InputError("Wrinkling/Model = " + to_string(p.wrinkling.model) +
+                         " is not supported by cdea optimize: the constraint is on the hoop "
+                         "stress of the plain membrane law (use check)");
+      if (p.reservoir.water_load)
+        throw InputError("Reservoir/Water load = true is not supported by cdea optimize: the "
+                         "layouts are designed for the actuator under its dead load (use false)");
+    }
+
+    /// Fixed voltages (kV): one per ring, or one 'free' for all; in V.
+    std::vector<double> fixed_voltages(const parameters::Optimization &o, const unsigned int n_rings,
+                                       const double ceiling)
+    {
+      const std::string name     = "Optimization/Fixed voltages (kV)";
+      auto              voltages = numbers_or_free(o.fixed_voltages_text, name);
+      if (voltages.size() == 1 && std::isnan(voltages[0]))
+        voltages.assign(n_rings, OptimizationSettings::free);
+      if (voltages.size() != n_rings)
+        throw InputError(name + ": " + std::to_string(voltages.size()) + " entries for " +
+                         std::to_string(n_rings) +
+                         " rings (Optimization/Rings): give one voltage or 'free' per ring");
+      for (double &v : voltages)
+        {
+          if (v < 0.)
+            throw InputError(name + ": voltages must not be negative, got " + format(v));
+          if (v > ceiling * 1e-3)
+            throw InputError(name + ": " + format(v) + " kV is above the voltage ceiling of " +
+                             format(ceiling * 1e-3) + " kV for this film");
+          v *= 1e3;
+        }
+      return voltages;
+    }
+
+    /// All N+1 edges (r/a): 1, the fixed interior ones (NaN: free), b/a.
+    std::vector<double> ring_edges(const parameters::Optimization &o, const unsigned int n_rings,
+                                   const double b_over_a)
+    {
+      const std::string name     = "Optimization/Fixed ring edges (r/a)";
+      auto              interior = numbers_or_free(o.fixed_edges_text, name);
+      if (interior.size() == 1 && std::isnan(interior[0]))
+        interior.assign(n_rings - 1, OptimizationSettings::free);
+      if (interior.size() != n_rings - 1)
+        throw InputError(name + ": " + std::to_string(interior.size()) + " entries for the " +
+                         std::to_string(n_rings - 1) + " interior edges of " +
+                         std::to_string(n_rings) +
+                         " rings: give N-1 numbers or 'free', or one 'free' for all");
+      std::vector<double> edges = {1.};
+      edges.insert(edges.end(), interior.begin(), interior.end());
+      edges.push_back(b_over_a);
+      for (unsigned int k = 1; k < n_rings; ++k)
+        if (!std::isnan(edges[k]) && !(edges[k] > 1. && edges[k] < b_over_a))
+          throw InputError(name + ": " + format(edges[k]) + " is not inside (1, " +
+                           format(b_over_a) + ")");
+      return edges;
+    }
+
+    /// The bounds of the free edges (r/a) and voltages (V).
+    void variable_bounds(const parameters::Optimization &o, const double b_over_a,
+                         const double ceiling, OptimizationSettings &s)
+    {
+      const std::string edge_name = "Optimization/Edge bounds (r/a)";
+      std::tie(s.edge_lower, s.edge_upper) = bounds(o.edge_bounds_text, edge_name);
+      if (s.edge_lower < 1. || s.edge_upper > b_over_a)
+        throw InputError(edge_name + ": the bounds must lie inside [1, b/a = " +
+                         format(b_over_a) + "], got " + o.edge_bounds_text);
+      const std::string voltage_name = "Optimization/Voltage bounds (kV)";
+      std::tie(s.voltage_lower, s.voltage_upper) = bounds(o.voltage_bounds_text, voltage_name);
+      if (s.voltage_lower < 0.)
+        throw InputError(voltage_name + ": the lower bound must not be negative, got " +
+                         format(s.voltage_lower));
+      if (s.voltage_upper > ceiling * 1e-3)
+        throw InputError(voltage_name + ": the upper bound " + format(s.voltage_upper) +
+                         " kV is above the voltage ceiling of " + format(ceiling * 1e-3) +
+                         " kV for this film");
+      s.voltage_lower *= 1e3;
+      s.voltage_upper *= 1e3;
+    }
+
+    /// The limits of the constraints: hoop stress (Pa), field (V/m), ring
+    /// width (r/a); returns the width in mm as given.
+    double constraint_limits(const parameters::Optimization &o, const Scene &scene,
+                             OptimizationSettings &s)
+    {
+      s.min_hoop_stress =
+        one_number(o.min_hoop_stress_text, "Optimization/Minimum hoop stress (kPa)") * 1e3;
+      const std::string field_name = "Optimization/Maximum field (MV/m)";
+      if (trimmed(o.max_field_text) == "inf")
+        s.max_field = std::numeric_limits<double>::infinity();
+      else
+        {
+          s.max_field = one_number(o.max_field_text, field_name) * 1e6;
+          if (!(s.max_field > 0.))
+            throw InputError(field_name + " must be positive or 'inf', got " + o.max_field_text);
+        }
+      const std::string width_name = "Optimization/Minimum ring width (mm)";
+      const double      width_mm   = one_number(o.min_ring_width_text, width_name);
+      if (width_mm < 0.)
+        throw InputError(width_name + " must not be negative, got " + format(width_mm));
+      s.min_ring_width = width_mm * 1e-3 / scene.disk_radius;
+      return width_mm;
+    }
+
+    /// The fixed edges must leave room: every ring at least the minimum
+    /// width, between fixed neighbours and the bounds of the free edges.
+    void check_room(const parameters::Optimization &o, const OptimizationSettings &s,
+                    const double width_mm)
+    {
+      const std::string width_name = "Optimization/Minimum ring width (mm)";
+      double            lowest     = 1.;
+      for (unsigned int k = 1; k <= s.n_rings; ++k)
+        {
+          const bool   fixed = k == s.n_rings || !std::isnan(s.edges[k]);
+          const double least = lowest + s.min_ring_width;
+          if (fixed)
+            {
+              if (s.edges[k] < least - 1e-12)
+                throw InputError(width_name + ": ring " + std::to_string(k) + " cannot be " +
+                                 format(width_mm) +
+                                 " mm wide with the fixed edges and Optimization/Edge bounds "
+                                 "(r/a)");
+              lowest = s.edges[k];
+            }
+          else
+            {
+              lowest = std::max(least, s.edge_lower);
+              if (lowest > s.edge_upper)
+                throw InputError(width_name + ": " + std::to_string(s.n_rings) + " rings of " +
+                                 format(width_mm) + " mm do not fit between the edge bounds " +
+                                 o.edge_bounds_text);
+            }
+        }
+    }
+  } // namespace
+
   OptimizationSettings optimization_settings(const Parameters &p, const Scene &scene)
   {
-    require_quasi_static_elastic(p, "optimize");
-    if (p.wrinkling.model != WrinklingModel::check)
-      throw InputError("Wrinkling/Model = " + to_string(p.wrinkling.model) +
-                       " is not supported by cdea optimize: the constraint is on the hoop "
-                       "stress of the plain membrane law (use check)");
-    if (p.reservoir.water_load)
-      throw InputError("Reservoir/Water load = true is not supported by cdea optimize: the "
-                       "layouts are designed for the actuator under its dead load (use false)");
+    require_supported(p);
     const parameters::Optimization &o = p.optimization;
     OptimizationSettings            s;
     const double                    b_over_a = scene.frame_radius / scene.disk_radius;
+    const double                    ceiling  = voltage_ceiling(scene);
     s.n_rings                                = o.rings;
-
-    const std::string voltages_name = "Optimization/Fixed voltages (kV)";
-    auto              voltages      = numbers_or_free(o.fixed_voltages_text, voltages_name);
-    if (voltages.size() == 1 && std::isnan(voltages[0]))
-      voltages.assign(s.n_rings, OptimizationSettings::free);
-    if (voltages.size() != s.n_rings)
-      throw InputError(voltages_name + ": " + std::to_string(voltages.size()) +
-                       " entries for " + std::to_string(s.n_rings) +
-                       " rings (Optimization/Rings): give one voltage or 'free' per ring");
-    const double ceiling = voltage_ceiling(scene);
-    for (double &v : voltages)
-      {
-        if (v < 0.)
-          throw InputError(voltages_name + ": voltages must not be negative, got " + format(v));
-        if (v > ceiling * 1e-3)
-          throw InputError(voltages_name + ": " + format(v) + " kV is above the voltage ceiling "
-                           "of " + format(ceiling * 1e-3) + " kV for this film");
-        v *= 1e3;
-      }
-    s.voltages = voltages;
-
-    const std::string edges_name = "Optimization/Fixed ring edges (r/a)";
-    auto              interior   = numbers_or_free(o.fixed_edges_text, edges_name);
-    if (interior.size() == 1 && std::isnan(interior[0]))
-      interior.assign(s.n_rings - 1, OptimizationSettings::free);
-    if (interior.size() != s.n_rings - 1)
-      throw InputError(edges_name + ": " + std::to_string(interior.size()) + " entries for the " +
-                       std::to_string(s.n_rings - 1) +
-                       " interior edges of " + std::to_string(s.n_rings) +
-                       " rings: give N-1 numbers or 'free', or one 'free' for all");
-    s.edges = {1.};
-    s.edges.insert(s.edges.end(), interior.begin(), interior.end());
-    s.edges.push_back(b_over_a);
-    for (unsigned int k = 1; k < s.n_rings; ++k)
-      if (!std::isnan(s.edges[k]) && !(s.edges[k] > 1. && s.edges[k] < b_over_a))
-        throw InputError(edges_name + ": " + format(s.edges[k]) + " is not inside (1, " +
-                         format(b_over_a) + ")");
-
-    const std::string edge_bounds_name = "Optimization/Edge bounds (r/a)";
-    std::tie(s.edge_lower, s.edge_upper) = bounds(o.edge_bounds_text, edge_bounds_name);
-    if (s.edge_lower < 1. || s.edge_upper > b_over_a)
-      throw InputError(edge_bounds_name + ": the bounds must lie inside [1, b/a = " +
-                       format(b_over_a) + "], got " + o.edge_bounds_text);
-    const std::string voltage_bounds_name = "Optimization/Voltage bounds (kV)";
-    std::tie(s.voltage_lower, s.voltage_upper) =
-      bounds(o.voltage_bounds_text, voltage_bounds_name);
-    if (s.voltage_lower < 0.)
-      throw InputError(voltage_bounds_name + ": the lower bound must not be negative, got " +
-                       format(s.voltage_lower));
-    if (s.voltage_upper > ceiling * 1e-3)
-      throw InputError(voltage_bounds_name + ": the upper bound " + format(s.voltage_upper) +
-                       " kV is above the voltage ceiling of " + format(ceiling * 1e-3) +
-                       " kV for this film");
-    s.voltage_lower *= 1e3;
-    s.voltage_upper *= 1e3;
-
-    s.min_hoop_stress =
-      one_number(o.min_hoop_stress_text, "Optimization/Minimum hoop stress (kPa)") * 1e3;
-    const std::string field_name = "Optimization/Maximum field (MV/m)";
-    if (trimmed(o.max_field_text) == "inf")
-      s.max_field = std::numeric_limits<double>::infinity();
-    else
-      {
-        s.max_field = one_number(o.max_field_text, field_name) * 1e6;
-        if (!(s.max_field > 0.))
-          throw InputError(field_name + " must be positive or 'inf', got " + o.max_field_text);
-      }
-    const std::string width_name = "Optimization/Minimum ring width (mm)";
-    const double      width_mm   = one_number(o.min_ring_width_text, width_name);
-    if (width_mm < 0.)
-      throw InputError(width_name + " must not be negative, got " + format(width_mm));
-    s.min_ring_width = width_mm * 1e-3 / scene.disk_radius;
-
-    // The fixed edges must leave room: every ring at least the minimum
-    // width, between fixed neighbours and the bounds of the free edges.
-    double lowest = 1.;
-    for (unsigned int k = 1; k <= s.n_rings; ++k)
-      {
-        const bool   fixed = k == s.n_rings || !std::isnan(s.edges[k]);
-        const double least = lowest + s.min_ring_width;
-        if (fixed)
-          {
-            if (s.edges[k] < least - 1e-12)
-              throw InputError(width_name + ": ring " + std::to_string(k) +
-                               " cannot be " + format(width_mm) +
-                               " mm wide with the fixed edges and Optimization/Edge bounds (r/a)");
-            lowest = s.edges[k];
-          }
-        else
-          {
-            lowest = std::max(least, s.edge_lower);
-            if (lowest > s.edge_upper)
-              throw InputError(width_name + ": " + std::to_string(s.n_rings) + " rings of " +
-                               format(width_mm) + " mm do not fit between the edge bounds " +
-                               o.edge_bounds_text);
-          }
-      }
+    s.voltages                               = fixed_voltages(o, s.n_rings, ceiling);
+    s.edges                                  = ring_edges(o, s.n_rings, b_over_a);
+    variable_bounds(o, b_over_a, ceiling, s);
+    const double width_mm = constraint_limits(o, scene, s);
+    check_room(o, s, width_mm);
 
     s.objective       = o.objective;
     s.starts          = o.starts;

@@ -1,6 +1,7 @@
 #include <cdea/base/format.h>
 #include <cdea/numerics/bracketed_root.h>
 #include <cdea/numerics/arc_length.h>
+#include <cdea/model/load_state.h>
 #include <cdea/solver/load_stepper.h>
 
 #include <algorithm>
@@ -60,26 +61,19 @@ namespace cdea
 
   LoadState LoadStepper::load(const Stage stage, const double t) const
   {
+    if (stage == Stage::voltage)
+      return full_load(scene, scene.path.voltages(t), t);
     LoadState l;
     l.stage       = stage;
     l.load_factor = t;
     l.voltages.assign(scene.n_rings(), 0.);
-    switch (stage)
+    if (stage == Stage::prestretch)
+      l.stretch = 1. + (scene.prestretch - 1.) * t;
+    else
       {
-        case Stage::prestretch:
-          l.stretch = 1. + (scene.prestretch - 1.) * t;
-          break;
-        case Stage::dead_load:
-          l.stretch = scene.prestretch;
-          l.mass    = scene.mass * t;
-          l.force   = scene.dead_load() * t;
-          break;
-        case Stage::voltage:
-          l.stretch  = scene.prestretch;
-          l.mass     = scene.mass;
-          l.force    = scene.dead_load();
-          l.voltages = scene.path.voltages(t);
-          break;
+        l.stretch = scene.prestretch;
+        l.mass    = scene.mass * t;
+        l.force   = scene.dead_load() * t;
       }
     return l;
   }
@@ -256,70 +250,106 @@ namespace cdea
     return true;
   }
 
+  namespace
+  {
+    /// Why a stage ended at t: the step cannot change t any more.
+    std::string unresolved_step_message(const Stage stage, const double t)
+    {
+      return "stage '" + stage_name(stage) + "': the load parameter cannot advance beyond t = " +
+             format_number(t, 17) +
+             " (the step is below the resolution of t; is the voltage path too steep or are "
+             "two waypoints too close?)";
+    }
+  } // namespace
+
+  StepController LoadStepper::stage_controller(const Stage stage, const double t_end) const
+  {
+    StepControlSettings s;
+    s.max_step     = step_limit(stage, 0.);
+    s.max_cutbacks = settings.max_cutbacks;
+    return StepController(s, std::min(step_limit(stage, 0.), t_end));
+  }
+
+  // The smallest increment at t: Solver/Min voltage increment (V) where the
+  // voltages change, 1e-8 of the stage parameter elsewhere.
+  void LoadStepper::set_min_increment(StepController &control, const Stage stage,
+                                      const double t) const
+  {
+    const double rate = stage == Stage::voltage ? scene.path.max_rate(t) : 0.;
+    if (rate > 0.)
+      control.set_min_step(settings.min_voltage_increment, rate);
+    else
+      control.set_min_step(1e-8);
+  }
+
+  SolveReport LoadStepper::solve_step(const Stage stage, const double t, const double t_next,
+                                      const ModelState &state0, const ModelState &previous_state,
+                                      const double previous_t)
+  {
+    // Linear predictor from the last two converged states of this stage.
+    const bool extrapolated = settings.extrapolate && !previous_state.unknowns.empty();
+    if (extrapolated && t > previous_t)
+      model.predict(previous_state, (t_next - t) / (t - previous_t));
+    const LoadState target = load(stage, t_next);
+    SolveReport     report = solve(target);
+    if (!report.converged && extrapolated)
+      {
+        // The predictor can overshoot near a limit point: retry from the
+        // converged state before cutting the increment.
+        model.set_state(state0);
+        report = solve(target);
+      }
+    return report;
+  }
+
+  std::string LoadStepper::no_equilibrium_message(const Stage stage, const double t,
+                                                  const double t_next, const unsigned int cutbacks,
+                                                  const std::string &why) const
+  {
+    std::ostringstream m;
+    m << "stage '" << stage_name(stage) << "': no equilibrium found beyond load "
+      << "parameter t = " << t;
+    if (stage == Stage::voltage)
+      m << " (voltages " << format_kV(load(stage, t).voltages, 8) << ")";
+    m << " after " << cutbacks << " cut-backs of the increment; last attempt at t = " << t_next
+      << ": " << why;
+    if (stage == Stage::voltage)
+      m << ". This is typically a limit point (fold) of the voltage-displacement "
+           "curve, which load stepping cannot pass (Solver/Continuation = arc "
+           "length can).";
+    return m.str();
+  }
+
   bool LoadStepper::run_stage(const Stage stage, const double t_end)
   {
-    double       t        = 0.;
-    double       dt       = std::min(step_limit(stage, 0.), t_end);
-    unsigned int cutbacks = 0;
-    ModelState   previous_state;
-    double       previous_t = 0.;
-    Evaluated    e0         = evaluate(stage, 0.);
+    StepController control = stage_controller(stage, t_end);
+    double         t       = 0.;
+    ModelState     previous_state;
+    double         previous_t = 0.;
+    Evaluated      e0         = evaluate(stage, 0.);
 
     while (t < t_end * (1. - 1e-14))
       {
         // Land exactly on segment ends (waypoints) and on the stage end.
         const double segment_end = std::min(t_end, std::floor(t + 1e-12) + 1.);
-        const double t_next      = std::min(t + dt, segment_end);
+        const double t_next      = std::min(t + control.step(), segment_end);
         if (!(t_next > t))
           {
-            result.message = "stage '" + stage_name(stage) +
-                             "': the load parameter cannot advance beyond t = " +
-                             format_number(t, 17) +
-                             " (the step is below the resolution of t; is the voltage path "
-                             "too steep or are two waypoints too close?)";
+            result.message = unresolved_step_message(stage, t);
             return false;
           }
-        const ModelState state0 = model.state();
-
-        // Linear predictor from the last two converged states of this stage.
-        const bool predicted =
-          settings.extrapolate && !previous_state.unknowns.empty() && t > previous_t;
-        if (predicted)
-          model.predict(previous_state, (t_next - t) / (t - previous_t));
-        const LoadState target = load(stage, t_next);
-        SolveReport     report1 = solve(target);
-        if (!report1.converged && settings.extrapolate && !previous_state.unknowns.empty())
-          {
-            // The predictor can overshoot near a limit point: retry from the
-            // converged state before cutting the increment.
-            model.set_state(state0);
-            report1 = solve(target);
-          }
-        if (!report1.converged)
+        const ModelState  state0 = model.state();
+        const SolveReport solved =
+          solve_step(stage, t, t_next, state0, previous_state, previous_t);
+        if (!solved.converged)
           {
             model.set_state(state0);
-            dt *= 0.5;
-            ++cutbacks;
-            const double rate = stage == Stage::voltage ? scene.path.max_rate(t) : 0.;
-            const bool   too_small =
-              rate > 0. ? dt * rate < settings.min_voltage_increment : dt < 1e-8;
-            if (too_small || cutbacks > settings.max_cutbacks)
-              {
-                std::ostringstream m;
-                m << "stage '" << stage_name(stage) << "': no equilibrium found beyond load "
-                  << "parameter t = " << t;
-                if (stage == Stage::voltage)
-                  m << " (voltages " << format_kV(load(stage, t).voltages, 8) << ")";
-                m << " after " << cutbacks << " cut-backs of the increment; last attempt at t = "
-                  << t_next << ": " << report1.message;
-                if (stage == Stage::voltage)
-                  m << ". This is typically a limit point (fold) of the voltage-displacement "
-                       "curve, which load stepping cannot pass (Solver/Continuation = arc "
-                       "length can).";
-                result.message = m.str();
-                return false;
-              }
-            continue;
+            set_min_increment(control, stage, t);
+            if (control.reject(t_next - t))
+              continue;
+            result.message =
+              no_equilibrium_message(stage, t, t_next, control.cutbacks(), solved.message);
+            return false;
           }
 
         const Evaluated e1 = evaluate(stage, t_next);
@@ -329,12 +359,108 @@ namespace cdea
         previous_t     = t;
         t              = t_next;
         e0             = e1;
-        report(e0, report1.iterations);
-        cutbacks = 0;
-        if (report1.iterations <= 4)
-          dt = std::min(2. * dt, step_limit(stage, t));
+        report(e0, solved.iterations);
+        control.set_max_step(step_limit(stage, t));
+        control.accept(t - previous_t, solved.iterations);
       }
     return true;
+  }
+
+  /// The voltage stage followed by arc length: the continuation, its last
+  /// converged point p with the model's state and the evaluation there, and
+  /// the point q of the step being taken.
+  struct LoadStepper::ArcPath
+  {
+    ContinuationProblem &problem;
+    ArcLength            arc;
+    ArcLength::Point     p, q;
+    ModelState           state_p;
+    Evaluated            e_p;
+  };
+
+  bool LoadStepper::stop_arc_length(const ArcPath &path, const std::string &why)
+  {
+    result.end     = why;
+    result.message = "arc length: " + why + " at t = " + format_number(path.p.t, 8) +
+                     " (voltages " + format_kV(load(Stage::voltage, path.p.t).voltages, 8) + ")";
+    return false;
+  }
+
+  // The step from p went past the end of the path (forward): solve at the
+  // end from p instead. Complete if that converges (after the crossings up
+  // to the end), incomplete if a crossing ended the run, open if the solve
+  // failed (a shorter step may reach the end).
+  LoadStepper::PathEnd LoadStepper::land_on_path_end(ArcPath &path, const double t_end)
+  {
+    const Stage stage = Stage::voltage;
+    model.set_state(path.state_p);
+    const SolveReport s = solve(load(stage, t_end));
+    if (!s.converged)
+      return PathEnd::open;
+    const Evaluated e_end = evaluate(stage, t_end);
+    if (path.p.t_dot > 0. &&
+        !check_crossings(stage, path.p.t, path.state_p, path.e_p, t_end, e_end))
+      return PathEnd::incomplete;
+    report(e_end, s.iterations);
+    result.end = "reached the end of the voltage path";
+    return PathEnd::complete;
+  }
+
+  // t' changed sign between p and q, a step of length ds: locate the limit
+  // point, report it, and make q the current state again.
+  void LoadStepper::report_limit_point(ArcPath &path, const double ds)
+  {
+    const Stage      stage = Stage::voltage;
+    ArcLength::Point limit;
+    if (!path.arc.locate_limit_point(path.p, ds, path.q.t_dot, limit))
+      return;
+    path.problem.set_current(limit.x, limit.t);
+    const Evaluated e = evaluate(stage, limit.t);
+    result.limit_points.push_back(
+      {limit.t, load(stage, limit.t).voltages, e.summary.displacement});
+    if (on_limit_point)
+      on_limit_point(result.limit_points.back());
+    report(e, limit.iterations);
+    path.problem.set_current(path.q.x, path.q.t);
+  }
+
+  // The converged point q, a step of length ds from p: the limit point or
+  // the crossings in between, its report, and whether the path ends at q.
+  LoadStepper::PathEnd LoadStepper::advance_arc(ArcPath &path, const double ds)
+  {
+    const Stage             stage = Stage::voltage;
+    const ArcLength::Point &q     = path.q;
+    result.newton_iterations += q.iterations;
+    ++result.solves;
+    path.problem.set_current(q.x, q.t);
+
+    const Evaluated e_q = evaluate(stage, q.t);
+    if ((q.t_dot > 0.) != (path.p.t_dot > 0.))
+      report_limit_point(path, ds);
+    else if (!check_crossings(stage, path.p.t, path.state_p, path.e_p, q.t, e_q))
+      return PathEnd::incomplete;
+
+    path.e_p = e_q;
+    if (!path.e_p.summary.validity_limit.empty())
+      {
+        result.message = "arc length: " + path.e_p.summary.validity_limit;
+        return PathEnd::incomplete;
+      }
+    report(path.e_p, q.iterations);
+    path.state_p = model.state();
+    path.p       = q;
+    if (q.t < 0.)
+      {
+        result.end = "the path parameter fell below 0 (voltages back to zero)";
+        return PathEnd::complete;
+      }
+    if (settings.max_displacement > 0. &&
+        path.e_p.summary.displacement > settings.max_displacement)
+      {
+        result.end = "the displacement passed Solver/Max displacement";
+        return PathEnd::complete;
+      }
+    return PathEnd::open;
   }
 
   // The voltage stage by pseudo-arclength continuation in (unknowns, t). Ends
@@ -355,111 +481,55 @@ namespace cdea
     ArcLengthSettings arc_settings;
     arc_settings.residual_tolerance = settings.residual_tolerance;
     arc_settings.update_tolerance   = settings.update_tolerance;
-    ArcLength arc(*problem, arc_settings);
+    ArcPath path{*problem, ArcLength(*problem, arc_settings), {}, {}, {}, {}};
+    path.p.x = problem->current();
+    path.p.t = 0.;
+    problem->set_current(path.p.x, path.p.t);
+    path.arc.tangent(path.p);
+    path.state_p = model.state();
+    path.e_p     = evaluate(stage, 0.);
+    if (settings.max_displacement > 0. &&
+        path.e_p.summary.displacement > settings.max_displacement)
+      return stop_arc_length(path, "the displacement passed Solver/Max displacement before "
+                                   "any voltage");
 
-    ArcLength::Point p;
-    p.x = problem->current();
-    p.t = 0.;
-    problem->set_current(p.x, p.t);
-    arc.tangent(p);
-    ModelState state_p = model.state();
-    Evaluated  e_p     = evaluate(stage, 0.);
-
-    const auto stop = [&](const std::string &why) {
-      result.end     = why;
-      result.message = "arc length: " + why + " at t = " + format_number(p.t, 8) +
-                       " (voltages " + format_kV(load(stage, p.t).voltages, 8) + ")";
-      return false;
-    };
-    if (settings.max_displacement > 0. && e_p.summary.displacement > settings.max_displacement)
-      return stop("the displacement passed Solver/Max displacement before any voltage");
-
-    const double ds_max = step_limit(stage, 0.);
-    const double ds_min = settings.min_voltage_increment /
-                          std::max(scene.path.max_rate(0.), 1.);
-    double       ds     = ds_max;
+    StepController control = arc_length_controller();
     for (unsigned int k = 0; k < settings.max_arc_length_steps; ++k)
       {
-        ArcLength::Point q;
-        std::string      why;
-        if (!arc.step(p, ds, q, &why))
+        const double ds = control.step();
+        std::string  why;
+        if (!path.arc.step(path.p, ds, path.q, &why))
           {
-            ds *= 0.5;
-            if (ds < ds_min)
-              {
-                problem->set_current(p.x, p.t);
-                result.message = "arc length: no equilibrium found beyond load parameter t = " +
-                                 format_number(p.t, 6) + " (voltages " +
-                                 format_kV(load(stage, p.t).voltages, 8) + "): " + why;
-                return false;
-              }
-            continue;
-          }
-
-        // Past the end of the path (going forward): land on it exactly.
-        if (q.t > t_end && q.t_dot > 0.)
-          {
-            model.set_state(state_p);
-            const SolveReport s = solve(load(stage, t_end));
-            if (!s.converged)
-              {
-                ds *= 0.5;
-                continue;
-              }
-            const Evaluated e_end = evaluate(stage, t_end);
-            if (p.t_dot > 0. && !check_crossings(stage, p.t, state_p, e_p, t_end, e_end))
-              return false;
-            report(e_end, s.iterations);
-            result.end = "reached the end of the voltage path";
-            return true;
-          }
-        result.newton_iterations += q.iterations;
-        ++result.solves;
-        problem->set_current(q.x, q.t);
-
-        const Evaluated e_q = evaluate(stage, q.t);
-        // A limit point between p and q: t' changed sign.
-        if ((q.t_dot > 0.) != (p.t_dot > 0.))
-          {
-            ArcLength::Point limit;
-            if (arc.locate_limit_point(p, ds, q.t_dot, limit))
-              {
-                problem->set_current(limit.x, limit.t);
-                const Evaluated e = evaluate(stage, limit.t);
-                result.limit_points.push_back(
-                  {limit.t, load(stage, limit.t).voltages, e.summary.displacement});
-                if (on_limit_point)
-                  on_limit_point(result.limit_points.back());
-                report(e, limit.iterations);
-                problem->set_current(q.x, q.t);
-              }
-          }
-        else if (!check_crossings(stage, p.t, state_p, e_p, q.t, e_q))
-          return false;
-
-        e_p = e_q;
-        if (!e_p.summary.validity_limit.empty())
-          {
-            result.message = "arc length: " + e_p.summary.validity_limit;
+            if (control.reject(ds))
+              continue;
+            problem->set_current(path.p.x, path.p.t);
+            result.message = "arc length: no equilibrium found beyond load parameter t = " +
+                             format_number(path.p.t, 6) + " (voltages " +
+                             format_kV(load(stage, path.p.t).voltages, 8) + "): " + why;
             return false;
           }
-        report(e_p, q.iterations);
-        state_p = model.state();
-        p       = q;
-        if (q.t < 0.)
-          {
-            result.end = "the path parameter fell below 0 (voltages back to zero)";
-            return true;
-          }
-        if (settings.max_displacement > 0. && e_p.summary.displacement > settings.max_displacement)
-          {
-            result.end = "the displacement passed Solver/Max displacement";
-            return true;
-          }
-        if (q.iterations <= 4)
-          ds = std::min(1.5 * ds, ds_max);
+        const bool    past_end = path.q.t > t_end && path.q.t_dot > 0.;
+        const PathEnd end = past_end ? land_on_path_end(path, t_end) : advance_arc(path, ds);
+        if (end != PathEnd::open)
+          return end == PathEnd::complete;
+        if (past_end)
+          control.reject(ds); // a failed landing shortens the step; arc steps decide to give up
+        else
+          control.accept(ds, path.q.iterations);
       }
-    return stop("Solver/Max arc-length steps reached");
+    return stop_arc_length(path, "Solver/Max arc-length steps reached");
+  }
+
+  // Steps of the arc length: at most one voltage increment at the start of
+  // the path, at least the smallest one (V, with a rate of at least 1 V per
+  // unit of t), growing by half after an easy step.
+  StepController LoadStepper::arc_length_controller() const
+  {
+    StepControlSettings s;
+    s.max_step = step_limit(Stage::voltage, 0.);
+    s.min_step = settings.min_voltage_increment / std::max(scene.path.max_rate(0.), 1.);
+    s.growth   = 1.5;
+    return StepController(s, s.max_step);
   }
 
   RunResult LoadStepper::run()

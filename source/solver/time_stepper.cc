@@ -1,5 +1,6 @@
 #include <cdea/base/format.h>
 #include <cdea/numerics/bracketed_root.h>
+#include <cdea/model/load_state.h>
 #include <cdea/solver/time_stepper.h>
 
 #include <algorithm>
@@ -90,14 +91,8 @@ namespace cdea
 
   LoadState TimeStepper::load_at(const double t) const
   {
-    LoadState l;
-    l.stage       = Stage::voltage;
-    l.load_factor = t;
-    l.time        = t;
-    l.stretch     = scene.prestretch;
-    l.mass        = scene.mass;
-    l.force       = scene.dead_load();
-    l.voltages    = voltages_at(t);
+    LoadState l = full_load(scene, voltages_at(t), t);
+    l.time      = t;
     return l;
   }
 
@@ -167,10 +162,7 @@ namespace cdea
         inertia.disk_target = m.z + dt * m.v + dt * dt * (0.5 - beta) * m.a;
         if (settings.water_density > 0.)
           {
-            // The column above the frame plane, frozen over the step.
-            const double height   = (settings.water_volume - m.V) / settings.tube_area;
-            inertia.volume_mass   = settings.water_density * std::max(height, 0.) /
-                                  settings.tube_area;
+            inertia.volume_mass   = water_column_mass(m);
             inertia.volume_target = m.V + dt * m.V_dot + dt * dt * (0.5 - beta) * m.V_ddot;
           }
       }
@@ -216,12 +208,37 @@ namespace cdea
     return summary;
   }
 
-  RunResult TimeStepper::run()
+  // The water column above the frame plane (as a mass on the enclosed
+  // volume), frozen over a step that starts with @p m.
+  double TimeStepper::water_column_mass(const InertiaState &m) const
   {
-    result = RunResult();
-    if (!run_quasi_static())
-      return result;
+    if (!(settings.water_density > 0.))
+      return 0.;
+    const double height = (settings.water_volume - m.V) / settings.tube_area;
+    return settings.water_density * std::max(height, 0.) / settings.tube_area;
+  }
 
+  double TimeStepper::kinetic_energy(const double volume_mass) const
+  {
+    return settings.inertia ? 0.5 * scene.mass * motion.v * motion.v +
+                                0.5 * volume_mass * motion.V_dot * motion.V_dot :
+                              0.;
+  }
+
+  void TimeStepper::set_columns(const double t, const double volume_mass)
+  {
+    time_columns->time          = t;
+    time_columns->velocity      = motion.v;
+    time_columns->work          = energy.work;
+    time_columns->dissipated    = energy.dissipated;
+    time_columns->stored_change = energy.last.mechanical + energy.last.electrostatic +
+                                  kinetic_energy(volume_mass) - energy.stored_start;
+  }
+
+  // The postprocessors of the time stage, the state it starts from (its
+  // stroke and volume, the motion, the energy budget) and its first report.
+  StepSummary TimeStepper::start_time_stage()
+  {
     postprocessors = standard_postprocessors(scene.prestretch, time_stage_stability(),
                                              quasi_static.breakdown_field > 0.);
     for (const auto &make : factories)
@@ -231,7 +248,6 @@ namespace cdea
     postprocessors.push_back(std::move(columns));
 
     // Stroke and volume change count from the start of the time integration.
-    const double t_start = std::isinf(settings.rest_time) ? 0. : -settings.rest_time;
     {
       StepContext reference(model, Stage::dead_load, 1.);
       StepSummary ignored;
@@ -242,184 +258,216 @@ namespace cdea
     motion.z = model.disk_position();
     motion.V = settings.water_density > 0. ? model.enclosed_volume() : 0.;
 
-    // Energy budget since t_start.
-    EnergyBudget budget = model.energy_budget();
-    const double stored_start = budget.mechanical + budget.electrostatic;
-    double       work = 0., dissipated = 0.;
-    const auto   kinetic = [&](const InertiaState &m, const double volume_mass) {
-      return settings.inertia ? 0.5 * scene.mass * m.v * m.v + 0.5 * volume_mass * m.V_dot * m.V_dot :
-                                0.;
-    };
+    energy              = EnergyAccount();
+    energy.last         = model.energy_budget();
+    energy.stored_start = energy.last.mechanical + energy.last.electrostatic;
+    history             = History();
 
-    const auto set_columns = [&](const double t, const double volume_mass) {
-      time_columns->time          = t;
-      time_columns->velocity      = motion.v;
-      time_columns->work          = work;
-      time_columns->dissipated    = dissipated;
-      time_columns->stored_change = budget.mechanical + budget.electrostatic +
-                                    kinetic(motion, volume_mass) - stored_start;
-    };
-    t_now = t_start;
+    t_now = std::isinf(settings.rest_time) ? 0. : -settings.rest_time;
     set_columns(t_now, 0.);
-    StepSummary previous = evaluate(t_now);
-    wants_fields         = true;
-    report(previous, 0);
+    StepSummary first = evaluate(t_now);
+    wants_fields      = true;
+    report(first, 0);
+    next_fields_time = settings.fields_interval > 0. ?
+                         settings.fields_interval *
+                           (std::floor(t_now / settings.fields_interval) + 1.) :
+                         std::numeric_limits<double>::infinity();
+    return first;
+  }
 
-    const double t_end            = settings.waveform.end_time();
-    double       next_fields_time = settings.fields_interval > 0. ?
-                                      settings.fields_interval *
-                                        (std::floor(t_now / settings.fields_interval) + 1.) :
-                                      std::numeric_limits<double>::infinity();
-    double       dt    = settings.max_step;
-    unsigned int cutbacks = 0;
-    // The unknowns of the last two accepted steps, for the predictor.
-    ModelState   older, oldest;
-    double       dt_older = 0., dt_oldest = 0.;
+  // One implicit step of length h from state0: from the extrapolation of the
+  // last accepted states, and once more from state0 if that fails.
+  SolveReport TimeStepper::attempt_step(const ModelState &state0, const InertiaState &motion0,
+                                        const double h)
+  {
+    if (!history.oldest.unknowns.empty())
+      {
+        // Quadratic extrapolation through the last three states, at
+        // times -dt_older - dt_oldest, -dt_older, 0, to h.
+        const double t2 = -history.dt_older - history.dt_oldest, t1 = -history.dt_older;
+        const double w2 = (h - t1) * h / ((t2 - t1) * t2);
+        const double w1 = (h - t2) * h / ((t1 - t2) * t1);
+        const double w0 = 1. - w1 - w2;
+        ModelState   guess = state0;
+        for (std::size_t i = 0; i < guess.unknowns.size(); ++i)
+          guess.unknowns[i] = w0 * state0.unknowns[i] + w1 * history.older.unknowns[i] +
+                              w2 * history.oldest.unknowns[i];
+        model.set_state(guess);
+      }
+    else if (!history.older.unknowns.empty())
+      model.predict(history.older, h / history.dt_older);
+    SolveReport report = advance(t_now, h, motion);
+    if (!report.converged && !history.older.unknowns.empty())
+      {
+        model.set_state(state0);
+        motion = motion0;
+        report = advance(t_now, h, motion);
+      }
+    return report;
+  }
+
+  // A converged step to t_next: its internal variables accepted, and its
+  // electrical work and dissipation added to the energy budget.
+  void TimeStepper::accept_step(const double t_next)
+  {
+    const double step_dissipation = model.step_dissipation();
+    model.accept_time_step();
+    model.set_time_step(0., settings.scheme);
+    model.set_inertia(InertiaStep());
+    const EnergyBudget budget1 = model.energy_budget();
+    const auto         phi0 = voltages_at(t_now), phi1 = voltages_at(t_next);
+    for (unsigned int k = 0; k < budget1.charge.size(); ++k)
+      energy.work += 0.5 * (phi0[k] + phi1[k]) * (budget1.charge[k] - energy.last.charge[k]);
+    energy.dissipated += step_dissipation;
+    energy.last = budget1;
+  }
+
+  // Loss of tension inside the step of length h from ends.state0 (where s2_min
+  // is s2_start >= 0) to ends.state1 (s2_end < 0): its time by a bracketed
+  // root in the fraction of the step, each trial a step from the start,
+  // reported as a step of its own. Leaves the model at the best trial.
+  void TimeStepper::locate_onset(const StepEnds &ends, const double h, const double s2_start,
+                                 const double s2_end)
+  {
+    double       best_f = s2_end, best_theta = 1.;
+    ModelState   best_state  = ends.state1;
+    InertiaState best_motion = ends.motion1;
+    const auto   s2          = [&](const double theta) {
+      model.set_state(ends.state0);
+      motion = ends.motion0;
+      if (!advance(t_now, theta * h, motion).converged)
+        return nan;
+      model.accept_time_step();
+      model.set_time_step(0., settings.scheme);
+      model.set_inertia(InertiaStep());
+      const double f = model.hoop_stresses().s2_min;
+      if (std::abs(f) < std::abs(best_f))
+        {
+          best_f      = f;
+          best_theta  = theta;
+          best_state  = model.state();
+          best_motion = motion;
+        }
+      return f;
+    };
+    BracketedRootSettings root;
+    root.x_tolerance = 1e-9 * settings.max_step / h;
+    find_bracketed_root(s2, 0., s2_start, 1., s2_end, root);
+    model.set_state(best_state);
+    motion                 = best_motion;
+    const double t_onset   = t_now + best_theta * h;
+    time_columns->time     = t_onset;
+    time_columns->velocity = motion.v;
+    time_columns->work = time_columns->stored_change = time_columns->dissipated = nan;
+    const StepSummary at_onset = evaluate(t_onset);
+    result.onset =
+      {true, voltages_at(t_onset), scene.prestretch * at_onset.s2_min_radius, t_onset};
+    if (on_onset)
+      on_onset(result.onset);
+    wants_fields = true;
+    report(at_onset, 0);
+  }
+
+  std::string TimeStepper::no_equilibrium_message(const double t_next,
+                                                  const unsigned int cutbacks,
+                                                  const std::string &why) const
+  {
+    std::ostringstream m;
+    m << "time " << format_number(t_now, 10) << " s (voltages "
+      << format_kV(voltages_at(t_now), 8) << "): no equilibrium found for the step to "
+      << format_number(t_next, 10) << " s after " << cutbacks
+      << " cut-backs of the time step: " << why;
+    return m.str();
+  }
+
+  // One step from t_now towards @p breakpoint, accepted (true, the model and
+  // t_now at its end) or cut back (true, nothing changed); false if the run
+  // ends here (the message in the result).
+  bool TimeStepper::take_step(StepController &control, const double breakpoint,
+                              StepSummary &previous)
+  {
+    const double to_go  = breakpoint - t_now;
+    const double step   = control.step_towards(to_go);
+    const double t_next = step == to_go ? breakpoint : t_now + step;
+    const double h      = t_next - t_now;
+    if (!(h > 0.))
+      {
+        result.message = "time " + format_number(t_now, 12) +
+                         " s: the time step is below the resolution of t";
+        return false;
+      }
+    StepEnds ends;
+    ends.state0             = model.state();
+    ends.motion0            = motion;
+    const SolveReport solved = attempt_step(ends.state0, ends.motion0, h);
+    if (!solved.converged)
+      {
+        model.set_state(ends.state0);
+        motion = ends.motion0;
+        if (control.reject(h))
+          return true;
+        result.message = no_equilibrium_message(t_next, control.cutbacks(), solved.message);
+        return false;
+      }
+
+    const double volume_mass = settings.inertia ? water_column_mass(ends.motion0) : 0.;
+    accept_step(t_next);
+    ends.state1  = model.state();
+    ends.motion1 = motion;
+    set_columns(t_next, volume_mass);
+    StepSummary current = evaluate(t_next);
+    if (!result.onset.found && previous.s2_min >= 0. && current.s2_min < 0.)
+      {
+        locate_onset(ends, h, previous.s2_min, current.s2_min);
+        model.set_state(ends.state1);
+        motion = ends.motion1;
+        set_columns(t_next, volume_mass);
+        current = evaluate(t_next);
+      }
+
+    history.oldest    = std::move(history.older);
+    history.dt_oldest = history.dt_older;
+    history.older     = std::move(ends.state0);
+    history.dt_older  = h;
+    t_now             = t_next;
+    wants_fields      = t_now == breakpoint || t_now >= next_fields_time - 1e-9 * h;
+    if (wants_fields && settings.fields_interval > 0.)
+      next_fields_time = settings.fields_interval *
+                         (std::floor(t_now / settings.fields_interval + 1e-9) + 1.);
+    report(current, solved.iterations);
+    previous = current;
+    control.accept(h, solved.iterations);
+    return true;
+  }
+
+  // Steps of at most Time/Max step, cut back to half the step that failed
+  // and doubled from the step taken after an easy one.
+  StepControlSettings TimeStepper::step_control() const
+  {
+    StepControlSettings s;
+    s.max_step     = settings.max_step;
+    s.min_step     = settings.min_step;
+    s.max_cutbacks = settings.max_cutbacks;
+    s.after_reject = StepBase::attempted;
+    s.after_accept = StepBase::attempted;
+    return s;
+  }
+
+  RunResult TimeStepper::run()
+  {
+    result = RunResult();
+    if (!run_quasi_static())
+      return result;
+    StepSummary    previous = start_time_stage();
+    const double   t_end    = settings.waveform.end_time();
+    StepController control(step_control(), settings.max_step);
     while (t_now < t_end * (1. - 1e-14) - 1e-14)
       {
-        // Land on the next breakpoint, and never leave a sliver of a step
-        // before it: with less than one and a half steps to go, take halves.
+        // Land on the next breakpoint of the waveform.
         const double breakpoint =
           std::min(t_now < 0. ? 0. : settings.waveform.next_breakpoint(t_now), t_end);
-        const double to_go  = breakpoint - t_now;
-        const double t_next = to_go <= dt * (1. + 1e-6) ? breakpoint :
-                              to_go < 1.5 * dt          ? t_now + 0.5 * to_go :
-                                                          t_now + dt;
-        const double h          = t_next - t_now;
-        if (!(h > 0.))
-          {
-            result.message = "time " + format_number(t_now, 12) +
-                             " s: the time step is below the resolution of t";
-            return result;
-          }
-        const ModelState   state0  = model.state();
-        const InertiaState motion0 = motion;
-        if (!oldest.unknowns.empty())
-          {
-            // Quadratic extrapolation through the last three states, at
-            // times -dt_older - dt_oldest, -dt_older, 0, to h.
-            const double t2 = -dt_older - dt_oldest, t1 = -dt_older;
-            const double w2 = (h - t1) * h / ((t2 - t1) * t2);
-            const double w1 = (h - t2) * h / ((t1 - t2) * t1);
-            const double w0 = 1. - w1 - w2;
-            ModelState guess = state0;
-            for (std::size_t i = 0; i < guess.unknowns.size(); ++i)
-              guess.unknowns[i] = w0 * state0.unknowns[i] + w1 * older.unknowns[i] +
-                                  w2 * oldest.unknowns[i];
-            model.set_state(guess);
-          }
-        else if (!older.unknowns.empty())
-          model.predict(older, h / dt_older);
-        SolveReport report1 = advance(t_now, h, motion);
-        if (!report1.converged && !older.unknowns.empty())
-          {
-            model.set_state(state0);
-            motion  = motion0;
-            report1 = advance(t_now, h, motion);
-          }
-        if (!report1.converged)
-          {
-            model.set_state(state0);
-            motion = motion0;
-            dt     = 0.5 * h;
-            if (++cutbacks > settings.max_cutbacks || dt < settings.min_step)
-              {
-                std::ostringstream m;
-                m << "time " << format_number(t_now, 10) << " s (voltages "
-                  << format_kV(voltages_at(t_now), 8) << "): no equilibrium found for the step to "
-                  << format_number(t_next, 10) << " s after " << cutbacks
-                  << " cut-backs of the time step: " << report1.message;
-                result.message = m.str();
-                return result;
-              }
-            continue;
-          }
-
-        // Accept the step: internal variables, energy budget.
-        const double volume_mass =
-          settings.inertia && settings.water_density > 0. ?
-            settings.water_density *
-              std::max((settings.water_volume - motion0.V) / settings.tube_area, 0.) /
-              settings.tube_area :
-            0.;
-        const double step_dissipation = model.step_dissipation();
-        model.accept_time_step();
-        model.set_time_step(0., settings.scheme);
-        model.set_inertia(InertiaStep());
-        const EnergyBudget budget1 = model.energy_budget();
-        const auto         phi0 = voltages_at(t_now), phi1 = voltages_at(t_next);
-        for (unsigned int k = 0; k < budget1.charge.size(); ++k)
-          work += 0.5 * (phi0[k] + phi1[k]) * (budget1.charge[k] - budget.charge[k]);
-        dissipated += step_dissipation;
-        budget = budget1;
-
-        const ModelState   state1  = model.state();
-        const InertiaState motion1 = motion;
-        set_columns(t_next, volume_mass);
-        StepSummary current = evaluate(t_next);
-
-        // Loss of tension inside the step: its time by a bracketed root in
-        // the fraction of the step, each trial a step from the start.
-        if (!result.onset.found && previous.s2_min >= 0. && current.s2_min < 0.)
-          {
-            double     best_f = current.s2_min, best_theta = 1.;
-            ModelState best_state = state1;
-            InertiaState best_motion = motion1;
-            const auto s2 = [&](const double theta) {
-              model.set_state(state0);
-              motion = motion0;
-              if (!advance(t_now, theta * h, motion).converged)
-                return nan;
-              model.accept_time_step();
-              model.set_time_step(0., settings.scheme);
-              model.set_inertia(InertiaStep());
-              const double f = model.hoop_stresses().s2_min;
-              if (std::abs(f) < std::abs(best_f))
-                {
-                  best_f      = f;
-                  best_theta  = theta;
-                  best_state  = model.state();
-                  best_motion = motion;
-                }
-              return f;
-            };
-            BracketedRootSettings root;
-            root.x_tolerance = 1e-9 * settings.max_step / h;
-            find_bracketed_root(s2, 0., previous.s2_min, 1., current.s2_min, root);
-            model.set_state(best_state);
-            motion                 = best_motion;
-            const double t_onset   = t_now + best_theta * h;
-            time_columns->time     = t_onset;
-            time_columns->velocity = motion.v;
-            time_columns->work = time_columns->stored_change = time_columns->dissipated = nan;
-            const StepSummary at_onset = evaluate(t_onset);
-            result.onset = {true, voltages_at(t_onset),
-                            scene.prestretch * at_onset.s2_min_radius, t_onset};
-            if (on_onset)
-              on_onset(result.onset);
-            wants_fields = true;
-            report(at_onset, 0);
-            model.set_state(state1);
-            motion = motion1;
-            set_columns(t_next, volume_mass);
-            current = evaluate(t_next);
-          }
-
-        oldest    = std::move(older);
-        dt_oldest = dt_older;
-        older     = state0;
-        dt_older  = h;
-        t_now    = t_next;
-        wants_fields = t_now == breakpoint || t_now >= next_fields_time - 1e-9 * h;
-        if (wants_fields && settings.fields_interval > 0.)
-          next_fields_time = settings.fields_interval * (std::floor(t_now / settings.fields_interval + 1e-9) + 1.);
-        report(current, report1.iterations);
-        previous = current;
-        cutbacks = 0;
-        if (report1.iterations <= 4)
-          dt = std::min(2. * h, settings.max_step);
-        else
-          dt = h;
+        if (!take_step(control, breakpoint, previous))
+          return result;
       }
     result.completed = true;
     return result;

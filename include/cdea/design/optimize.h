@@ -126,6 +126,8 @@ namespace cdea
     LoadState        load_of(const Layout &layout, bool loaded) const;
     bool             solve(MembraneModel &m, const LoadState &load, const ModelState &guess);
     bool             continue_to(const Layout &target);
+    bool             step_to(const std::vector<double> &from, const std::vector<double> &to,
+                             double next);
     LayoutEvaluation result() const;
   };
 

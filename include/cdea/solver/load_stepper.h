@@ -3,8 +3,9 @@
 //   0  pre-stretch: the unstretched film is stretched to lam_pre (homogeneous);
 //   1  dead load:   the mass on the disk is ramped from 0 to m;
 //   2  voltage:     the ring voltages follow the VoltagePath, t in [0, n_segments].
-// Increments adapt: a failed Newton solve halves the increment (restarting from
-// the last converged state), a fast one lets it grow back to its maximum. The
+// Increments adapt (StepController, numerics/step_control.h): a failed Newton
+// solve halves the increment (restarting from the last converged state), a
+// fast one lets it grow back to its maximum. The
 // voltage stage can instead be followed by pseudo-arclength continuation
 // (through folds, every limit point located) when the model offers it.
 // After every converged step of stages 1 and 2 the registered postprocessors
@@ -18,6 +19,7 @@
 
 #include <cdea/model/scene.h>
 #include <cdea/model/equilibrium_model.h>
+#include <cdea/numerics/step_control.h>
 #include <cdea/solver/postprocessors.h>
 
 #include <functional>
@@ -113,8 +115,34 @@ namespace cdea
     RunResult                         result;
     std::shared_ptr<const StepFields> reported_fields;
 
-    bool      run_stage(Stage stage, double t_end);
-    bool      run_arc_length(double t_end);
+    /// The arc-length path of the voltage stage (load_stepper.cc).
+    struct ArcPath;
+    /// How a step of the arc length left the path: open (go on), complete
+    /// (followed as far as asked) or incomplete (the run ends early).
+    enum class PathEnd
+    {
+      open,
+      complete,
+      incomplete
+    };
+
+    bool           run_stage(Stage stage, double t_end);
+    StepController stage_controller(Stage stage, double t_end) const;
+    void           set_min_increment(StepController &control, Stage stage, double t) const;
+    /// A solve from the converged @p state0 at t to t_next, with the
+    /// predictor through @p previous_state (at previous_t) if it is set.
+    SolveReport    solve_step(Stage stage, double t, double t_next, const ModelState &state0,
+                              const ModelState &previous_state, double previous_t);
+    std::string    no_equilibrium_message(Stage stage, double t, double t_next,
+                                          unsigned int cutbacks, const std::string &why) const;
+
+    bool           run_arc_length(double t_end);
+    StepController arc_length_controller() const;
+    PathEnd        land_on_path_end(ArcPath &path, double t_end);
+    PathEnd        advance_arc(ArcPath &path, double ds);
+    void           report_limit_point(ArcPath &path, double ds);
+    bool           stop_arc_length(const ArcPath &path, const std::string &why);
+
     Evaluated evaluate(Stage stage, double t);
     void      report(const Evaluated &state, unsigned int iterations);
 

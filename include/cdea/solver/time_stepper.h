@@ -11,8 +11,9 @@
 //     equilibrium with the internal variables' update (backward Euler or the
 //     trapezoidal rule) and, if on, the Newmark inertia of the disk (and the
 //     pump's water column), halving the step where Newton fails and growing
-//     it back after easy steps. A converged step's internal variables are
-//     accepted and the disk's velocity and acceleration updated:
+//     it back after easy steps (StepController, numerics/step_control.h). A
+//     converged step's internal variables are accepted and the disk's
+//     velocity and acceleration updated:
 //       a1 = (z1 - z_pred) / (beta dt^2),  v1 = v0 + dt ((1 - gamma) a0 + gamma a1).
 //
 // Every converged step goes through the same postprocessors as the
@@ -22,6 +23,7 @@
 // step's fraction), reported as a step of its own.
 
 #include <cdea/model/scene.h>
+#include <cdea/numerics/step_control.h>
 #include <cdea/solver/load_stepper.h>
 #include <cdea/solver/postprocessors.h>
 #include <cdea/model/transient_model.h>
@@ -98,21 +100,55 @@ namespace cdea
     class TimeColumns;
     TimeColumns *time_columns = nullptr;
 
+    /// The energy budget since the start of the time integration.
+    struct EnergyAccount
+    {
+      EnergyBudget last;              ///< at the last accepted step
+      double       stored_start = 0.; ///< stored energy at the start
+      double       work = 0., dissipated = 0.;
+    };
+    /// The unknowns of the last two accepted steps' starts, for the predictor.
+    struct History
+    {
+      ModelState older, oldest;
+      double     dt_older = 0., dt_oldest = 0.;
+    };
+    /// A step's accepted start and end.
+    struct StepEnds
+    {
+      ModelState   state0, state1;
+      InertiaState motion0, motion1;
+    };
+
     LoadStepper                      *quasi_static_stepper = nullptr;
     std::shared_ptr<const StepFields> reported_fields;
     RunResult                         result;
     bool                              wants_fields = false;
     double                            t_now = 0.;
+    double                            next_fields_time = 0.;
     InertiaState                      motion;
+    EnergyAccount                     energy;
+    History                           history;
 
     /// The static stability eigenvalue in the time stage: without inertia only.
     bool time_stage_stability() const { return quasi_static.stability_check && !settings.inertia; }
     LoadState           load_at(double t) const;
     std::vector<double> voltages_at(double t) const;
     bool                run_quasi_static();
+    StepSummary         start_time_stage();
+    StepControlSettings step_control() const;
+    bool        take_step(StepController &control, double breakpoint, StepSummary &previous);
+    SolveReport attempt_step(const ModelState &state0, const InertiaState &motion0, double h);
     /// One implicit step from the accepted state (model, motion) at t to
     /// t + dt; on success the new state is accepted and motion updated.
     SolveReport advance(double t, double dt, InertiaState &state);
+    void        accept_step(double t_next);
+    void        locate_onset(const StepEnds &ends, double h, double s2_start, double s2_end);
+    std::string no_equilibrium_message(double t_next, unsigned int cutbacks,
+                                       const std::string &why) const;
+    double      water_column_mass(const InertiaState &m) const;
+    double      kinetic_energy(double volume_mass) const;
+    void        set_columns(double t, double volume_mass);
     void        report(const StepSummary &summary, unsigned int iterations);
     StepSummary evaluate(double t);
   };

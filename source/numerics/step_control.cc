@@ -1,0 +1,86 @@
+#include <cdea/numerics/step_control.h>
+
+#include <algorithm>
+
+namespace cdea
+{
+  std::string to_string(const StepStop reason)
+  {
+    switch (reason)
+      {
+        case StepStop::none:
+          return "not stopped";
+        case StepStop::below_min_step:
+          return "the step fell below its minimum";
+        case StepStop::too_many_cutbacks:
+          return "too many cut-backs of the step";
+      }
+    return "unknown";
+  }
+
+  StepController::StepController(const StepControlSettings &settings, const double initial_step)
+    : settings(settings)
+    , step_(initial_step)
+  {}
+
+  void StepController::set_max_step(const double max_step) { settings.max_step = max_step; }
+
+  void StepController::set_min_step(const double min_step, const double scale)
+  {
+    settings.min_step = min_step;
+    min_step_scale    = scale;
+  }
+
+  double StepController::step_towards(const double remaining) const
+  {
+    return remaining <= step_ * (1. + 1e-6) ? remaining :
+           remaining < 1.5 * step_          ? 0.5 * remaining :
+                                              step_;
+  }
+
+  double StepController::base(const StepBase which, const double attempted) const
+  {
+    return which == StepBase::attempted ? attempted : step_;
+  }
+
+  StepStop StepController::stop_after(const double next_step, const unsigned int cutbacks) const
+  {
+    if (next_step * min_step_scale < settings.min_step)
+      return StepStop::below_min_step;
+    if (cutbacks > settings.max_cutbacks)
+      return StepStop::too_many_cutbacks;
+    return StepStop::none;
+  }
+
+  bool StepController::last_attempt(const double attempted) const
+  {
+    const double next = settings.cut_back * base(settings.after_reject, attempted);
+    return stop_after(next, cutbacks_ + 1) != StepStop::none;
+  }
+
+  bool StepController::reject(const double attempted)
+  {
+    return reject_with_factor(attempted, settings.cut_back);
+  }
+
+  bool StepController::reject_with_factor(const double attempted, const double factor)
+  {
+    step_   = factor * base(settings.after_reject, attempted);
+    reason_ = stop_after(step_, ++cutbacks_);
+    return reason_ == StepStop::none;
+  }
+
+  void StepController::accept(const double attempted, const unsigned int iterations)
+  {
+    accept_with_factor(attempted, iterations <= settings.easy_iterations ? settings.growth : 1.);
+  }
+
+  void StepController::accept_with_factor(const double attempted, const double factor)
+  {
+    const double from = base(settings.after_accept, attempted);
+    step_             = factor > 1. ? std::min(factor * from, settings.max_step) : factor * from;
+    reason_           = StepStop::none;
+    if (!settings.cutbacks_in_total)
+      cutbacks_ = 0;
+  }
+} // namespace cdea

@@ -1,0 +1,241 @@
+// The step controller's rules (numerics/step_control.h): halving on a
+// failure, growth after an easy step, the cap (also moved along the path),
+// the minimum step (also in another unit), the maximum number of cut-backs
+// (consecutive or in total), the reason for giving up, steps computed from
+// the attempted step, factors from the caller, and the landing on a
+// breakpoint.
+
+#include <cdea/numerics/step_control.h>
+
+#include "check.h"
+
+#include <algorithm>
+#include <cstdint>
+
+using namespace cdea;
+using namespace cdea_test;
+
+namespace
+{
+  /// A reproducible sequence in [0, 1) (a linear congruential generator).
+  class Sequence
+  {
+  public:
+    double next()
+    {
+      state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+      return double(state >> 11) / 9007199254740992.;
+    }
+
+  private:
+    std::uint64_t state = 12345;
+  };
+
+  void halving_and_growth()
+  {
+    std::cout << "Halving and growth\n";
+    StepController c(StepControlSettings(), 1.);
+    check(c.step() == 1. && c.cutbacks() == 0, "the initial step, no cut-backs");
+    check(c.reject(1.) && c.step() == 0.5 && c.cutbacks() == 1, "a failure halves the step");
+    check(c.reject(0.5) && c.step() == 0.25 && c.cutbacks() == 2, "and again");
+    c.accept(0.25, 4);
+    check(c.step() == 0.5 && c.cutbacks() == 0,
+          "4 iterations: the step doubles, the cut-backs are forgotten");
+    c.accept(0.5, 5);
+    check(c.step() == 0.5, "5 iterations: the step stays");
+    check(c.reason() == StepStop::none, "no reason while going on");
+  }
+
+  void cap()
+  {
+    std::cout << "Cap\n";
+    StepControlSettings s;
+    s.max_step = 0.75;
+    StepController c(s, 0.5);
+    c.accept(0.5, 1);
+    check(c.step() == 0.75, "growth stops at the maximum step");
+    c.set_max_step(2.);
+    c.accept(0.75, 1);
+    check(c.step() == 1.5, "a cap moved along the path");
+    c.set_max_step(1.);
+    c.accept(1.5, 9);
+    check(c.step() == 1.5, "a step above a lowered cap is not shortened unless it grows");
+    c.accept(1.5, 1);
+    check(c.step() == 1., "growth is capped again");
+  }
+
+  void minimum()
+  {
+    std::cout << "Minimum step\n";
+    StepControlSettings s;
+    s.min_step = 0.2;
+    StepController c(s, 1.);
+    check(!c.last_attempt(1.), "a failure at 1 would still go on");
+    check(c.reject(1.) && c.step() == 0.5, "0.5 is above the minimum");
+    check(c.reject(0.5) && c.step() == 0.25, "0.25 is above the minimum");
+    check(c.last_attempt(0.25), "a failure at 0.25 would give up");
+    check(!c.reject(0.25) && c.reason() == StepStop::below_min_step,
+          "below the minimum the controller gives up, and says why");
+
+    // The minimum as a voltage increment for a path parameter t with
+    // dV/dt = 1000 V: 1e-3 V is t = 1e-6.
+    StepController v(StepControlSettings(), 4e-6);
+    v.set_min_step(1e-3, 1000.);
+    check(v.reject(4e-6) && v.step() == 2e-6, "2e-6 in t is 2 mV: above 1 mV");
+    check(v.reject(2e-6), "1e-6 in t is 1 mV: not below 1 mV");
+    check(!v.reject(1e-6) && v.reason() == StepStop::below_min_step,
+          "5e-7 in t is 0.5 mV: below 1 mV");
+  }
+
+  void cutbacks()
+  {
+    std::cout << "Maximum cut-backs\n";
+    StepControlSettings s;
+    s.max_cutbacks = 2;
+    StepController c(s, 1.);
+    check(c.reject(1.) && c.reject(0.5), "two cut-backs are allowed");
+    check(c.last_attempt(0.25), "a third would give up");
+    check(!c.reject(0.25) && c.reason() == StepStop::too_many_cutbacks && c.cutbacks() == 3,
+          "the third gives up, and says why");
+
+    StepController consecutive(s, 1.);
+    consecutive.reject(1.);
+    consecutive.reject(0.5);
+    consecutive.accept(0.25, 9);
+    check(consecutive.reject(0.25) && consecutive.reject(0.125),
+          "consecutive: an accepted step starts the count again");
+
+    s.cutbacks_in_total = true;
+    StepController total(s, 1.);
+    total.reject(1.);
+    total.accept(0.5, 1);
+    check(total.reject(1.) && total.cutbacks() == 2, "in total: the count goes on");
+    check(!total.reject(0.5) && total.reason() == StepStop::too_many_cutbacks,
+          "in total: the third cut-back on the path gives up");
+    check(to_string(StepStop::below_min_step) != to_string(StepStop::too_many_cutbacks) &&
+            !to_string(StepStop::below_min_step).empty(),
+          "the reasons have distinct descriptions");
+  }
+
+  void attempted_base()
+  {
+    std::cout << "Steps from the attempted step\n";
+    StepControlSettings s;
+    s.after_reject = StepBase::attempted;
+    s.after_accept = StepBase::attempted;
+    s.max_step     = 10.;
+    StepController c(s, 1.);
+    check(c.reject(0.3) && c.step() == 0.15, "a failed landing of 0.3 halves 0.3");
+    c.accept(0.1, 9);
+    check(c.step() == 0.1, "a hard step of 0.1: the step becomes 0.1");
+    c.accept(0.1, 2);
+    check(c.step() == 0.2, "an easy one doubles it");
+
+    s.after_reject = StepBase::proposed;
+    StepController p(s, 1.);
+    check(p.reject(0.3) && p.step() == 0.5, "from the proposed step: 0.3 attempted, 1 halved");
+  }
+
+  void factors()
+  {
+    std::cout << "Factors from the caller\n";
+    StepControlSettings s;
+    s.max_step     = 3.;
+    s.min_step     = 0.05;
+    s.max_cutbacks = 5;
+    StepController c(s, 1.);
+    check(c.reject_with_factor(1., 0.1) && c.step() == 0.1, "a cut-back by 0.1");
+    check(!c.reject_with_factor(0.1, 0.1) && c.reason() == StepStop::below_min_step,
+          "the same minimum applies");
+    c.accept_with_factor(0.01, 500.);
+    check(c.step() == 3., "growth by 500 from 0.01, capped at 3");
+    c.accept_with_factor(3., 0.8);
+    check(c.step() == 3. * 0.8, "an accepted step may shorten the next (0.8)");
+    s.growth = 1.5;
+    StepController g(s, 1.);
+    g.accept(1., 0);
+    check(g.step() == 1.5, "the growth factor of the settings (1.5)");
+  }
+
+  void landing()
+  {
+    std::cout << "Landing on a breakpoint\n";
+    const StepController c(StepControlSettings(), 1.);
+    check(c.step_towards(0.3) == 0.3, "within a step: all of it");
+    check(c.step_towards(1. + 5e-7) == 1. + 5e-7, "within a step and 1e-6: all of it");
+    check(c.step_towards(1.2) == 0.6, "within one and a half steps: half of it");
+    check(c.step_towards(1.5) == 1. && c.step_towards(5.) == 1., "farther: one step");
+  }
+
+  // The rules the five paths used before they shared the controller, as
+  // written there, against the controller on random attempts.
+  void same_sequences()
+  {
+    std::cout << "The former rules, step for step\n";
+    Sequence     random;
+    bool         same = true;
+    double       dt = 0.25, cap = 0.25;
+    StepControlSettings load;
+    load.max_cutbacks = 1000;
+    StepController c(load, dt);
+    for (int k = 0; k < 2000; ++k)
+      {
+        const bool     failed     = random.next() < 0.4;
+        const unsigned iterations = unsigned(8 * random.next());
+        cap                       = 0.1 + random.next();
+        if (failed)
+          {
+            dt *= 0.5;
+            c.reject(c.step());
+          }
+        else
+          {
+            if (iterations <= 4)
+              dt = std::min(2. * dt, cap);
+            c.set_max_step(cap);
+            c.accept(c.step(), iterations);
+          }
+        same = same && c.step() == dt;
+      }
+    check(same, "load stepping: halve and double the increment, a moving cap");
+
+    StepControlSettings time;
+    time.after_reject = time.after_accept = StepBase::attempted;
+    time.max_step                         = 0.01;
+    time.max_cutbacks                     = 1000;
+    StepController t(time, 0.01);
+    dt   = 0.01;
+    same = true;
+    for (int k = 0; k < 2000; ++k)
+      {
+        const double   h          = dt * (random.next() < 0.3 ? random.next() : 1.);
+        const bool     failed     = random.next() < 0.4;
+        const unsigned iterations = unsigned(8 * random.next());
+        if (failed)
+          {
+            dt = 0.5 * h;
+            t.reject(h);
+          }
+        else
+          {
+            dt = iterations <= 4 ? std::min(2. * h, 0.01) : h;
+            t.accept(h, iterations);
+          }
+        same = same && t.step() == dt;
+      }
+    check(same, "time stepping: halve and double the step taken");
+  }
+} // namespace
+
+int main()
+{
+  halving_and_growth();
+  cap();
+  minimum();
+  cutbacks();
+  attempted_base();
+  factors();
+  landing();
+  same_sequences();
+  return finish();
+}
