@@ -123,7 +123,6 @@ namespace cdea
 
     LoadStepper stepper(input.scene, *model, stepping_settings(p));
     add_run_postprocessors(stepper, p, input.scene);
-    record.columns  = stepper.columns();
     stepper.on_step = [&](const StepSummary &s) {
       record.steps.push_back(s);
       record.fields.push_back(stepper.step_fields());
@@ -155,10 +154,8 @@ namespace cdea
     root_attributes.insert(root_attributes.end(), record.root_attributes.begin(),
                            record.root_attributes.end());
     ResultsFile file(path, record.parameters, record.n_rings, root_attributes);
-    for (const SummaryColumn &c : record.columns)
-      file.describe_column(c.name, c.unit, c.description);
     for (std::size_t i = 0; i < record.steps.size(); ++i)
-      file.append(record.steps[i], record.fields[i], record.steps[i].columns);
+      file.append(record.steps[i], record.fields[i]);
     file.write_onset(record.result.onset);
     if (!record.time_run)
       write_summary_attributes(file,

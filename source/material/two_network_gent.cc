@@ -1,4 +1,5 @@
 #include <cdea/material/gent_law.h>
+#include <cdea/material/law_factory.h>
 #include <cdea/material/two_network_gent.h>
 
 #include <Eigen/Dense>
@@ -77,18 +78,15 @@ namespace cdea
 
   TwoNetworkGentLaw::TwoNetworkGentLaw(const MaterialConstants &network_a,
                                        const ViscousNetwork    &network_b)
-    : a(network_a)
+    : MembraneLaw({{"xi1", "1", "viscous (dashpot) stretch xi1", RelaxedValue::meridian_stretch},
+                   {"xi2", "1", "viscous (dashpot) stretch xi2", RelaxedValue::hoop_stretch},
+                   {"q1", "1/s", "rate of ln xi1 at the end of the step", RelaxedValue::zero, false},
+                   {"q2", "1/s", "rate of ln xi2 at the end of the step", RelaxedValue::zero, false}})
+    , a(network_a)
     , b(network_b)
     , spring_b{network_b.shear_modulus, network_b.jlim, network_a.permittivity,
                network_a.thickness}
   {}
-
-  void TwoNetworkGentLaw::relaxed_internal_variables(const LawInput &in, double *values) const
-  {
-    values[0] = in.l1;
-    values[1] = in.l2;
-    values[2] = values[3] = 0.;
-  }
 
   bool TwoNetworkGentLaw::evaluate(const LawInput &in, const InternalStep &step,
                                    const unsigned int request, LawResponse &out) const
@@ -217,3 +215,18 @@ namespace cdea
     return de.dot(mobility_inverse(b.shear_modulus * b.relaxation_time) * de) / step.dt;
   }
 } // namespace cdea
+
+namespace
+{
+  /// Material/Model = viscoelastic: network A is the film's Gent law;
+  /// network B's constants are entries of subsection Material.
+  std::shared_ptr<const cdea::MembraneLaw> create_two_network_law(const cdea::LawSettings &settings)
+  {
+    const cdea::ViscousNetwork b{settings.constant("Network B shear modulus (kPa)") * 1e3,
+                                 settings.constant("Network B Jlim"),
+                                 settings.constant("Relaxation time (s)")};
+    return std::make_shared<cdea::TwoNetworkGentLaw>(settings.material, b);
+  }
+} // namespace
+
+CDEA_REGISTER_MEMBRANE_LAW(TwoNetworkGentLaw, "viscoelastic", create_two_network_law)

@@ -50,7 +50,4 @@ namespace cdea
   int recover(const std::string &results_file);
 
   std::string usage();
-
-  /// The extra /summary column @p name of a step (NaN if absent).
-  double summary_column(const StepSummary &s, const std::string &name);
 } // namespace cdea

@@ -10,8 +10,8 @@
 
 #include <cdea/input/parameter_input.h>
 #include <cdea/input/parameters.h>
+#include <cdea/model/output_fields.h>
 #include <cdea/model/records.h>
-#include <cdea/output/results_layout.h>
 #include <cdea/model/scene.h>
 #include <cdea/solver/load_stepper.h>
 #include <cdea/solver/time_stepper.h>
@@ -84,8 +84,6 @@ namespace cdea
     std::string  parameters; ///< every parameter (root attribute)
     unsigned int n_rings = 0;
     std::string  results_path; ///< where the command would write the results
-    /// Unit and meaning of the postprocessors' extra /summary columns.
-    std::vector<SummaryColumn> columns;
     std::vector<StepSummary>   steps;  ///< one per converged step
     std::vector<StepFields>    fields; ///< the fields of each step
     /// Completed or why not, onset, limit points, breakdown, counts. A run

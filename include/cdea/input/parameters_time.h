@@ -70,7 +70,8 @@ namespace cdea
   /// throws InputError naming the parameter.
   void validate_time(const Parameters &p);
 
-  /// The material law of the FE model: Gent (elastic) or the two-network law.
+  /// The material law of the FE model that Material/Model names, from the
+  /// factory of material/law_factory.h.
   std::shared_ptr<const MembraneLaw> material_law(const Parameters &p, const Scene &scene);
 
   /// The time stepper's settings (waveform from the last waypoint or the table).
