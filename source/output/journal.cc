@@ -67,6 +67,12 @@ namespace cdea
         u64(s.size());
         bytes += s;
       }
+      void str(const char *s)
+      {
+        const std::size_t n = std::strlen(s);
+        u64(n);
+        bytes.append(s, n);
+      }
       void u64(const std::uint64_t x) { raw(x); }
       void doubles(const std::vector<double> &v)
       {
@@ -392,9 +398,14 @@ namespace cdea
     Encoder out;
     encode_summary(out, summary);
     encode_fields(out, fields);
-    const std::vector<NamedColumn> columns = named_columns(summary, extra_columns);
-    out.u64(columns.size());
-    for (const auto &[name, value] : columns)
+    // As named_columns(): the table's columns in the file's units, then the extra ones.
+    out.u64(summary.columns.size() + extra_columns.size());
+    for (const auto &[column, value] : summary.columns)
+      {
+        out.str(column->name);
+        out.f64(column->in_file_units(value));
+      }
+    for (const auto &[name, value] : extra_columns)
       {
         out.str(name);
         out.f64(value);

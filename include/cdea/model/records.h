@@ -55,6 +55,7 @@ namespace cdea
     std::vector<Entry>::const_iterator begin() const { return entries.begin(); }
     std::vector<Entry>::const_iterator end() const { return entries.end(); }
     bool                               empty() const { return entries.empty(); }
+    std::size_t                        size() const { return entries.size(); }
 
   private:
     std::vector<Entry> entries;
