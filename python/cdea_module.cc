@@ -1,7 +1,7 @@
 // The Python module `cdea` (pybind11): `cdea run` (time runs too), `cdea
 // shoot` and `cdea sweep` in-process (analysis/session.h), their results as numpy
 // arrays with the names and units of the results files
-// (output/results_layout.h for /summary and /steps, sweep_map_content() for
+// (model/output_fields.h for /summary and /steps, sweep_map_content() for
 // the map), written to HDF5 only when asked. Bad input raises ValueError with the command line's message. MPI is
 // not started (only the Trilinos KLU solver starts it, when it needs it).
 // Documented in doc/python.md.
@@ -14,6 +14,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -162,38 +163,16 @@ namespace
     {
       if (summary_cache)
         return summary_cache.cast<py::dict>();
-      const std::size_t                             n       = record.steps.size();
-      const std::vector<StandardColumn>            &columns = standard_summary_columns();
-      std::vector<std::vector<std::vector<double>>> rows(n);
-      for (std::size_t i = 0; i < n; ++i)
-        rows[i] = standard_summary_values(record.steps[i]);
       py::dict summary;
-      for (std::size_t c = 0; c < columns.size(); ++c)
+      for (const OutputField *column : standard_summary_columns())
+        summary[column->name] = standard_column(*column);
+      for (const OutputField *column : postprocessor_columns())
         {
-          const std::size_t width = columns[c].per_ring ? record.n_rings : 1;
           std::vector<double> values;
-          values.reserve(n * width);
-          for (std::size_t i = 0; i < n; ++i)
-            values.insert(values.end(), rows[i][c].begin(), rows[i][c].end());
-          std::vector<py::ssize_t> shape = {py::ssize_t(n)};
-          if (columns[c].per_ring)
-            shape.push_back(py::ssize_t(width));
-          summary[columns[c].name.c_str()] = columns[c].integer ?
-                                               py::object(integer_array(values, shape)) :
-                                               py::object(real_array(values, shape));
+          for (const StepSummary &s : record.steps)
+            values.push_back(s.columns.in_file_units(*column));
+          summary[column->name] = real_array(values, {py::ssize_t(values.size())});
         }
-      std::vector<std::string>                   extra; // in the order they first appear
-      std::map<std::string, std::vector<double>> extra_values;
-      for (std::size_t i = 0; i < n; ++i)
-        for (const auto &[name, value] : record.steps[i].columns)
-          {
-            auto [column, is_new] = extra_values.try_emplace(name, n, std::nan(""));
-            if (is_new)
-              extra.push_back(name);
-            column->second[i] = value;
-          }
-      for (const std::string &name : extra)
-        summary[name.c_str()] = real_array(extra_values[name], {py::ssize_t(n)});
       summary_cache = summary;
       return summary;
     }
@@ -213,17 +192,20 @@ namespace
                               " has no fields: a time run keeps them at the steps its results "
                               "file has a /steps group for (field_steps)");
       py::dict fields;
-      for (const FieldDataset &d : field_datasets())
-        if (d.values)
-          fields[d.name.c_str()] =
-            real_array(scaled(f.*d.values, d.factor), {py::ssize_t((f.*d.values).size())});
-        else
-          fields[d.name.c_str()] = integer_array(std::vector<double>(f.ring.begin(), f.ring.end()),
-                                                 {py::ssize_t(f.ring.size())});
-      // The viscous stretches of a time run, as the file stores them.
-      if (!f.xi1.empty())
-        for (const auto &[name, xi] : {std::pair{"xi1", &f.xi1}, std::pair{"xi2", &f.xi2}})
-          fields[name] = real_array(*xi, {py::ssize_t(xi->size())});
+      for (const StepField &row : step_fields())
+        if (row.in_file)
+          {
+            const std::vector<double> values =
+              scaled(step_field_values(row, f), row.field.factor);
+            const std::vector<py::ssize_t> shape = {py::ssize_t(values.size())};
+            fields[row.field.name] = row.field.storage == Storage::integer ?
+                                       py::object(integer_array(values, shape)) :
+                                       py::object(real_array(values, shape));
+          }
+      // The law's internal variables (the viscous stretches of a time run).
+      for (const InternalField &internal : f.internal)
+        fields[internal.name.c_str()] =
+          real_array(internal.values, {py::ssize_t(internal.values.size())});
       return fields;
     }
 
@@ -251,29 +233,23 @@ namespace
     /// The /summary attributes: onset, limit points, breakdown.
     py::dict attributes() const
     {
-      py::dict attributes;
-      std::vector<SummaryAttribute> all = onset_attributes(record.result.onset, record.n_rings);
-      std::vector<std::vector<SummaryAttribute>> more = {
-        breakdown_attributes(record.result.breakdown)};
-      if (!record.time_run) // a time run's file has no limit points
-        more.push_back(limit_point_attributes(record.result.limit_points, record.n_rings));
-      for (const auto &some : more)
-        all.insert(all.end(), some.begin(), some.end());
-      for (const SummaryAttribute &a : all)
+      py::dict           attributes;
+      const unsigned int run = record.time_run ? time_run : load_path_runs;
+      for (const SummaryAttribute &a :
+           run_attributes(run, record.result.onset, record.result.limit_points,
+                          record.result.breakdown, record.n_rings))
         attributes[a.name.c_str()] = attribute_value(a);
       return attributes;
     }
 
     /// Unit and description of every /summary column.
-    py::dict columns()
+    py::dict columns() const
     {
       py::dict columns;
-      for (const StandardColumn &c : standard_summary_columns())
-        columns[c.name.c_str()] = py::make_tuple(c.unit, c.description);
-      const py::dict present = summary();
-      for (const SummaryColumn &c : record.columns)
-        if (present.contains(c.name))
-          columns[c.name.c_str()] = py::make_tuple(c.unit, c.description);
+      for (const OutputField *c : standard_summary_columns())
+        columns[c->name] = py::make_tuple(c->unit, c->description);
+      for (const OutputField *c : postprocessor_columns())
+        columns[c->name] = py::make_tuple(c->unit, c->description);
       return columns;
     }
 
@@ -287,6 +263,36 @@ namespace
 
   private:
     py::object summary_cache; // the summary dict once built
+
+    /// A standard column over the steps, as the file stores it.
+    py::object standard_column(const OutputField &column) const
+    {
+      const std::size_t   n     = record.steps.size();
+      const std::size_t   width = column.shape == Shape::per_ring ? record.n_rings : 1;
+      std::vector<double> values;
+      values.reserve(n * width);
+      for (const StepSummary &s : record.steps)
+        {
+          const std::vector<double> row = scaled(column.summary_values(s), column.factor);
+          values.insert(values.end(), row.begin(), row.end());
+        }
+      std::vector<py::ssize_t> shape = {py::ssize_t(n)};
+      if (column.shape == Shape::per_ring)
+        shape.push_back(py::ssize_t(width));
+      return column.storage == Storage::integer ? py::object(integer_array(values, shape)) :
+                                                  py::object(real_array(values, shape));
+    }
+
+    /// The postprocessors' columns of the steps, in the order they first appear.
+    std::vector<const OutputField *> postprocessor_columns() const
+    {
+      std::vector<const OutputField *> columns;
+      for (const StepSummary &s : record.steps)
+        for (const auto &entry : s.columns)
+          if (std::find(columns.begin(), columns.end(), entry.first) == columns.end())
+            columns.push_back(entry.first);
+      return columns;
+    }
   };
 
   /// The result of cdea.sweep().

@@ -10,7 +10,7 @@
 #include <cdea/design/optimize.h>
 #include <cdea/input/parameter_input.h>
 #include <cdea/input/parameters.h>
-#include <cdea/output/results_layout.h>
+#include <cdea/model/output_fields.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>

@@ -14,6 +14,7 @@
 
 #include <cdea/fe/membrane_model.h>
 #include <cdea/material/two_network_gent.h>
+#include <cdea/model/output_fields.h>
 #include <cdea/solver/time_stepper.h>
 
 #include "check.h"
@@ -33,13 +34,8 @@ namespace
 {
   const Scene scene = cdea::paper_scene({1., 3.}, {{5.}});
 
-  double column(const StepSummary &s, const std::string &name)
-  {
-    for (const auto &[key, value] : s.columns)
-      if (key == name)
-        return value;
-    return std::numeric_limits<double>::quiet_NaN();
-  }
+  /// A time column of @p s in the file's unit (NaN if absent).
+  double column(const StepSummary &s, const OutputField &c) { return s.columns.in_file_units(c); }
 
   struct EnergyRun
   {
@@ -62,14 +58,14 @@ namespace
     EnergyRun   e;
     double      previous = 0.;
     stepper.on_step      = [&](const StepSummary &summary) {
-      const double d = column(summary, "dissipated_energy_mJ");
+      const double d = column(summary, summary_column::dissipated_energy);
       if (std::isnan(d))
         return;
       e.dissipation_never_negative = e.dissipation_never_negative && d >= previous;
       previous                     = d;
-      e.work                       = column(summary, "electrical_work_mJ");
+      e.work                       = column(summary, summary_column::electrical_work);
       e.peak_work                  = std::max(e.peak_work, std::abs(e.work));
-      e.stored                     = column(summary, "stored_energy_change_mJ");
+      e.stored                     = column(summary, summary_column::stored_energy_change);
       e.dissipated                 = d;
     };
     check(stepper.run().completed, "energy run completes");
@@ -123,7 +119,7 @@ int main()
     std::vector<double> crossings;
     double              t0 = 0., u0 = 0., amplitude = 0.;
     stepper.on_step = [&](const StepSummary &summary) {
-      const double t = column(summary, "time_s");
+      const double t = column(summary, summary_column::waveform_time);
       if (!(t > 2.))
         return;
       const double u = summary.displacement - z_eq;

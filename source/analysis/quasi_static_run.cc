@@ -3,6 +3,7 @@
 #include <cdea/analysis/run_record.h>
 #include <cdea/analysis/run_setup.h>
 #include <cdea/base/format.h>
+#include <cdea/model/output_fields.h>
 #include <cdea/input/solver_settings.h>
 #include <cdea/output/paraview_writer.h>
 #include <cdea/output/results_file.h>
@@ -20,10 +21,8 @@ namespace cdea
 {
   namespace
   {
-    double column(const StepSummary &s, const std::string &name)
-    {
-      return summary_column(s, name);
-    }
+    /// A postprocessor's column of @p s in the file's unit (NaN if absent).
+    double column(const StepSummary &s, const OutputField &c) { return s.columns.in_file_units(c); }
 
     /// "-" for NaN, else fixed-point with @p decimals.
     std::string fixed_or_dash(const double value, const int decimals)
@@ -39,10 +38,7 @@ namespace cdea
         : file(file)
         , stepper(stepper)
         , scene(scene)
-      {
-        for (const SummaryColumn &c : stepper.columns())
-          file.describe_column(c.name, c.unit, c.description);
-      }
+      {}
 
       void header() const
       {
@@ -55,7 +51,7 @@ namespace cdea
 
       void step(const StepSummary &s)
       {
-        file.append(s, stepper.step_fields(), s.columns);
+        file.append(s, stepper.step_fields());
         last = s;
         std::ostringstream v;
         for (const double x : s.voltages)
@@ -67,7 +63,7 @@ namespace cdea
                   << ' ' << std::setw(9) << format_fixed(s.load_factor, 5) << "  " << v.str()
                   << ' ' << std::setw(11) << format_fixed(s.displacement * 1e3, 6) << ' '
                   << std::setw(11) << fixed_or_dash(s.stroke * 1e3, 6) << ' ' << std::setw(11)
-                  << fixed_or_dash(column(s, "volume_change_mm3"), 3) << ' ' << std::setw(11)
+                  << fixed_or_dash(column(s, summary_column::volume_change), 3) << ' ' << std::setw(11)
                   << format_fixed(s.s2_min / scene.material.shear_modulus, 6) << std::setw(6)
                   << (s.wrinkled ? "yes" : "no") << std::setw(7)
                   << (std::isnan(s.min_eigenvalue) ? "-" : s.min_eigenvalue > 0. ? "yes" : "NO")
@@ -205,11 +201,11 @@ namespace cdea
         std::cout << "\nFinal state: voltages " << format_kV(s.voltages) << ", displacement "
                   << std::setprecision(7) << s.displacement * 1e3 << " mm, stroke "
                   << s.stroke * 1e3 << " mm\n";
-        const double       volume_mm3 = column(s, "volume_mm3");
+        const double       volume_mm3 = column(s, summary_column::volume);
         std::ostringstream o;
         o << std::setprecision(7) << "  enclosed volume " << volume_mm3 << " mm^3, change "
-          << column(s, "volume_change_mm3") << " mm^3, level drop "
-          << column(s, "level_drop_mm") << " mm (tube " << p.reservoir.width_mm << " mm x "
+          << column(s, summary_column::volume_change) << " mm^3, level drop "
+          << column(s, summary_column::level_drop) << " mm (tube " << p.reservoir.width_mm << " mm x "
           << p.reservoir.depth_mm << " mm)\n";
         if (p.reservoir.water_load)
           o << "  water: free surface "

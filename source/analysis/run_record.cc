@@ -20,13 +20,6 @@ namespace cdea
            ": " + result.message;
   }
 
-  double summary_column(const StepSummary &s, const std::string &name)
-  {
-    for (const auto &[key, value] : s.columns)
-      if (key == name)
-        return value;
-    return std::numeric_limits<double>::quiet_NaN();
-  }
 
   void write_summary_attributes(ResultsFile &file, const std::vector<SummaryAttribute> &attributes)
   {
@@ -62,10 +55,8 @@ namespace cdea
     root_attributes.insert(root_attributes.end(), record.root_attributes.begin(),
                            record.root_attributes.end());
     ResultsFile file(path, record.parameters, record.n_rings, root_attributes);
-    for (const SummaryColumn &c : record.columns)
-      file.describe_column(c.name, c.unit, c.description);
     for (std::size_t i = 0; i < record.steps.size(); ++i)
-      file.append(record.steps[i], record.fields[i], record.steps[i].columns);
+      file.append(record.steps[i], record.fields[i]);
     file.write_onset(record.result.onset);
     if (!record.time_run)
       write_summary_attributes(file,

@@ -23,7 +23,6 @@ namespace cdea
 
     LoadStepper stepper(input.scene, *model, stepping_settings(p));
     add_run_postprocessors(stepper, p, input.scene);
-    record.columns  = stepper.columns();
     stepper.on_step = [&](const StepSummary &s) {
       record.steps.push_back(s);
       record.fields.push_back(stepper.step_fields());

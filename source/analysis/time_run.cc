@@ -2,6 +2,7 @@
 #include <cdea/analysis/run_setup.h>
 #include <cdea/analysis/time_run.h>
 #include <cdea/base/format.h>
+#include <cdea/model/output_fields.h>
 #include <cdea/input/solver_settings.h>
 #include <cdea/output/results_file.h>
 
@@ -16,10 +17,8 @@ namespace cdea
 {
   namespace
   {
-    double column(const StepSummary &s, const std::string &name)
-    {
-      return summary_column(s, name);
-    }
+    /// A postprocessor's column of @p s in the file's unit (NaN if absent).
+    double column(const StepSummary &s, const OutputField &c) { return s.columns.in_file_units(c); }
 
     /// One cell of the progress table: a blank, then the value right-aligned in
     /// @p width - 1 characters ("-" if it is NaN), so that columns never run
@@ -57,10 +56,9 @@ namespace cdea
 
       int go()
       {
-        if (!output || !output->prepare([&] {
-              for (const SummaryColumn &c : stepper.columns())
-                output->file().describe_column(c.name, c.unit, c.description);
-            }))
+        // A first record before the run, so that an unwritable journal stops
+        // it here (the attributes are those the file starts with).
+        if (!output || !output->prepare([&] { output->file().write_onset(OnsetRecord()); }))
           return exit_input_error;
         print_banner();
         connect();
@@ -119,7 +117,7 @@ namespace cdea
       void connect()
       {
         stepper.on_step = [this](const StepSummary &s) {
-          if (std::isnan(frequency_start) && !std::isnan(column(s, "time_s")))
+          if (std::isnan(frequency_start) && !std::isnan(column(s, summary_column::waveform_time)))
             frequency_start = frequency();
           step(s);
         };
@@ -136,7 +134,7 @@ namespace cdea
       void step(const StepSummary &s)
       {
         ResultsFile &file = output->file();
-        file.append(s, stepper.fields_wanted() ? stepper.step_fields() : StepFields(), s.columns);
+        file.append(s, stepper.fields_wanted() ? stepper.step_fields() : StepFields());
         last = s;
         RunOutput::stop_point();
         std::ostringstream v;
@@ -144,10 +142,10 @@ namespace cdea
           v << cell(x * 1e-3, 3, 7);
         std::cout << std::setw(6) << file.n_steps() - 1 << std::setw(12)
                   << (s.stage == Stage::voltage ? "time" : stage_name(s.stage))
-                  << cell(column(s, "time_s"), 4, 11) << v.str()
+                  << cell(column(s, summary_column::waveform_time), 4, 11) << v.str()
                   << cell(s.displacement * 1e3, 5, 12) << cell(s.stroke * 1e3, 5, 12)
-                  << cell(column(s, "level_drop_mm"), 3, 11)
-                  << cell(column(s, "disk_velocity_mm_per_s"), 2, 11)
+                  << cell(column(s, summary_column::level_drop), 3, 11)
+                  << cell(column(s, summary_column::disk_velocity), 2, 11)
                   << cell(s.s2_min / scene.material.shear_modulus, 4, 11) << ' ' << std::setw(4)
                   << s.newton_iterations << '\n';
         newton_iterations_of_steps += s.newton_iterations;
@@ -159,12 +157,12 @@ namespace cdea
                   << format_kV(last.voltages) << ", displacement "
                   << format_number(last.displacement * 1e3, 8) << " mm, stroke "
                   << number_or_dash(last.stroke * 1e3, 8) << " mm, level drop "
-                  << number_or_dash(column(last, "level_drop_mm"), 6) << " mm\n"
+                  << number_or_dash(column(last, summary_column::level_drop), 6) << " mm\n"
                   << "  energy since t = 0: electrical work "
-                  << number_or_dash(column(last, "electrical_work_mJ"), 6) << " mJ, stored "
-                  << number_or_dash(column(last, "stored_energy_change_mJ"), 6)
+                  << number_or_dash(column(last, summary_column::electrical_work), 6) << " mJ, stored "
+                  << number_or_dash(column(last, summary_column::stored_energy_change), 6)
                   << " mJ, dissipated "
-                  << number_or_dash(column(last, "dissipated_energy_mJ"), 6) << " mJ\n"
+                  << number_or_dash(column(last, summary_column::dissipated_energy), 6) << " mJ\n"
                   << "  disk's natural frequency sqrt(k/m) / 2 pi: "
                   << number_or_dash(frequency_start, 4) << " Hz at the start, "
                   << number_or_dash(frequency(), 4) << " Hz at the end\n"
@@ -202,7 +200,6 @@ namespace cdea
     record.n_rings         = input.scene.n_rings();
     record.parameters      = input.text;
     record.results_path    = input.parameters.results_path();
-    record.columns         = stepper.columns();
     stepper.on_step        = [&](const StepSummary &s) {
       record.steps.push_back(s);
       record.fields.push_back(stepper.fields_wanted() ? stepper.step_fields() : StepFields());

@@ -180,7 +180,7 @@ namespace cdea
         const Command *command = find_command(words[0]);
         if (!command)
           return usage_error(words[0]);
-        Invocation invocation{*command, {}, mpi::rank() == 0};
+        Invocation invocation{*command, {}, mpi::rank() == 0, {}, {}, {}, {}};
         try
           {
             split_words(words, invocation);

@@ -4,7 +4,7 @@
 #include <cdea/base/format.h>
 #include <cdea/design/optimize.h>
 #include <cdea/output/hdf5_writer.h>
-#include <cdea/output/results_layout.h>
+#include <cdea/model/output_fields.h>
 
 #include <algorithm>
 #include <cmath>

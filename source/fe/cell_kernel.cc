@@ -63,12 +63,9 @@ namespace cdea
     return {};
   }
 
-  bool CellKernel::assemble(const Eigen::VectorXd &x, unsigned int flags,
-                            AssembledSystem &system)
+  void CellKernel::start(const unsigned int flags, AssembledSystem &system) const
   {
-    for (const auto &term : terms)
-      flags |= term->extra_flags(flags);
-    const unsigned int n = mesh.dofs_per_cell(), N = mesh.n_dofs(), bw = mesh.bandwidth();
+    const unsigned int N = mesh.n_dofs(), bw = mesh.bandwidth();
     system.flags             = flags;
     system.energy            = 0.;
     system.volume            = 0.;
@@ -100,29 +97,80 @@ namespace cdea
               system.volume_hessian.set_zero();
           }
       }
+  }
 
-    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+  void CellKernel::gather(const unsigned int c, const Eigen::VectorXd &x, const unsigned int flags)
+  {
+    const unsigned int  n    = mesh.dofs_per_cell();
+    const unsigned int *dofs = mesh.dofs_of(c);
+    for (unsigned int i = 0; i < n; ++i)
+      local_x[i] = x[dofs[i]];
+    local.energy = 0.;
+    local.volume = 0.;
+    std::fill(local.residual.begin(), local.residual.end(), 0.);
+    if (flags & assemble_tangent)
+      std::fill(local.tangent.begin(), local.tangent.end(), 0.);
+    if (flags & assemble_parameter_derivatives)
       {
-        const unsigned int *dofs = mesh.dofs_of(c);
-        for (unsigned int i = 0; i < n; ++i)
-          local_x[i] = x[dofs[i]];
-        local.energy = 0.;
-        local.volume = 0.;
-        std::fill(local.residual.begin(), local.residual.end(), 0.);
+        std::fill(local.parameter_residual.begin(), local.parameter_residual.end(), 0.);
+        std::fill(local.geometry_residual.begin(), local.geometry_residual.end(), 0.);
+      }
+    if (flags & assemble_volume)
+      {
+        std::fill(local.volume_gradient.begin(), local.volume_gradient.end(), 0.);
         if (flags & assemble_tangent)
-          std::fill(local.tangent.begin(), local.tangent.end(), 0.);
+          std::fill(local.volume_hessian.begin(), local.volume_hessian.end(), 0.);
+      }
+  }
+
+  void CellKernel::add_shape_derivatives(const unsigned int c)
+  {
+    const unsigned int n = mesh.dofs_per_cell();
+    for (unsigned int p = layout.first_shape_parameter(); p < layout.size(); ++p)
+      {
+        const CellMotion m = cell_motion(c, p);
+        if (m.dx0 != 0. || m.dh != 0.)
+          for (unsigned int i = 0; i < n; ++i)
+            local.parameter_residual[p * n + i] +=
+              m.dx0 * local.geometry_residual[i] + m.dh * local.geometry_residual[n + i];
+      }
+  }
+
+  void CellKernel::scatter(const unsigned int *dofs, const unsigned int flags,
+                           AssembledSystem &system) const
+  {
+    const unsigned int n = mesh.dofs_per_cell();
+    system.energy += local.energy;
+    system.volume += local.volume;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        if (flags & assemble_residual)
+          system.residual[dofs[i]] += local.residual[i];
+        if (flags & assemble_tangent)
+          for (unsigned int j = 0; j < n; ++j)
+            system.tangent(dofs[i], dofs[j]) += local.tangent[i * n + j];
         if (flags & assemble_parameter_derivatives)
-          {
-            std::fill(local.parameter_residual.begin(), local.parameter_residual.end(), 0.);
-            std::fill(local.geometry_residual.begin(), local.geometry_residual.end(), 0.);
-          }
+          for (unsigned int p = 0; p < layout.size(); ++p)
+            system.parameter_residual[p][dofs[i]] += local.parameter_residual[p * n + i];
         if (flags & assemble_volume)
           {
-            std::fill(local.volume_gradient.begin(), local.volume_gradient.end(), 0.);
+            system.volume_gradient[dofs[i]] += local.volume_gradient[i];
             if (flags & assemble_tangent)
-              std::fill(local.volume_hessian.begin(), local.volume_hessian.end(), 0.);
+              for (unsigned int j = 0; j < n; ++j)
+                system.volume_hessian(dofs[i], dofs[j]) += local.volume_hessian[i * n + j];
           }
+      }
+  }
 
+  bool CellKernel::assemble(const Eigen::VectorXd &x, unsigned int flags,
+                            AssembledSystem &system)
+  {
+    for (const auto &term : terms)
+      flags |= term->extra_flags(flags);
+    start(flags, system);
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        gather(c, x, flags);
         const CellInput input{c, &mesh.cells[c], local_x.data(), &mesh, &layout};
         for (const auto &term : terms)
           if (!term->add_cell(input, flags, scratch, local))
@@ -134,38 +182,9 @@ namespace cdea
                 system.residual.setConstant(std::numeric_limits<double>::quiet_NaN());
               return false;
             }
-
-        // Shape parameters: the chain rule through the cell's motion.
         if (flags & assemble_parameter_derivatives)
-          for (unsigned int p = layout.first_shape_parameter(); p < layout.size(); ++p)
-            {
-              const CellMotion m = cell_motion(c, p);
-              if (m.dx0 != 0. || m.dh != 0.)
-                for (unsigned int i = 0; i < n; ++i)
-                  local.parameter_residual[p * n + i] +=
-                    m.dx0 * local.geometry_residual[i] + m.dh * local.geometry_residual[n + i];
-            }
-
-        system.energy += local.energy;
-        system.volume += local.volume;
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            if (flags & assemble_residual)
-              system.residual[dofs[i]] += local.residual[i];
-            if (flags & assemble_tangent)
-              for (unsigned int j = 0; j < n; ++j)
-                system.tangent(dofs[i], dofs[j]) += local.tangent[i * n + j];
-            if (flags & assemble_parameter_derivatives)
-              for (unsigned int p = 0; p < layout.size(); ++p)
-                system.parameter_residual[p][dofs[i]] += local.parameter_residual[p * n + i];
-            if (flags & assemble_volume)
-              {
-                system.volume_gradient[dofs[i]] += local.volume_gradient[i];
-                if (flags & assemble_tangent)
-                  for (unsigned int j = 0; j < n; ++j)
-                    system.volume_hessian(dofs[i], dofs[j]) += local.volume_hessian[i * n + j];
-              }
-          }
+          add_shape_derivatives(c);
+        scatter(mesh.dofs_of(c), flags, system);
       }
     for (const auto &term : terms)
       term->finish(flags, system);

@@ -23,6 +23,7 @@ namespace cdea
       const MembraneTerm   &membrane;
       const MembraneLaw    &plain_law, &relaxed_law;
       std::vector<double>   interpolated, scratch;
+      std::vector<RelaxedValue> relaxes_to; ///< of each internal variable
 
       PointEvaluator(const Discretization &mesh, const MembraneTerm &membrane,
                      const MembraneLaw &plain_law, const MembraneLaw &relaxed_law)
@@ -32,7 +33,10 @@ namespace cdea
         , relaxed_law(relaxed_law)
         , interpolated(membrane.n_internal())
         , scratch(membrane.n_internal())
-      {}
+      {
+        for (const InternalVariable &v : membrane.law().internal_variables())
+          relaxes_to.push_back(v.relaxed);
+      }
 
       /// At point @p q of the cell's energy rule: the stored variables.
       InternalStep at_quadrature_point(const unsigned int cell, const unsigned int q)
@@ -46,12 +50,12 @@ namespace cdea
       }
 
       /// At point @p p, reference coordinate @p t in [0, 1] of cell @p c with
-      /// local dof values @p x. A viscous law stores xi1, xi2 first
-      /// (two_network_gent.h): what is interpolated through the cell's
-      /// quadrature points (Lagrange) is spring B's elastic log-stretch
-      /// ln(xi / lambda), not xi itself, so that the stress of network B at
-      /// the point belongs to the stretches there, and vanishes exactly
-      /// where network B has relaxed (xi = lambda at the quadrature points).
+      /// local dof values @p x: the stored variables interpolated through the
+      /// cell's quadrature points (Lagrange). A variable that relaxes to a
+      /// stretch (a viscous stretch xi) is interpolated as ln(xi / lambda)
+      /// (spring B's elastic log-stretch), not xi itself, so that the
+      /// stress it causes belongs to the stretches at the point and vanishes
+      /// exactly where it has relaxed (xi = lambda at the quadrature points).
       InternalStep at_point(const unsigned int c, const double *x, const double t,
                             const PointKinematics &p)
       {
@@ -70,14 +74,44 @@ namespace cdea
             const double *stored =
               membrane.internal_current.data() + (std::size_t(c) * n + q) * m;
             const PointKinematics g = kinematics(mesh, rule, q, mesh.cells[c], x);
-            interpolated[0] += weight * std::log(stored[0] / g.l1);
-            interpolated[1] += weight * std::log(stored[1] / g.l2);
-            for (unsigned int i = 2; i < m; ++i)
-              interpolated[i] += weight * stored[i];
+            for (unsigned int i = 0; i < m; ++i)
+              interpolated[i] += weight * interpolant(relaxes_to[i], stored[i], g);
           }
-        interpolated[0] = p.l1 * std::exp(interpolated[0]);
-        interpolated[1] = p.l2 * std::exp(interpolated[1]);
+        for (unsigned int i = 0; i < m; ++i)
+          interpolated[i] = from_interpolant(relaxes_to[i], interpolated[i], p);
         return {interpolated.data(), scratch.data(), 0., TimeScheme::backward_euler};
+      }
+
+      /// What is interpolated of an internal variable @p value at a point
+      /// with kinematics @p g, and the value back from it.
+      static double interpolant(const RelaxedValue rule, const double value,
+                                const PointKinematics &g)
+      {
+        switch (rule)
+          {
+            case RelaxedValue::meridian_stretch:
+              return std::log(value / g.l1);
+            case RelaxedValue::hoop_stretch:
+              return std::log(value / g.l2);
+            case RelaxedValue::zero:
+              break;
+          }
+        return value;
+      }
+
+      static double from_interpolant(const RelaxedValue rule, const double value,
+                                     const PointKinematics &p)
+      {
+        switch (rule)
+          {
+            case RelaxedValue::meridian_stretch:
+              return p.l1 * std::exp(value);
+            case RelaxedValue::hoop_stretch:
+              return p.l2 * std::exp(value);
+            case RelaxedValue::zero:
+              break;
+          }
+        return value;
       }
 
       LawResponse plain(const PointKinematics &p, const unsigned int cell,
@@ -191,6 +225,15 @@ namespace cdea
     PointEvaluator        at(mesh, m.membrane, *m.plain_law, *m.relaxed_law);
     std::vector<double>   local;
     int                   previous_ring = -1;
+    // The internal variables the law writes, by their stored positions.
+    std::vector<unsigned int> written;
+    const std::vector<InternalVariable> &declared = m.membrane.law().internal_variables();
+    for (unsigned int i = 0; i < declared.size(); ++i)
+      if (declared[i].written)
+        {
+          written.push_back(i);
+          f.internal.push_back({declared[i].name, declared[i].unit, declared[i].description, {}});
+        }
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       {
         gather(mesh, m.solution, c, local);
@@ -220,11 +263,8 @@ namespace cdea
             f.Phi.push_back(Phi);
             f.E.push_back(Phi * p.l1 * p.l2 / H);
             f.ring.push_back(cell.ring);
-            if (step.old)
-              {
-                f.xi1.push_back(step.old[0]);
-                f.xi2.push_back(step.old[1]);
-              }
+            for (std::size_t j = 0; j < written.size(); ++j)
+              f.internal[j].values.push_back(step.old[written[j]]);
           }
         previous_ring = cell.ring;
       }

@@ -221,118 +221,183 @@ namespace cdea
     return info == 0;
   }
 
+  namespace
+  {
+    /// s2 and the true field E at points of a converged state with their
+    /// derivatives in the scene parameters p: dq/dp = the explicit part at
+    /// fixed nodal values + dq/dx dx/dp, per point.
+    class PointDerivatives
+    {
+    public:
+      PointDerivatives(const Discretization &mesh, const CellKernel &kernel,
+                       const MembraneTerm &membrane, const MembraneLaw &law,
+                       const std::vector<double> &voltages, const double thickness,
+                       const Eigen::MatrixXd                              &dx_dp,
+                       std::vector<std::pair<unsigned int, double>> columns)
+        : mesh(mesh)
+        , kernel(kernel)
+        , layout(kernel.parameters())
+        , membrane(membrane)
+        , law(law)
+        , voltages(voltages)
+        , H(thickness)
+        , dx_dp(dx_dp)
+        , columns(std::move(columns))
+        , n(mesh.dofs_per_cell())
+        , gradient_s2(n)
+        , gradient_E(n)
+        , explicit_s2(layout.size())
+        , explicit_E(layout.size())
+      {}
+
+      /// Point q of @p table in cell c, where the solution has the
+      /// kinematics @p p.
+      void add(const unsigned int c, const ShapeTable &table, const unsigned int q,
+               const PointKinematics &p)
+      {
+        const MeshCell &cell = mesh.cells[c];
+        const double    Phi  = voltages[cell.ring];
+        const LawInput  at   = membrane.law_input(p, cell.ring);
+        LawResponse     response;
+        if (!law.evaluate(at, {}, law_stress | law_tangent, response))
+          throw std::runtime_error("StateSensitivity: a point lies outside the material's range");
+        state_gradients(cell, table, q, p, response.tangent, Phi);
+        explicit_derivatives(c, table.points[q], p, at, response.tangent, Phi);
+        chain(mesh.dofs_of(c));
+        out.R.push_back(p.R);
+        out.ring.push_back(cell.ring);
+        s2.push_back(response.stress.s2);
+        field.push_back(Phi * p.l1 * p.l2 / H);
+      }
+
+      /// The points added so far, the first @p n_quadrature_points of them
+      /// at the quadrature points.
+      PointValues values(const unsigned int n_quadrature_points)
+      {
+        const unsigned int n_points = s2.size(), P = columns.size();
+        out.n_quadrature_points     = n_quadrature_points;
+        out.s2                      = Eigen::Map<Eigen::VectorXd>(s2.data(), n_points);
+        out.field                   = Eigen::Map<Eigen::VectorXd>(field.data(), n_points);
+        out.d_s2.resize(n_points, P);
+        out.d_field.resize(n_points, P);
+        for (unsigned int k = 0; k < n_points; ++k)
+          {
+            out.d_s2.row(k)    = d_s2[k].transpose();
+            out.d_field.row(k) = d_field[k].transpose();
+          }
+        return out;
+      }
+
+      unsigned int n_points() const { return s2.size(); }
+
+    private:
+      const Discretization                              &mesh;
+      const CellKernel                                  &kernel;
+      const ParameterLayout                             &layout;
+      const MembraneTerm                                &membrane;
+      const MembraneLaw                                 &law;
+      const std::vector<double>                         &voltages;
+      const double                                       H;
+      const Eigen::MatrixXd                             &dx_dp;
+      const std::vector<std::pair<unsigned int, double>> columns; ///< of each scene parameter
+      const unsigned int                                 n;
+      std::vector<double> gradient_s2, gradient_E, explicit_s2, explicit_E;
+      std::vector<double> s2, field;
+      std::vector<Eigen::VectorXd> d_s2, d_field;
+      PointValues                  out;
+
+      /// d/dx: dl1_i = (r' or z') dN_i/dR / l1, dl2_i = N_i / R (r only).
+      void state_gradients(const MeshCell &cell, const ShapeTable &table, const unsigned int q,
+                           const PointKinematics &p, const StressTangent &t, const double Phi)
+      {
+        const double *value = &table.value[q * n], *deriv = &table.derivative[q * n];
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const bool   r_dof = mesh.component[i] == 0;
+            const double dl1   = (r_dof ? p.dr : p.dz) * deriv[i] / cell.h / p.l1;
+            const double dl2   = r_dof ? value[i] / p.R : 0.;
+            gradient_s2[i]     = t.s12 * dl1 + t.s22 * dl2;
+            gradient_E[i]      = Phi / H * (p.l2 * dl1 + p.l1 * dl2);
+          }
+      }
+
+      /// Explicit derivatives at fixed nodal values, per kernel parameter:
+      /// the law's constants and the voltage, and the shape by the cell's
+      /// motion, R_t = dx0 + xi dh, l1_t = -l1 dh / h, l2_t = -l2 R_t / R.
+      void explicit_derivatives(const unsigned int c, const double xi, const PointKinematics &p,
+                                const LawInput &at, const StressTangent &t, const double Phi)
+      {
+        const MeshCell &cell = mesh.cells[c];
+        std::fill(explicit_s2.begin(), explicit_s2.end(), 0.);
+        std::fill(explicit_E.begin(), explicit_E.end(), 0.);
+        for (const auto &[parameter, k] : law_parameter_columns(layout, cell.ring))
+          {
+            double        dW = 0.;
+            NominalStress ds{0., 0.};
+            if (law.parameter_derivative(at, {}, parameter, dW, ds))
+              explicit_s2[k] = ds.s2;
+          }
+        explicit_E[layout.voltage(cell.ring)] = p.l1 * p.l2 / H;
+        for (unsigned int k = layout.first_shape_parameter(); k < layout.size(); ++k)
+          {
+            const CellMotion motion = kernel.cell_motion(c, k);
+            const double     R_t    = motion.dx0 + xi * motion.dh;
+            const double     l1_t   = -p.l1 * motion.dh / cell.h;
+            const double     l2_t   = -p.l2 * R_t / p.R;
+            explicit_s2[k]          = t.s12 * l1_t + t.s22 * l2_t;
+            explicit_E[k]           = Phi / H * (p.l2 * l1_t + p.l1 * l2_t);
+          }
+      }
+
+      /// The total derivatives of s2 and E at the point (cell dofs @p dofs).
+      void chain(const unsigned int *dofs)
+      {
+        const unsigned int P = columns.size();
+        Eigen::VectorXd    ds2(P), dE(P);
+        for (unsigned int j = 0; j < P; ++j)
+          {
+            const auto [k, factor] = columns[j];
+            double a = factor * explicit_s2[k], b = factor * explicit_E[k];
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                a += gradient_s2[i] * dx_dp(dofs[i], j);
+                b += gradient_E[i] * dx_dp(dofs[i], j);
+              }
+            ds2[j] = a;
+            dE[j]  = b;
+          }
+        d_s2.push_back(std::move(ds2));
+        d_field.push_back(std::move(dE));
+      }
+    };
+  } // namespace
+
   PointValues StateSensitivity::points() const
   {
-    const MembraneModel::Impl &m      = *model.impl;
-    const Discretization      &mesh   = m.mesh;
-    const ParameterLayout     &layout = m.kernel.parameters();
-    const unsigned int         n = mesh.dofs_per_cell(), P = parameters_.size();
-    const double               H = m.scene.material.thickness;
-
+    const MembraneModel::Impl &m    = *model.impl;
+    const Discretization      &mesh = m.mesh;
     // Each scene parameter as its kernel column.
     std::vector<std::pair<unsigned int, double>> columns;
     for (const auto &p : parameters_)
-      columns.push_back(kernel_column(p, layout, m.scene));
-
-    std::vector<double> gradient_s2(n), gradient_E(n), explicit_s2(layout.size()),
-      explicit_E(layout.size());
-    std::vector<double> s2, field;
-    std::vector<Eigen::VectorXd> d_s2, d_field;
-    PointValues                  out;
-
-    // Point q of @p table in cell c, where the solution has the kinematics @p p.
-    const auto point = [&](const unsigned int c, const ShapeTable &table, const unsigned int q,
-                           const PointKinematics &p) {
-      const MeshCell     &cell = mesh.cells[c];
-      const unsigned int *dofs = mesh.dofs_of(c);
-      const double          xi  = table.points[q];
-      const double          Phi = m.load.voltages[cell.ring];
-      const LawInput        at  = m.membrane.law_input(p, cell.ring);
-      LawResponse           law;
-      if (!m.plain_law->evaluate(at, {}, law_stress | law_tangent, law))
-        throw std::runtime_error("StateSensitivity: a point lies outside the material's range");
-      const StressTangent &t = law.tangent;
-
-      // d/dx: dl1_i = (r' or z') dN_i/dR / l1, dl2_i = N_i / R (r only).
-      const double *value = &table.value[q * n], *deriv = &table.derivative[q * n];
-      for (unsigned int i = 0; i < n; ++i)
-        {
-          const bool   r_dof = mesh.component[i] == 0;
-          const double dl1   = (r_dof ? p.dr : p.dz) * deriv[i] / cell.h / p.l1;
-          const double dl2   = r_dof ? value[i] / p.R : 0.;
-          gradient_s2[i]     = t.s12 * dl1 + t.s22 * dl2;
-          gradient_E[i]      = Phi / H * (p.l2 * dl1 + p.l1 * dl2);
-        }
-
-      // Explicit derivatives at fixed nodal values, per kernel parameter.
-      std::fill(explicit_s2.begin(), explicit_s2.end(), 0.);
-      std::fill(explicit_E.begin(), explicit_E.end(), 0.);
-      for (const auto &[parameter, k] : law_parameter_columns(layout, cell.ring))
-        {
-          double        dW = 0.;
-          NominalStress ds{0., 0.};
-          if (m.plain_law->parameter_derivative(at, {}, parameter, dW, ds))
-            explicit_s2[k] = ds.s2;
-        }
-      explicit_E[layout.voltage(cell.ring)] = p.l1 * p.l2 / H;
-      // Shape: R_t = dx0 + xi dh, l1_t = -l1 dh / h, l2_t = -l2 R_t / R.
-      for (unsigned int k = layout.first_shape_parameter(); k < layout.size(); ++k)
-        {
-          const CellMotion motion = m.kernel.cell_motion(c, k);
-          const double     R_t    = motion.dx0 + xi * motion.dh;
-          const double     l1_t   = -p.l1 * motion.dh / cell.h;
-          const double     l2_t   = -p.l2 * R_t / p.R;
-          explicit_s2[k]          = t.s12 * l1_t + t.s22 * l2_t;
-          explicit_E[k]           = Phi / H * (p.l2 * l1_t + p.l1 * l2_t);
-        }
-
-      Eigen::VectorXd ds2(P), dE(P);
-      for (unsigned int j = 0; j < P; ++j)
-        {
-          const auto [k, factor] = columns[j];
-          double a = factor * explicit_s2[k], b = factor * explicit_E[k];
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              a += gradient_s2[i] * dx_dp(dofs[i], j);
-              b += gradient_E[i] * dx_dp(dofs[i], j);
-            }
-          ds2[j] = a;
-          dE[j]  = b;
-        }
-      out.R.push_back(p.R);
-      out.ring.push_back(cell.ring);
-      s2.push_back(law.stress.s2);
-      field.push_back(Phi * p.l1 * p.l2 / H);
-      d_s2.push_back(std::move(ds2));
-      d_field.push_back(std::move(dE));
-    };
+      columns.push_back(kernel_column(p, m.kernel.parameters(), m.scene));
+    PointDerivatives at(mesh, m.kernel, m.membrane, *m.plain_law, m.load.voltages,
+                        m.scene.material.thickness, dx_dp, std::move(columns));
 
     for_each_point(mesh, mesh.energy_rule, m.solution,
                    [&](const unsigned int c, const unsigned int q, const PointKinematics &p) {
-                     point(c, mesh.energy_rule, q, p);
+                     at.add(c, mesh.energy_rule, q, p);
                    });
-    out.n_quadrature_points = s2.size();
+    const unsigned int n_quadrature_points = at.n_points();
     // Then the inner edge of each ring (the left end of its first cell).
     int previous_ring = -1;
     for_each_point(mesh, mesh.left_end, m.solution,
                    [&](const unsigned int c, const unsigned int q, const PointKinematics &p) {
                      if (int(mesh.cells[c].ring) != previous_ring)
                        {
-                         point(c, mesh.left_end, q, p);
+                         at.add(c, mesh.left_end, q, p);
                          previous_ring = mesh.cells[c].ring;
                        }
                    });
-
-    const unsigned int n_points = s2.size();
-    out.s2                      = Eigen::Map<Eigen::VectorXd>(s2.data(), n_points);
-    out.field                   = Eigen::Map<Eigen::VectorXd>(field.data(), n_points);
-    out.d_s2.resize(n_points, P);
-    out.d_field.resize(n_points, P);
-    for (unsigned int k = 0; k < n_points; ++k)
-      {
-        out.d_s2.row(k)    = d_s2[k].transpose();
-        out.d_field.row(k) = d_field[k].transpose();
-      }
-    return out;
+    return at.values(n_quadrature_points);
   }
 } // namespace cdea

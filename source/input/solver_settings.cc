@@ -2,8 +2,7 @@
 #include <cdea/input/solver_settings.h>
 #include <cdea/input/validation.h>
 #include <cdea/input/voltage_table.h>
-#include <cdea/material/gent_law.h>
-#include <cdea/material/two_network_gent.h>
+#include <cdea/material/law_factory.h>
 
 namespace cdea
 {
@@ -81,13 +80,16 @@ namespace cdea
 
   std::shared_ptr<const MembraneLaw> material_law(const Parameters &p, const Scene &scene)
   {
-    if (p.viscous_material.model == MaterialModel::elastic)
-      return std::make_shared<GentDielectricLaw>(scene.material);
     const auto &m = p.viscous_material;
-    return std::make_shared<TwoNetworkGentLaw>(
-      scene.material,
-      ViscousNetwork{m.network_b_shear_modulus_kPa * 1e3, m.network_b_jlim, m.relaxation_time_s});
+    LawSettings settings;
+    settings.model     = to_string(m.model);
+    settings.material  = scene.material;
+    settings.constants = {{"Network B shear modulus (kPa)", m.network_b_shear_modulus_kPa},
+                          {"Network B Jlim", m.network_b_jlim},
+                          {"Relaxation time (s)", m.relaxation_time_s}};
+    return make_membrane_law(settings);
   }
+
 
   TimeSettings time_settings(const Parameters &p, const Scene &scene)
   {

@@ -1,4 +1,5 @@
 #include <cdea/material/gent_law.h>
+#include <cdea/material/law_factory.h>
 
 #include <cmath>
 
@@ -80,3 +81,14 @@ namespace cdea
     return d > 0. ? std::sqrt(0.5 * (b + std::sqrt(d))) : 0.;
   }
 } // namespace cdea
+
+namespace
+{
+  /// Material/Model = elastic: the Gent law of Shear modulus and Jlim.
+  std::shared_ptr<const cdea::MembraneLaw> create_gent_law(const cdea::LawSettings &settings)
+  {
+    return std::make_shared<cdea::GentDielectricLaw>(settings.material);
+  }
+} // namespace
+
+CDEA_REGISTER_MEMBRANE_LAW(GentDielectricLaw, "elastic", create_gent_law)

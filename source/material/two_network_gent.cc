@@ -1,4 +1,5 @@
 #include <cdea/material/gent_law.h>
+#include <cdea/material/law_factory.h>
 #include <cdea/material/two_network_gent.h>
 
 #include <Eigen/Dense>
@@ -77,18 +78,92 @@ namespace cdea
 
   TwoNetworkGentLaw::TwoNetworkGentLaw(const MaterialConstants &network_a,
                                        const ViscousNetwork    &network_b)
-    : a(network_a)
+    : MembraneLaw({{"xi1", "1", "viscous (dashpot) stretch xi1", RelaxedValue::meridian_stretch},
+                   {"xi2", "1", "viscous (dashpot) stretch xi2", RelaxedValue::hoop_stretch},
+                   {"q1", "1/s", "rate of ln xi1 at the end of the step", RelaxedValue::zero, false},
+                   {"q2", "1/s", "rate of ln xi2 at the end of the step", RelaxedValue::zero, false}})
+    , a(network_a)
     , b(network_b)
     , spring_b{network_b.shear_modulus, network_b.jlim, network_a.permittivity,
                network_a.thickness}
   {}
 
-  void TwoNetworkGentLaw::relaxed_internal_variables(const LawInput &in, double *values) const
+  namespace
   {
-    values[0] = in.l1;
-    values[1] = in.l2;
-    values[2] = values[3] = 0.;
-  }
+    /// The viscous log-strains e at the end of a step dt > 0 from e0 (and the
+    /// rate q0 for the trapezoidal rule): G(e) = c M^-1 (e - e0) - f + W_e =
+    /// 0, c = 1/dt (backward Euler) or 2/dt (trapezoidal, with f = M^-1 q0);
+    /// H = c M^-1 + W_ee. Newton from @p e with step halving while outside
+    /// spring B's Gent limit, until the update is below 1e-13 (then e and
+    /// spring B there, @p w, are kept). False if it fails.
+    bool update_viscous_strain(const GentDielectric &spring, const LawInput &in,
+                               const InternalStep &step, const Matrix2 &M_inv,
+                               const Vector2 &e0, const Vector2 &q0, Vector2 &e, SpringB &w)
+    {
+      const bool    trapezoidal = step.scheme == TimeScheme::trapezoidal;
+      const double  c           = (trapezoidal ? 2. : 1.) / step.dt;
+      const Vector2 f           = trapezoidal ? Vector2(M_inv * q0) : Vector2::Zero();
+      for (unsigned int it = 0; it < 60; ++it)
+        {
+          if (!w.evaluate(spring, in.l1, in.l2, e, false))
+            return false;
+          const Vector2 G  = c * M_inv * (e - e0) - f + w.W_e;
+          const Matrix2 H  = c * M_inv + w.W_ee;
+          Vector2       de = -solve(H, G);
+          if (!de.allFinite())
+            return false;
+          // e is within |de| of the root: keep it and its spring B.
+          if (de.lpNorm<Eigen::Infinity>() <= 1e-13)
+            return true;
+          double lambda = 1.;
+          for (unsigned int k = 0; k < 40; ++k, lambda *= 0.5)
+            {
+              const Vector2 trial = e + lambda * de;
+              const double  a1 = in.l1 / std::exp(trial[0]), a2 = in.l2 / std::exp(trial[1]);
+              if (spring.gent_margin(a1, a2) > 0.)
+                break;
+            }
+          e += lambda * de;
+        }
+      return false;
+    }
+
+    /// Network B at the updated e: the internal variables xi = exp(e) and
+    /// the rate at the end of the step, de/dt = M sigma = -M W_e, into
+    /// step.current; its part of the incremental potential, of the stress
+    /// and of the condensed tangent W_ll - W_le H^-1 W_el added to @p out.
+    void add_network_b(const SpringB &w, const Vector2 &e, const Vector2 &e0, const Vector2 &q0,
+                       const InternalStep &step, const Matrix2 &M, const Matrix2 &M_inv,
+                       LawResponse &out)
+    {
+      const Vector2 q = -M * w.W_e;
+      step.current[0] = std::exp(e[0]);
+      step.current[1] = std::exp(e[1]);
+      step.current[2] = q[0];
+      step.current[3] = q[1];
+
+      double  energy = w.energy;
+      Matrix2 K      = w.W_ll;
+      if (step.dt > 0.)
+        {
+          const Vector2 de = e - e0;
+          if (step.scheme == TimeScheme::trapezoidal)
+            energy += de.dot(M_inv * de) / step.dt - (M_inv * q0).dot(de);
+          else
+            energy += 0.5 * de.dot(M_inv * de) / step.dt;
+          const Matrix2 H =
+            (step.scheme == TimeScheme::trapezoidal ? 2. : 1.) / step.dt * M_inv + w.W_ee;
+          K -= w.W_le * H.inverse() * w.W_le.transpose();
+        }
+      out.energy += energy;
+      out.stress.s1 += w.W_l[0];
+      out.stress.s2 += w.W_l[1];
+      // The condensed tangent is symmetric up to round-off: take its mean.
+      out.tangent.s11 += K(0, 0);
+      out.tangent.s12 += 0.5 * (K(0, 1) + K(1, 0));
+      out.tangent.s22 += K(1, 1);
+    }
+  } // namespace
 
   bool TwoNetworkGentLaw::evaluate(const LawInput &in, const InternalStep &step,
                                    const unsigned int request, LawResponse &out) const
@@ -114,7 +189,6 @@ namespace cdea
 
     const GentDielectric spring(spring_b, 0.);
     const double         eta = b.shear_modulus * b.relaxation_time;
-    const Matrix2        M = mobility(eta), M_inv = mobility_inverse(eta);
     const Vector2        e0(std::log(step.old[0]), std::log(step.old[1]));
     const Vector2        q0(step.old[2], step.old[3]);
     // Start from the last update at this point (the previous Newton iterate
@@ -123,76 +197,17 @@ namespace cdea
     if (step.dt > 0. && step.current[0] > 0. && step.current[1] > 0. &&
         std::isfinite(step.current[0]) && std::isfinite(step.current[1]))
       e = Vector2(std::log(step.current[0]), std::log(step.current[1]));
-    SpringB              w;
-    Matrix2              H = Matrix2::Zero();
-
+    SpringB w;
     if (step.dt > 0.)
       {
-        // G(e) = c M^-1 (e - e0) - f + W_e = 0, c = 1/dt (backward Euler) or
-        // 2/dt (trapezoidal, with f = M^-1 q0); H = c M^-1 + W_ee. Newton
-        // with step halving while outside spring B's Gent limit, until the
-        // update is below 1e-13 (then e and spring B there are kept).
-        const bool    trapezoidal = step.scheme == TimeScheme::trapezoidal;
-        const double  c           = (trapezoidal ? 2. : 1.) / step.dt;
-        const Vector2 f           = trapezoidal ? Vector2(M_inv * q0) : Vector2::Zero();
-        bool          converged   = false;
-        for (unsigned int it = 0; it < 60 && !converged; ++it)
-          {
-            if (!w.evaluate(spring, in.l1, in.l2, e, false))
-              return false;
-            const Vector2 G = c * M_inv * (e - e0) - f + w.W_e;
-            H               = c * M_inv + w.W_ee;
-            Vector2 de      = -solve(H, G);
-            if (!de.allFinite())
-              return false;
-            // e is within |de| of the root: keep it and its spring B.
-            converged = de.lpNorm<Eigen::Infinity>() <= 1e-13;
-            if (converged)
-              break;
-            double lambda = 1.;
-            for (unsigned int k = 0; k < 40; ++k, lambda *= 0.5)
-              {
-                const Vector2 trial = e + lambda * de;
-                const double  a1 = in.l1 / std::exp(trial[0]), a2 = in.l2 / std::exp(trial[1]);
-                if (spring.gent_margin(a1, a2) > 0.)
-                  break;
-              }
-            e += lambda * de;
-          }
-        if (!converged)
+        if (!update_viscous_strain(spring, in, step, mobility_inverse(eta), e0, q0, e, w))
           return false;
         if (request & law_energy)
           w.energy = spring.energy(in.l1 / std::exp(e[0]), in.l2 / std::exp(e[1]));
       }
     else if (!w.evaluate(spring, in.l1, in.l2, e, request & law_energy))
       return false;
-
-    // Rate at the end of the step: de/dt = M sigma = -M W_e.
-    const Vector2 q = -M * w.W_e;
-    step.current[0] = std::exp(e[0]);
-    step.current[1] = std::exp(e[1]);
-    step.current[2] = q[0];
-    step.current[3] = q[1];
-
-    double  energy = w.energy;
-    Matrix2 K      = w.W_ll;
-    if (step.dt > 0.)
-      {
-        const Vector2 de = e - e0;
-        if (step.scheme == TimeScheme::trapezoidal)
-          energy += de.dot(M_inv * de) / step.dt - (M_inv * q0).dot(de);
-        else
-          energy += 0.5 * de.dot(M_inv * de) / step.dt;
-        H = (step.scheme == TimeScheme::trapezoidal ? 2. : 1.) / step.dt * M_inv + w.W_ee;
-        K -= w.W_le * H.inverse() * w.W_le.transpose();
-      }
-    out.energy += energy;
-    out.stress.s1 += w.W_l[0];
-    out.stress.s2 += w.W_l[1];
-    // The condensed tangent is symmetric up to round-off: take its mean.
-    out.tangent.s11 += K(0, 0);
-    out.tangent.s12 += 0.5 * (K(0, 1) + K(1, 0));
-    out.tangent.s22 += K(1, 1);
+    add_network_b(w, e, e0, q0, step, mobility(eta), mobility_inverse(eta), out);
     return true;
   }
 
@@ -217,3 +232,18 @@ namespace cdea
     return de.dot(mobility_inverse(b.shear_modulus * b.relaxation_time) * de) / step.dt;
   }
 } // namespace cdea
+
+namespace
+{
+  /// Material/Model = viscoelastic: network A is the film's Gent law;
+  /// network B's constants are entries of subsection Material.
+  std::shared_ptr<const cdea::MembraneLaw> create_two_network_law(const cdea::LawSettings &settings)
+  {
+    const cdea::ViscousNetwork b{settings.constant("Network B shear modulus (kPa)") * 1e3,
+                                 settings.constant("Network B Jlim"),
+                                 settings.constant("Relaxation time (s)")};
+    return std::make_shared<cdea::TwoNetworkGentLaw>(settings.material, b);
+  }
+} // namespace
+
+CDEA_REGISTER_MEMBRANE_LAW(TwoNetworkGentLaw, "viscoelastic", create_two_network_law)

@@ -5,6 +5,44 @@
 
 namespace cdea
 {
+  namespace
+  {
+    /// Backtracking from @p x along @p dx: the first alpha = 1, 1/2, 1/4, ...
+    /// whose residual norm decreases by the fraction 1e-4 alpha of @p norm0
+    /// (Armijo) or is below the tolerance; @p trial and @p r_trial hold that
+    /// point and its residual. 0 if none within max_backtracks halvings.
+    double line_search(NonlinearProblem &problem, const NewtonSettings &settings,
+                       const Eigen::VectorXd &x, const Eigen::VectorXd &dx, const double norm0,
+                       Eigen::VectorXd &trial, Eigen::VectorXd &r_trial)
+    {
+      double alpha = 1.;
+      for (unsigned int b = 0; b <= settings.max_backtracks; ++b, alpha *= 0.5)
+        {
+          trial = x + alpha * dx;
+          problem.evaluate(trial, r_trial);
+          const double norm = r_trial.norm();
+          if (std::isfinite(norm) &&
+              (norm <= (1. - 1e-4 * alpha) * norm0 ||
+               norm / settings.residual_scale < settings.residual_tolerance))
+            return alpha;
+        }
+      return 0.;
+    }
+
+    std::string no_decrease_message(const NewtonSettings &settings, const unsigned int k,
+                                    const double res)
+    {
+      std::ostringstream m;
+      m << "the line search found no decrease of the residual at Newton iteration " << k
+        << " (residual " << res << ")";
+      if (res < 1e3 * settings.residual_tolerance)
+        m << "; the residual has stalled near the tolerance, at the round-off level "
+             "of this discretization: Solver/Residual tolerance may be below what it "
+             "can reach";
+      return m.str();
+    }
+  } // namespace
+
   SolveReport LineSearchNewton::solve(NonlinearProblem &problem, Eigen::VectorXd &x)
   {
     SolveReport     report;
@@ -34,32 +72,10 @@ namespace cdea
             report.message = "the tangent is singular or not finite";
             return report;
           }
-        const double norm0    = r.norm();
-        double       alpha    = 1.;
-        bool         accepted = false;
-        for (unsigned int b = 0; b <= settings.max_backtracks; ++b, alpha *= 0.5)
+        const double alpha = line_search(problem, settings, x, dx, r.norm(), trial, r_trial);
+        if (alpha == 0.)
           {
-            trial = x + alpha * dx;
-            problem.evaluate(trial, r_trial);
-            const double norm = r_trial.norm();
-            if (std::isfinite(norm) &&
-                (norm <= (1. - 1e-4 * alpha) * norm0 ||
-                 norm / settings.residual_scale < settings.residual_tolerance))
-              {
-                accepted = true;
-                break;
-              }
-          }
-        if (!accepted)
-          {
-            std::ostringstream m;
-            m << "the line search found no decrease of the residual at Newton iteration " << k
-              << " (residual " << res << ")";
-            if (res < 1e3 * settings.residual_tolerance)
-              m << "; the residual has stalled near the tolerance, at the round-off level "
-                   "of this discretization: Solver/Residual tolerance may be below what it "
-                   "can reach";
-            report.message = m.str();
+            report.message = no_decrease_message(settings, k, res);
             return report;
           }
         x.swap(trial);

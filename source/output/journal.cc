@@ -1,3 +1,4 @@
+#include <cdea/model/output_fields.h>
 #include <cdea/output/journal.h>
 #include <cdea/output/safe_files.h>
 
@@ -17,7 +18,9 @@ namespace cdea
 {
   namespace
   {
-    constexpr char magic[8] = {'C', 'D', 'E', 'A', 'J', 'N', 'L', '1'};
+    // Format 2: the internal variables of the law named in each step record.
+    constexpr char magic[8]        = {'C', 'D', 'E', 'A', 'J', 'N', 'L', '2'};
+    constexpr char magic_format1[8] = {'C', 'D', 'E', 'A', 'J', 'N', 'L', '1'};
 
     enum RecordType : unsigned char
     {
@@ -63,6 +66,12 @@ namespace cdea
       {
         u64(s.size());
         bytes += s;
+      }
+      void str(const char *s)
+      {
+        const std::size_t n = std::strlen(s);
+        u64(n);
+        bytes.append(s, n);
       }
       void u64(const std::uint64_t x) { raw(x); }
       void doubles(const std::vector<double> &v)
@@ -181,6 +190,10 @@ namespace cdea
       const std::string data((std::istreambuf_iterator<char>(in)),
                              std::istreambuf_iterator<char>());
       Parsed parsed;
+      if (data.size() >= sizeof(magic) &&
+          std::memcmp(data.data(), magic_format1, sizeof(magic)) == 0)
+        throw OutputError(path + " was written by an older version of cdea (journal format 1): "
+                                 "recover it with that version");
       if (data.size() < sizeof(magic) || std::memcmp(data.data(), magic, sizeof(magic)) != 0)
         {
           if (data.size() >= sizeof(magic) ||
@@ -241,11 +254,41 @@ namespace cdea
       out.u32(s.newton_iterations);
     }
 
-    // The fields in a fixed order.
-    std::vector<double> StepFields::*const field_members[] = {
-      &StepFields::R,       &StepFields::r,       &StepFields::z,  &StepFields::theta,
-      &StepFields::lambda1, &StepFields::lambda2, &StepFields::s1, &StepFields::s2,
-      &StepFields::E,       &StepFields::Phi,     &StepFields::xi1, &StepFields::xi2};
+    /// The fields: those of the table stored in StepFields (in its
+    /// order), the law's internal variables with their names, the ring.
+    void encode_fields(Encoder &out, const StepFields &fields)
+    {
+      for (const StepField &row : step_fields())
+        if (row.values)
+          out.doubles(fields.*row.values);
+      out.u64(fields.internal.size());
+      for (const InternalField &f : fields.internal)
+        {
+          out.str(f.name);
+          out.str(f.unit);
+          out.str(f.description);
+          out.doubles(f.values);
+        }
+      out.ints(fields.ring);
+    }
+
+    StepFields decode_fields(Decoder &in)
+    {
+      StepFields fields;
+      for (const StepField &row : step_fields())
+        if (row.values)
+          fields.*row.values = in.doubles();
+      fields.internal.resize(in.u64());
+      for (InternalField &f : fields.internal)
+        {
+          f.name        = in.str();
+          f.unit        = in.str();
+          f.description = in.str();
+          f.values      = in.doubles();
+        }
+      fields.ring = in.ints();
+      return fields;
+    }
   } // namespace
 
   JournalWriter::~JournalWriter() { close(); }
@@ -296,6 +339,7 @@ namespace cdea
       throw OutputError("cannot write the journal " + path + ": " +
                         std::strerror(n < 0 ? errno : ENOSPC));
     bytes = out.bytes.size();
+    described.clear();
     write_record(start_record, start.bytes);
   }
 
@@ -341,14 +385,26 @@ namespace cdea
   }
 
   void JournalWriter::append(const StepSummary &summary, const StepFields &fields,
-                             const std::vector<std::pair<std::string, double>> &extra_columns)
+                             const std::vector<NamedColumn> &extra_columns)
   {
+    // The table's columns go in as the document names them; a column's
+    // description is recorded when it first appears.
+    for (const auto &entry : summary.columns)
+      if (std::find(described.begin(), described.end(), entry.first) == described.end())
+        {
+          describe_column(entry.first->name, entry.first->unit, entry.first->description);
+          described.push_back(entry.first);
+        }
     Encoder out;
     encode_summary(out, summary);
-    for (const auto member : field_members)
-      out.doubles(fields.*member);
-    out.ints(fields.ring);
-    out.u64(extra_columns.size());
+    encode_fields(out, fields);
+    // As named_columns(): the table's columns in the file's units, then the extra ones.
+    out.u64(summary.columns.size() + extra_columns.size());
+    for (const auto &[column, value] : summary.columns)
+      {
+        out.str(column->name);
+        out.f64(column->in_file_units(value));
+      }
     for (const auto &[name, value] : extra_columns)
       {
         out.str(name);
@@ -378,6 +434,84 @@ namespace cdea
     write_record(summary_attribute_record, out.bytes);
   }
 
+  namespace
+  {
+    std::unique_ptr<ResultsDocument> replay_start(Decoder &in, const std::string &name)
+    {
+      const std::string text    = in.str();
+      const unsigned    n_rings = in.u32();
+      const std::size_t n_extra = in.u64();
+      std::vector<std::pair<std::string, std::string>> extra;
+      for (std::size_t i = 0; i < n_extra; ++i)
+        {
+          std::string key = in.str();
+          extra.emplace_back(std::move(key), in.str());
+        }
+      return std::make_unique<ResultsDocument>(name, text, n_rings, extra);
+    }
+
+    void replay_append(Decoder &in, ResultsDocument &document)
+    {
+      const StepSummary        summary = decode_summary(in);
+      const StepFields         fields  = decode_fields(in);
+      std::vector<NamedColumn> columns;
+      const std::size_t        n = in.u64();
+      for (std::size_t i = 0; i < n; ++i)
+        {
+          std::string column = in.str();
+          columns.emplace_back(std::move(column), in.f64());
+        }
+      document.append(summary, fields, columns);
+    }
+
+    void replay_onset(Decoder &in, ResultsDocument &document)
+    {
+      OnsetRecord onset;
+      onset.found       = in.raw<std::uint8_t>() != 0;
+      onset.voltages    = in.doubles();
+      onset.radius      = in.f64();
+      onset.load_factor = in.f64();
+      document.write_onset(onset);
+    }
+
+    /// Replays one record after the start into @p replay; false at a step
+    /// beyond @p max_steps (the replay ends there).
+    bool replay_record(const Record &r, JournalReplay &replay, const unsigned int max_steps)
+    {
+      Decoder          in(r.payload.data(), r.payload.size());
+      ResultsDocument &document = *replay.document;
+      switch (r.type)
+        {
+          case describe_column_record:
+            {
+              const std::string column = in.str();
+              const std::string unit   = in.str();
+              document.describe_column(column, unit, in.str());
+              return true;
+            }
+          case append_record:
+            if (replay.steps >= max_steps)
+              return false;
+            replay_append(in, document);
+            ++replay.steps;
+            return true;
+          case onset_record:
+            replay_onset(in, document);
+            return true;
+          case summary_attribute_record:
+            {
+              const std::string         attribute = in.str();
+              const std::vector<double> values    = in.doubles();
+              const unsigned int        rows      = in.u32();
+              document.set_summary_attribute(attribute, values, rows, in.u32());
+              return true;
+            }
+          default:
+            throw OutputError("unknown record type " + std::to_string(int(r.type)));
+        }
+    }
+  } // namespace
+
   JournalReplay replay_journal(const std::string &path, const std::string &name,
                                const unsigned int max_steps)
   {
@@ -392,74 +526,13 @@ namespace cdea
     try
       {
         for (const Record &r : parsed.records)
-          {
-            Decoder in(r.payload.data(), r.payload.size());
-            switch (r.type)
-              {
-                case start_record:
-                  {
-                    const std::string text    = in.str();
-                    const unsigned    n_rings = in.u32();
-                    const std::size_t n_extra = in.u64();
-                    std::vector<std::pair<std::string, std::string>> extra;
-                    for (std::size_t i = 0; i < n_extra; ++i)
-                      {
-                        std::string key = in.str();
-                        extra.emplace_back(std::move(key), in.str());
-                      }
-                    replay.document =
-                      std::make_unique<ResultsDocument>(name, text, n_rings, extra);
-                    break;
-                  }
-                case describe_column_record:
-                  {
-                    const std::string column = in.str();
-                    const std::string unit   = in.str();
-                    replay.document->describe_column(column, unit, in.str());
-                    break;
-                  }
-                case append_record:
-                  {
-                    if (replay.steps >= max_steps)
-                      return replay;
-                    const StepSummary summary = decode_summary(in);
-                    StepFields        fields;
-                    for (const auto member : field_members)
-                      fields.*member = in.doubles();
-                    fields.ring = in.ints();
-                    std::vector<std::pair<std::string, double>> extra;
-                    const std::size_t n = in.u64();
-                    for (std::size_t i = 0; i < n; ++i)
-                      {
-                        std::string column = in.str();
-                        extra.emplace_back(std::move(column), in.f64());
-                      }
-                    replay.document->append(summary, fields, extra);
-                    ++replay.steps;
-                    break;
-                  }
-                case onset_record:
-                  {
-                    OnsetRecord onset;
-                    onset.found       = in.raw<std::uint8_t>() != 0;
-                    onset.voltages    = in.doubles();
-                    onset.radius      = in.f64();
-                    onset.load_factor = in.f64();
-                    replay.document->write_onset(onset);
-                    break;
-                  }
-                case summary_attribute_record:
-                  {
-                    const std::string         attribute = in.str();
-                    const std::vector<double> values    = in.doubles();
-                    const unsigned int        rows      = in.u32();
-                    replay.document->set_summary_attribute(attribute, values, rows, in.u32());
-                    break;
-                  }
-                default:
-                  throw OutputError("unknown record type " + std::to_string(int(r.type)));
-              }
-          }
+          if (r.type == start_record)
+            {
+              Decoder in(r.payload.data(), r.payload.size());
+              replay.document = replay_start(in, name);
+            }
+          else if (!replay_record(r, replay, max_steps))
+            break;
       }
     catch (const std::invalid_argument &e)
       {

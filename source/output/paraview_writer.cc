@@ -2,6 +2,7 @@
 // VTK User's Guide): UnstructuredGrid pieces with their data appended as raw
 // little- or big-endian bytes, each block preceded by its byte count (UInt64),
 // and a Collection (PVD) listing one file per time.
+#include <cdea/model/output_fields.h>
 #include <cdea/output/paraview_writer.h>
 #include <cdea/output/safe_files.h>
 
@@ -91,34 +92,14 @@ namespace cdea
 
     constexpr std::uint8_t vtk_triangle = 5, vtk_quad = 9;
 
-    /// Names and values of the real point data of the film, in file units.
+    /// Names and values of the real point data of the film, in file units:
+    /// the rows of the table of output fields marked for ParaView.
     std::vector<std::pair<std::string, std::vector<double>>> film_data(const StepFields &f)
     {
       std::vector<std::pair<std::string, std::vector<double>>> d;
-      const auto add = [&](const std::string &name, const std::vector<double> &v,
-                           const double scale) {
-        std::vector<double> x(v.size());
-        for (std::size_t i = 0; i < v.size(); ++i)
-          x[i] = v[i] * scale;
-        d.emplace_back(name, std::move(x));
-      };
-      add("R", f.R, 1e3);
-      add("r", f.r, 1e3);
-      add("z", f.z, 1e3);
-      add("lambda1", f.lambda1, 1.);
-      add("lambda2", f.lambda2, 1.);
-      add("s1", f.s1, 1e-3);
-      add("s2", f.s2, 1e-3);
-      std::vector<double> sigma1(f.s1.size()), sigma2(f.s2.size());
-      for (std::size_t i = 0; i < sigma1.size(); ++i)
-        {
-          sigma1[i] = f.lambda1[i] * f.s1[i]; // true stress sigma_i = l_i s_i
-          sigma2[i] = f.lambda2[i] * f.s2[i];
-        }
-      add("sigma1", sigma1, 1e-3);
-      add("sigma2", sigma2, 1e-3);
-      add("E", f.E, 1e-6);
-      add("Phi", f.Phi, 1e-3);
+      for (const StepField &row : step_fields())
+        if (row.in_paraview && row.field.storage == Storage::real)
+          d.emplace_back(row.field.name, scaled(step_field_values(row, f), row.field.factor));
       return d;
     }
 
@@ -220,14 +201,10 @@ namespace cdea
           xml << ' ' << number(v);
         xml << " </DataArray>\n";
       };
-      std::vector<double> kV;
-      for (const double v : s.voltages)
-        kV.push_back(v * 1e-3);
       field("TimeValue", "Float64", {time});
-      field("stage", "Int32", {double(static_cast<int>(s.stage))});
-      field("load_factor", "Float64", {s.load_factor});
-      field("voltage_kV", "Float64", kV);
-      field("displacement_mm", "Float64", {s.displacement * 1e3});
+      for (const OutputField *row : step_attributes())
+        field(row->name, row->storage == Storage::integer ? "Int32" : "Float64",
+              scaled(row->summary_values(s), row->factor));
       xml << "    </FieldData>\n";
       for (const Piece &p : pieces)
         {

@@ -1,3 +1,4 @@
+#include <cdea/model/output_fields.h>
 #include <cdea/output/hdf5_support.h>
 #include <cdea/output/results_document.h>
 
@@ -19,37 +20,32 @@ namespace cdea
   {
     constexpr double nan_value = std::numeric_limits<double>::quiet_NaN();
 
-    // Unit conversions from SI to the file's units.
-    constexpr double to_mm   = 1e3;
-    constexpr double to_kPa  = 1e-3;
-    constexpr double to_kV   = 1e-3;
-    constexpr double to_MV_m = 1e-6;
-    constexpr double to_g    = 1e3;
-
     constexpr hsize_t summary_chunk_rows = 128;
 
     using hdf5::ErrorPrintingOff;
     using hdf5::Handle;
 
-    const char *const standard_column_names[] = {"stage",
-                                                 "load_factor",
-                                                 "voltage_kV",
-                                                 "mass_g",
-                                                 "displacement_mm",
-                                                 "stroke_mm",
-                                                 "s2_min_kPa",
-                                                 "s2_ring_inner_kPa",
-                                                 "wrinkled",
-                                                 "newton_iterations"};
-
-    std::vector<double> scaled(const std::vector<double> &values, const double factor)
+    std::vector<int> as_integers(const std::vector<double> &values)
     {
-      std::vector<double> result(values.size());
-      for (std::size_t i = 0; i < values.size(); ++i)
-        result[i] = values[i] * factor;
-      return result;
+      return std::vector<int>(values.begin(), values.end());
+    }
+
+    /// The values of a row of the table in the file's unit.
+    std::vector<double> file_values(const OutputField &row, const StepSummary &summary)
+    {
+      return scaled(row.summary_values(summary), row.factor);
     }
   } // namespace
+
+  std::vector<NamedColumn> named_columns(const StepSummary              &summary,
+                                         const std::vector<NamedColumn> &extra)
+  {
+    std::vector<NamedColumn> all;
+    for (const auto &[column, value] : summary.columns)
+      all.emplace_back(column->name, column->in_file_units(value));
+    all.insert(all.end(), extra.begin(), extra.end());
+    return all;
+  }
 
   struct ResultsDocument::Impl
   {
@@ -69,7 +65,9 @@ namespace cdea
       unsigned int width = 1; // 1 for 1D, n_rings for 2D
       hid_t        memory_type;
     };
-    std::map<std::string, Column> standard_columns;
+    /// The standard columns, in the order of standard_summary_columns().
+    std::vector<Column>           standard_columns;
+    std::set<std::string>         standard_names;
     std::map<std::string, Column> extra_columns;
     std::map<std::string, std::pair<std::string, std::string>> extra_descriptions;
 
@@ -111,16 +109,18 @@ namespace cdea
                     H5Dclose);
     }
 
-    void add_standard_column(const std::string &name, const bool is_int, const bool per_ring,
-                             const std::string &unit, const std::string &description)
+    void add_standard_column(const OutputField &row)
     {
-      Column column;
+      const bool is_int   = row.storage == Storage::integer;
+      const bool per_ring = row.shape == Shape::per_ring;
+      Column     column;
       column.width       = per_ring ? rings : 1;
       column.memory_type = is_int ? H5T_NATIVE_INT : H5T_NATIVE_DOUBLE;
-      column.dataset     = create_summary_dataset(name, is_int ? H5T_STD_I32LE : H5T_IEEE_F64LE,
+      column.dataset     = create_summary_dataset(row.name, is_int ? H5T_STD_I32LE : H5T_IEEE_F64LE,
                                                   per_ring ? rings : 0, 0);
-      w.describe(column.dataset, unit, description);
-      standard_columns.emplace(name, std::move(column));
+      w.describe(column.dataset, row.unit, row.description);
+      standard_columns.push_back(std::move(column));
+      standard_names.insert(row.name);
     }
 
     /// Grows @p column to rows_after rows (new rows get the fill value).
@@ -164,13 +164,12 @@ namespace cdea
       w.describe(dataset, unit, description);
     }
 
-    void write_scaled_field(const hid_t group, const std::string &name,
-                            const std::vector<double> &values, const double factor,
-                            const std::string &unit, const std::string &description) const
+    void write_real_field(const hid_t group, const std::string &name,
+                          const std::vector<double> &values, const std::string &unit,
+                          const std::string &description) const
     {
-      const std::vector<double> v = scaled(values, factor);
-      write_field(group, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, v.data(), v.size(), unit,
-                  description);
+      write_field(group, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, values.data(), values.size(),
+                  unit, description);
     }
 
     void write_extra_description(const std::string &name) const
@@ -185,7 +184,93 @@ namespace cdea
         w.describe(it->second.dataset, "",
                    "extra summary column (the unit is part of the name); NaN where not written");
     }
+
+    /// The summary attribute @p a, as a scalar, a 1D or a 2D attribute.
+    void write_summary_attribute(const SummaryAttribute &a) const
+    {
+      if (a.scalar && a.integer)
+        w.int_attribute(summary, a.name, static_cast<int>(a.values[0]));
+      else if (a.scalar)
+        w.double_attribute(summary, a.name, a.values[0]);
+      else
+        w.double_array_attribute(summary, a.name, a.values, a.rows, a.columns);
+    }
+
+    void write_standard_row(const StepSummary &s);
+    void write_extra_row(const std::vector<NamedColumn> &columns);
+    void write_step_group(const StepSummary &s, const StepFields &fields);
   };
+
+  /// The standard /summary columns of row `rows`, from the table.
+  void ResultsDocument::Impl::write_standard_row(const StepSummary &s)
+  {
+    const std::vector<const OutputField *> &rows_of_table = standard_summary_columns();
+    for (std::size_t c = 0; c < rows_of_table.size(); ++c)
+      {
+        const OutputField  &row    = *rows_of_table[c];
+        const Column       &column = standard_columns[c];
+        const std::vector<double> values = file_values(row, s);
+        extend(row.name, column, rows + 1);
+        if (row.storage == Storage::integer)
+          write_row(row.name, column, rows, as_integers(values).data());
+        else
+          write_row(row.name, column, rows, values.data());
+      }
+  }
+
+  /// The further /summary columns of row `rows`: a column first seen now
+  /// starts NaN-filled up to this row; a known one left out is NaN here.
+  void ResultsDocument::Impl::write_extra_row(const std::vector<NamedColumn> &columns)
+  {
+    for (const auto &[name, value] : columns)
+      if (extra_columns.count(name) == 0)
+        {
+          Column column;
+          column.width       = 1;
+          column.memory_type = H5T_NATIVE_DOUBLE;
+          column.dataset     = create_summary_dataset(name, H5T_IEEE_F64LE, 0, rows);
+          extra_columns.emplace(name, std::move(column));
+          write_extra_description(name);
+        }
+    for (const auto &[name, column] : extra_columns)
+      extend(name, column, rows + 1); // NaN unless written below
+    for (const auto &[name, value] : columns)
+      write_row(name, extra_columns.at(name), rows, &value);
+  }
+
+  /// /steps/NNNNNN of row `rows`: the step's attributes, the fields of the
+  /// table, then the law's internal variables (time runs, doc/time.md).
+  void ResultsDocument::Impl::write_step_group(const StepSummary &s, const StepFields &fields)
+  {
+    char group_name[32];
+    std::snprintf(group_name, sizeof(group_name), "%06llu", static_cast<unsigned long long>(rows));
+    Handle group(w.check(H5Gcreate2(steps, group_name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                         std::string("H5Gcreate2(/steps/") + group_name + ")"),
+                 H5Gclose);
+    for (const OutputField *row : step_attributes())
+      {
+        const std::vector<double> values = file_values(*row, s);
+        if (row->storage == Storage::integer)
+          w.int_attribute(group, row->name, static_cast<int>(values[0]));
+        else if (row->shape == Shape::per_ring)
+          w.double_array_attribute(group, row->name, values);
+        else
+          w.double_attribute(group, row->name, values[0]);
+      }
+    for (const StepField &row : step_fields())
+      if (row.in_file && row.field.storage == Storage::integer)
+        {
+          const std::vector<int> values = as_integers(step_field_values(row, fields));
+          write_field(group, row.field.name, H5T_STD_I32LE, H5T_NATIVE_INT, values.data(),
+                      values.size(), row.field.unit, row.field.description);
+        }
+      else if (row.in_file)
+        write_real_field(group, row.field.name,
+                         scaled(step_field_values(row, fields), row.field.factor), row.field.unit,
+                         row.field.description);
+    for (const InternalField &f : fields.internal)
+      write_real_field(group, f.name, f.values, f.unit, f.description);
+  }
 
   ResultsDocument::ResultsDocument(const std::string &name, const std::string &parameters_text,
                                    const unsigned int n_rings,
@@ -221,27 +306,8 @@ namespace cdea
                                  "H5Gcreate2(/steps)"),
                        H5Gclose);
 
-    d.add_standard_column("stage", true, false, "1",
-                          "stage of the run: 0 pre-stretch, 1 dead load, 2 voltage");
-    d.add_standard_column("load_factor", false, false, "1",
-                          "stage parameter (voltage path parameter in stage 2)");
-    d.add_standard_column("voltage_kV", false, true, "kV",
-                          "voltage of each ring (steps x rings)");
-    d.add_standard_column("mass_g", false, false, "g", "dead-load mass on the disk");
-    d.add_standard_column("displacement_mm", false, false, "mm",
-                          "disk deflection from the frame plane |z(disk) - z(frame)|");
-    d.add_standard_column("stroke_mm", false, false, "mm",
-                          "displacement minus its zero-voltage value under the same load "
-                          "(NaN before the end of the load stage)");
-    d.add_standard_column("s2_min_kPa", false, false, "kPa",
-                          "smallest nominal hoop stress s2 anywhere");
-    d.add_standard_column("s2_ring_inner_kPa", false, true, "kPa",
-                          "nominal hoop stress s2 at the inner edge of each ring "
-                          "(steps x rings)");
-    d.add_standard_column("wrinkled", true, false, "1",
-                          "1 if the hoop stress is negative somewhere (loss of tension)");
-    d.add_standard_column("newton_iterations", true, false, "1",
-                          "Newton iterations of the converged step");
+    for (const OutputField *row : standard_summary_columns())
+      d.add_standard_column(*row);
 
     write_onset(OnsetRecord{});
   }
@@ -250,9 +316,8 @@ namespace cdea
   ResultsDocument::ResultsDocument(ResultsDocument &&) noexcept            = default;
   ResultsDocument &ResultsDocument::operator=(ResultsDocument &&) noexcept = default;
 
-  void ResultsDocument::check_append(
-    const StepSummary &summary, const StepFields &fields,
-    const std::vector<std::pair<std::string, double>> &extra_columns) const
+  void ResultsDocument::check_append(const StepSummary &summary, const StepFields &fields,
+                                     const std::vector<NamedColumn> &extra_columns) const
   {
     const Impl       &d      = *impl;
     const std::string prefix = d.w.name() + ": ";
@@ -265,121 +330,43 @@ namespace cdea
                                   std::to_string(summary.s2_ring_inner.size()) +
                                   " entries, expected " + std::to_string(d.rings));
     const std::size_t n = fields.R.size();
-    const std::pair<const char *, std::size_t> sizes[] = {
-      {"r", fields.r.size()},             {"z", fields.z.size()},
-      {"theta", fields.theta.size()},     {"lambda1", fields.lambda1.size()},
-      {"lambda2", fields.lambda2.size()}, {"s1", fields.s1.size()},
-      {"s2", fields.s2.size()},           {"E", fields.E.size()},
-      {"Phi", fields.Phi.size()},         {"ring", fields.ring.size()}};
-    for (const auto &s : sizes)
-      if (s.second != n)
-        throw std::invalid_argument(prefix + "StepFields::" + s.first + " has " +
-                                    std::to_string(s.second) + " entries but R has " +
+    const auto        same_length = [&](const std::string &name, const std::size_t size) {
+      if (size != n)
+        throw std::invalid_argument(prefix + "StepFields::" + name + " has " +
+                                    std::to_string(size) + " entries but R has " +
                                     std::to_string(n));
-    if ((!fields.xi1.empty() || !fields.xi2.empty()) &&
-        (fields.xi1.size() != n || fields.xi2.size() != n))
-      throw std::invalid_argument(prefix + "StepFields::xi1, xi2 must be empty or as long as R");
+    };
+    for (const StepField &row : step_fields())
+      if (row.values)
+        same_length(row.field.name, (fields.*row.values).size());
+    same_length("ring", fields.ring.size());
+    for (const InternalField &f : fields.internal)
+      same_length(f.name, f.values.size());
     std::set<std::string> seen;
-    for (const auto &column : extra_columns)
+    for (const auto &column : named_columns(summary, extra_columns))
       {
         const std::string &name = column.first;
         if (name.empty() || name.find('/') != std::string::npos || name == "." ||
-            d.standard_columns.count(name) > 0 || !seen.insert(name).second)
+            d.standard_names.count(name) > 0 || !seen.insert(name).second)
           throw std::invalid_argument(prefix + "extra summary column name '" + name +
                                       "' is empty, contains '/', repeats or is reserved");
       }
   }
 
   void ResultsDocument::append(const StepSummary &summary, const StepFields &fields,
-                               const std::vector<std::pair<std::string, double>> &extra_columns)
+                               const std::vector<NamedColumn> &extra_columns)
   {
     check_append(summary, fields, extra_columns);
     Impl            &d = *impl;
     ErrorPrintingOff quiet;
-    const hsize_t    row = d.rows;
-
-    // /summary row.
-    const int                 stage           = static_cast<int>(summary.stage);
-    const int                 wrinkled        = summary.wrinkled ? 1 : 0;
-    const int                 iterations      = static_cast<int>(summary.newton_iterations);
-    const double              mass_g          = summary.mass * to_g;
-    const double              displacement_mm = summary.displacement * to_mm;
-    const double              stroke_mm       = summary.stroke * to_mm;
-    const double              s2_min_kPa      = summary.s2_min * to_kPa;
-    const std::vector<double> voltage_kV      = scaled(summary.voltages, to_kV);
-    const std::vector<double> s2_ring_kPa     = scaled(summary.s2_ring_inner, to_kPa);
-    const std::map<std::string, const void *> row_data = {
-      {"stage", &stage},
-      {"load_factor", &summary.load_factor},
-      {"voltage_kV", voltage_kV.data()},
-      {"mass_g", &mass_g},
-      {"displacement_mm", &displacement_mm},
-      {"stroke_mm", &stroke_mm},
-      {"s2_min_kPa", &s2_min_kPa},
-      {"s2_ring_inner_kPa", s2_ring_kPa.data()},
-      {"wrinkled", &wrinkled},
-      {"newton_iterations", &iterations}};
-    for (const char *name : standard_column_names)
-      {
-        const Impl::Column &column = d.standard_columns.at(name);
-        d.extend(name, column, row + 1);
-        d.write_row(name, column, row, row_data.at(name));
-      }
-
-    // Extra columns: new ones start NaN-filled up to this row.
-    for (const auto &[name, value] : extra_columns)
-      if (d.extra_columns.count(name) == 0)
-        {
-          Impl::Column column;
-          column.width       = 1;
-          column.memory_type = H5T_NATIVE_DOUBLE;
-          column.dataset     = d.create_summary_dataset(name, H5T_IEEE_F64LE, 0, row);
-          d.extra_columns.emplace(name, std::move(column));
-          d.write_extra_description(name);
-        }
-    for (const auto &[name, column] : d.extra_columns)
-      d.extend(name, column, row + 1); // NaN unless written below
-    for (const auto &[name, value] : extra_columns)
-      d.write_row(name, d.extra_columns.at(name), row, &value);
-
-    if (fields.R.empty()) // a /summary row alone (time-dependent runs, doc/time.md)
-      {
-        d.rows = row + 1;
-        return;
-      }
-
-    // /steps/NNNNNN
-    char group_name[32];
-    std::snprintf(group_name, sizeof(group_name), "%06llu", static_cast<unsigned long long>(row));
-    Handle group(d.w.check(H5Gcreate2(d.steps, group_name, H5P_DEFAULT, H5P_DEFAULT,
-                                      H5P_DEFAULT),
-                           std::string("H5Gcreate2(/steps/") + group_name + ")"),
-                 H5Gclose);
-    d.w.int_attribute(group, "stage", stage);
-    d.w.double_attribute(group, "load_factor", summary.load_factor);
-    d.w.double_array_attribute(group, "voltage_kV", voltage_kV);
-    d.w.double_attribute(group, "displacement_mm", displacement_mm);
-
-    d.write_scaled_field(group, "R", fields.R, to_mm, "mm",
-                         "undeformed (reference) radius of the material point");
-    d.write_scaled_field(group, "r", fields.r, to_mm, "mm", "deformed radius");
-    d.write_scaled_field(group, "z", fields.z, to_mm, "mm",
-                         "deformed height (same sign convention as the solver)");
-    d.write_scaled_field(group, "theta", fields.theta, 1., "rad", "meridian slope angle");
-    d.write_scaled_field(group, "lambda1", fields.lambda1, 1., "1", "meridian stretch");
-    d.write_scaled_field(group, "lambda2", fields.lambda2, 1., "1", "hoop stretch r/R");
-    d.write_scaled_field(group, "s1", fields.s1, to_kPa, "kPa", "nominal meridian stress");
-    d.write_scaled_field(group, "s2", fields.s2, to_kPa, "kPa", "nominal hoop stress");
-    d.write_scaled_field(group, "E", fields.E, to_MV_m, "MV/m",
-                         "true electric field in the thickness direction");
-    d.write_scaled_field(group, "Phi", fields.Phi, to_kV, "kV", "voltage across the film");
-    d.write_field(group, "ring", H5T_STD_I32LE, H5T_NATIVE_INT, fields.ring.data(),
-                  fields.ring.size(), "1", "index of the electrode ring (0 = innermost)");
-    if (!fields.xi1.empty()) // viscous stretches of a time-dependent run (doc/time.md)
-      for (const auto &[name, xi] : {std::pair{"xi1", &fields.xi1}, std::pair{"xi2", &fields.xi2}})
-        d.write_scaled_field(group, name, *xi, 1., "1",
-                             "viscous (dashpot) stretch " + std::string(name));
-    d.rows = row + 1;
+    for (const auto &entry : summary.columns)
+      d.extra_descriptions[entry.first->name] = {entry.first->unit, entry.first->description};
+    d.write_standard_row(summary);
+    d.write_extra_row(named_columns(summary, extra_columns));
+    // A /summary row alone has no /steps group (time-dependent runs, doc/time.md).
+    if (!fields.R.empty())
+      d.write_step_group(summary, fields);
+    d.rows += 1;
   }
 
   void ResultsDocument::describe_column(const std::string &name, const std::string &unit,
@@ -401,16 +388,9 @@ namespace cdea
   void ResultsDocument::write_onset(const OnsetRecord &onset)
   {
     check_onset(onset);
-    Impl            &d = *impl;
     ErrorPrintingOff quiet;
-    d.w.int_attribute(d.summary, "onset_found", onset.found ? 1 : 0);
-    d.w.double_array_attribute(d.summary, "onset_voltage_kV",
-                               onset.found ? scaled(onset.voltages, to_kV) :
-                                             std::vector<double>(d.rings, nan_value));
-    d.w.double_attribute(d.summary, "onset_radius_mm",
-                         onset.found ? onset.radius * to_mm : nan_value);
-    d.w.double_attribute(d.summary, "onset_load_factor",
-                         onset.found ? onset.load_factor : nan_value);
+    for (const SummaryAttribute &a : onset_attributes(onset, impl->rings))
+      impl->write_summary_attribute(a);
   }
 
   void ResultsDocument::set_summary_attribute(const std::string         &name,

@@ -116,6 +116,15 @@ namespace cdea
     }
 
     Finish finish(const std::string &status);
+
+    /// The steps of finish(): the output directory vanished during the run,
+    /// so create it again and take the lock (@p owner: it was free; the
+    /// target path, elsewhere if not); the whole file did not fit, so write
+    /// the leading steps that do (true if some did); nothing was written.
+    std::string reclaim_directory(bool &owner, Finish &f);
+    bool        write_leading_steps(const std::string &target, const std::string &status,
+                                    const WriteOutcome &out, std::size_t full_size, Finish &f);
+    void        nothing_written(unsigned int n, Finish &f);
   };
 
   ResultsFile::ResultsFile(const std::string &path, const std::string &parameters_text,
@@ -248,23 +257,9 @@ namespace cdea
     try
       {
         document->set_root_attribute("run_status", status);
-        std::string target   = file_path;
         const bool  vanished = !(DirectoryIdentity::of(directory) == directory_id);
         bool        owner    = true; // the journal and lock at file_path are ours
-        if (vanished)
-          {
-            // The journal went with the directory (its data only in memory
-            // now): write the file into a new directory of the same name.
-            lock.release();
-            create_directories(directory);
-            std::string why;
-            owner = lock.acquire(file_path, why);
-            if (!owner)
-              target = free_sibling_name(file_path, ".vanished");
-            f.messages.push_back("the output directory '" + directory +
-                                 "' vanished during the run; it was created again for the " +
-                                 "results");
-          }
+        std::string target   = vanished ? reclaim_directory(owner, f) : file_path;
         const std::size_t  full_size = document->image_size();
         const WriteOutcome out       = replace_file(target, document->image(), true);
         if (out.ok)
@@ -281,62 +276,11 @@ namespace cdea
             return f;
           }
         f.messages.push_back("cannot write " + target + ": " + out.message);
-        if (!vanished && out.written > 0)
-          {
-            // What fits: the leading steps whose file is no larger than what
-            // could be written. The journal keeps all of them.
-            const std::string journal_path = journal_of(file_path);
-            if (n >= 1000) // a rebuild takes about a second per 1000 steps: say why it waits
-              std::cerr << "cdea: " << target << " does not fit (" << out.message
-                        << "): finding how many of the " << n << " steps fit..." << std::endl;
-            // Image sizes grow about linearly with the steps: estimate from
-            // the whole image, then fewer steps until the image fits (each
-            // try is one replay of the journal, so this is linear in n).
-            unsigned int k = static_cast<unsigned int>(
-              std::min<double>(n, double(n) * double(out.written) / double(full_size)));
-            for (int attempt = 0; k > 0 && attempt < 8; ++attempt)
-              {
-                JournalReplay part = replay_journal(journal_path, file_path, k);
-                part.document->set_root_attribute(
-                  "run_status", status + " (only the first " + std::to_string(k) + " of " +
-                                  std::to_string(n) + " steps fit: " + out.message + ")");
-                const std::vector<char> image = part.document->image();
-                const WriteOutcome      fit =
-                  image.size() <= out.written ? replace_file(target, image, true) : WriteOutcome();
-                if (!fit.ok)
-                  {
-                    const double room =
-                      double(image.size() <= out.written ? fit.written : out.written);
-                    k = std::min(k - 1, static_cast<unsigned int>(double(k) * room /
-                                                                  double(image.size())));
-                    continue;
-                  }
-                f.written       = true;
-                f.file          = target;
-                f.steps_written = k;
-                remove_file(checkpoint_of(file_path));
-                f.messages.push_back("only the first " + std::to_string(k) + " of " +
-                                     std::to_string(n) + " steps fit into " + target +
-                                     "; the journal " + journal_path + " keeps all " +
-                                     std::to_string(n) + ": make room and run 'cdea " +
-                                     "recover " + file_path + "'");
-                lock.release();
-                return f;
-              }
-          }
-        if (!vanished && n == 0)
-          {
-            // No step to keep: leave nothing behind, as a run that cannot
-            // start does.
-            remove_file(journal_of(file_path));
-            lock.release();
-            remove_created_directories(created);
-            f.messages.push_back("no step had been computed: nothing was written");
-          }
-        else if (!vanished)
-          f.messages.push_back("nothing could be written; the journal " + journal_of(file_path) +
-                               " keeps the " + std::to_string(n) + " steps: make room and " +
-                               "run 'cdea recover " + file_path + "'");
+        if (!vanished && out.written > 0 &&
+            write_leading_steps(target, status, out, full_size, f))
+          return f;
+        if (!vanished)
+          nothing_written(n, f);
       }
     catch (const std::exception &e)
       {
@@ -346,6 +290,81 @@ namespace cdea
       f.messages.push_back("the last checkpoint is " + checkpoint_of(file_path));
     lock.release();
     return f;
+  }
+
+  std::string ResultsFile::Impl::reclaim_directory(bool &owner, Finish &f)
+  {
+    // The journal went with the directory (its data only in memory now):
+    // write the file into a new directory of the same name.
+    lock.release();
+    create_directories(directory);
+    std::string why;
+    owner = lock.acquire(file_path, why);
+    f.messages.push_back("the output directory '" + directory +
+                         "' vanished during the run; it was created again for the results");
+    return owner ? file_path : free_sibling_name(file_path, ".vanished");
+  }
+
+  bool ResultsFile::Impl::write_leading_steps(const std::string &target, const std::string &status,
+                                              const WriteOutcome &out, const std::size_t full_size,
+                                              Finish &f)
+  {
+    // What fits: the leading steps whose file is no larger than what could
+    // be written. The journal keeps all of them.
+    const unsigned int n            = document->n_steps();
+    const std::string  journal_path = journal_of(file_path);
+    if (n >= 1000) // a rebuild takes about a second per 1000 steps: say why it waits
+      std::cerr << "cdea: " << target << " does not fit (" << out.message
+                << "): finding how many of the " << n << " steps fit..." << std::endl;
+    // Image sizes grow about linearly with the steps: estimate from the
+    // whole image, then fewer steps until the image fits (each try is one
+    // replay of the journal, so this is linear in n).
+    unsigned int k = static_cast<unsigned int>(
+      std::min<double>(n, double(n) * double(out.written) / double(full_size)));
+    for (int attempt = 0; k > 0 && attempt < 8; ++attempt)
+      {
+        JournalReplay part = replay_journal(journal_path, file_path, k);
+        part.document->set_root_attribute("run_status",
+                                          status + " (only the first " + std::to_string(k) +
+                                            " of " + std::to_string(n) +
+                                            " steps fit: " + out.message + ")");
+        const std::vector<char> image = part.document->image();
+        const WriteOutcome      fit =
+          image.size() <= out.written ? replace_file(target, image, true) : WriteOutcome();
+        if (!fit.ok)
+          {
+            const double room = double(image.size() <= out.written ? fit.written : out.written);
+            k = std::min(k - 1, static_cast<unsigned int>(double(k) * room / double(image.size())));
+            continue;
+          }
+        f.written       = true;
+        f.file          = target;
+        f.steps_written = k;
+        remove_file(checkpoint_of(file_path));
+        f.messages.push_back("only the first " + std::to_string(k) + " of " + std::to_string(n) +
+                             " steps fit into " + target + "; the journal " + journal_path +
+                             " keeps all " + std::to_string(n) + ": make room and run 'cdea " +
+                             "recover " + file_path + "'");
+        lock.release();
+        return true;
+      }
+    return false;
+  }
+
+  void ResultsFile::Impl::nothing_written(const unsigned int n, Finish &f)
+  {
+    if (n == 0)
+      {
+        // No step to keep: leave nothing behind, as a run that cannot start does.
+        remove_file(journal_of(file_path));
+        lock.release();
+        remove_created_directories(created);
+        f.messages.push_back("no step had been computed: nothing was written");
+      }
+    else
+      f.messages.push_back("nothing could be written; the journal " + journal_of(file_path) +
+                           " keeps the " + std::to_string(n) + " steps: make room and run " +
+                           "'cdea recover " + file_path + "'");
   }
 
   void ResultsFile::abandon() noexcept

@@ -40,6 +40,218 @@ namespace cdea::shooting
       f.Phi.push_back(law.voltage());
       f.ring.push_back(ring);
     }
+
+    /// The meridian equations (Guo et al. 2025, eqs. 1-15) in x = R/A on the
+    /// ring `ring`: y = (r/A, z/A, theta, l1). States outside the model's
+    /// domain are refused, saying why in `fail` (at `fail_x`).
+    struct MeridianEquations
+    {
+      MeridianEquations(const std::vector<ShootingLaw> &law, const bool cone)
+        : law(law)
+        , cone(cone)
+      {}
+
+      const std::vector<ShootingLaw> &law;
+      const bool                      cone; ///< under a dead load (theta in (0, pi))
+      unsigned int                    ring   = 0;
+      std::string                     fail;
+      double                          fail_x = 0.;
+
+      /// The reason a state at x is refused ("" if it is not), and there
+      /// the stresses and tangent of the ring's law.
+      const char *refusal(const double x, const State &y, NominalStress &s, StressTangent &t)
+      {
+        const double th = y[2], l1 = y[3];
+        const double l2 = y[0] / x;
+        if (!(l1 > 0.) || !(l2 > 0.))
+          return "a stretch became non-positive";
+        if (!(law[ring].gent_margin(l1, l2) > 0.))
+          return "the Gent limit was reached (g <= 0)";
+        if (cone && !(th > 0. && th < pi))
+          return "theta left (0, pi)";
+        s = law[ring].stress(l1, l2);
+        t = law[ring].tangent(l1, l2);
+        if (!(t.s11 > 0.))
+          return "ds1/dlambda1 <= 0 (loss of monotonicity, pull-in)";
+        if (cone && !(s.s1 > 0.))
+          return "the meridian stress s1 became non-positive";
+        return nullptr;
+      }
+
+      bool operator()(const double x, const State &y, State &dy)
+      {
+        fail_x = x;
+        NominalStress s{0., 0.};
+        StressTangent t{0., 0., 0.};
+        if (const char *why = refusal(x, y, s, t))
+          {
+            fail = why;
+            return false;
+          }
+        const double th = y[2], l1 = y[3];
+        const double l2 = y[0] / x;
+        const double c = std::cos(th), sn = std::sin(th);
+        const double dl2 = (l1 * c - l2) / x;
+        dy[0]            = l1 * c;
+        dy[1]            = -l1 * sn;
+        dy[2]            = cone ? -s.s2 * sn / (s.s1 * x) : 0.;
+        dy[3]            = (s.s2 * c - s.s1 - x * t.s12 * dl2) / (x * t.s11);
+        return std::isfinite(dy[2]) && std::isfinite(dy[3]);
+      }
+    };
+
+    /// One integration from the disk edge to the frame, ring by ring, into
+    /// a Profile: s1 continuous at each ring edge (eq. 14), the smallest
+    /// hoop stress and, on request, m samples per ring.
+    class RingByRing
+    {
+    public:
+      RingByRing(const std::vector<ShootingLaw> &law, const std::vector<double> &edges,
+                 const double A, const double mu, const Integrator::Control &control,
+                 const bool cone, const unsigned int samples, Profile &p)
+        : law(law)
+        , edges(edges)
+        , A(A)
+        , mu(mu)
+        , control(control)
+        , rk(control)
+        , equations(law, cone)
+        , m(samples)
+        , p(p)
+      {
+        p.s2_min = std::numeric_limits<double>::infinity();
+      }
+
+      /// From y at the disk edge to the frame; y is then the state there.
+      /// False (p.message says why) if a ring fails.
+      bool run(State &y)
+      {
+        double h = 0.;
+        for (unsigned int &ring = equations.ring; ring < law.size(); ++ring)
+          if (!enter_ring(y) || !integrate_ring(y, h))
+            return false;
+        return true;
+      }
+
+    private:
+      const std::vector<ShootingLaw> &law;
+      const std::vector<double>      &edges;
+      const double                    A, mu;
+      const Integrator::Control       control;
+      const Integrator                rk;
+      MeridianEquations               equations;
+      const unsigned int              m; ///< samples per ring, 0: none
+      Profile                        &p;
+
+      /// Keep the smallest hoop stress and where it occurs (x = R/A).
+      void note_s2(const double s2, const double x)
+      {
+        if (s2 < p.s2_min)
+          {
+            p.s2_min        = s2;
+            p.s2_min_radius = x * A;
+          }
+      }
+
+      /// p.message: @p what, where, and the state @p at there if given.
+      bool failed(const std::string &what, const State *at = nullptr)
+      {
+        const unsigned int ring   = equations.ring;
+        const double       fail_x = equations.fail_x;
+        std::ostringstream o;
+        o << what << " in ring " << ring + 1 << " at R/A = " << fail_x;
+        if (at != nullptr)
+          {
+            const double l1 = (*at)[3], l2 = (*at)[0] / fail_x;
+            o << " (l1 = " << l1 << ", l2 = " << l2 << ", theta = " << (*at)[2]
+              << ", g = " << law[ring].gent_margin(l1, l2)
+              << ", ds1/dl1 / mu = " << law[ring].tangent(l1, l2).s11 / mu << ")";
+          }
+        p.message = o.str();
+        return false;
+      }
+
+      /// At the ring's inner edge: l1 from s1 continuity (eq. 14) past the
+      /// first ring, the Gent limit, the hoop stress there.
+      bool enter_ring(State &y)
+      {
+        const unsigned int ring = equations.ring;
+        const double       x0   = edges[ring];
+        if (ring > 0)
+          {
+            const double l2     = y[0] / x0;
+            const double s1_old = law[ring - 1].stress(y[3], l2).s1;
+            std::string  why;
+            const auto   l1 = solve_lambda1(law[ring], l2, s1_old, y[3], &why);
+            equations.fail_x = x0;
+            if (!l1)
+              return failed("ring edge: " + why);
+            y[3] = *l1;
+          }
+        if (!(law[ring].gent_margin(y[3], y[0] / x0) > 0.))
+          {
+            equations.fail_x = x0;
+            return failed("the Gent limit was reached (g <= 0)");
+          }
+        const double s2_in = law[ring].plain_stress(y[3], y[0] / x0).s2;
+        p.s2_ring_inner.push_back(s2_in);
+        note_s2(s2_in, x0);
+        return true;
+      }
+
+      /// Across the ring from its inner edge, with the first trial step h
+      /// (then the one proposed for the next ring).
+      bool integrate_ring(State &y, double &h)
+      {
+        const unsigned int ring = equations.ring;
+        const double       x0 = edges[ring], x1 = edges[ring + 1];
+        // Uniform samples x0 + j (x1 - x0)/(m - 1), j = 0 .. m-1.
+        const auto sample = [&](const unsigned int j) {
+          return j == m - 1 ? x1 : x0 + j * (x1 - x0) / (m - 1);
+        };
+        unsigned int next = 0;
+        if (m > 0)
+          push_sample(p.samples, law[ring], ring, A, x0, y);
+        ++next;
+        const auto observe = [&](const Integrator::DenseStep &step, const double x,
+                                 const State &ye) {
+          note_s2(law[ring].plain_stress(ye[3], ye[0] / x).s2, x);
+          if (m == 0)
+            return;
+          while (next < m - 1 && sample(next) <= x)
+            {
+              const double xs = sample(next);
+              const State  ys = step(xs);
+              push_sample(p.samples, law[ring], ring, A, xs, ys);
+              note_s2(law[ring].plain_stress(ys[3], ys[0] / xs).s2, xs);
+              ++next;
+            }
+        };
+        const auto res = rk.integrate(equations, x0, x1, y, h, observe);
+        p.rhs_evaluations += res.rhs_evaluations;
+        p.accepted_steps += res.accepted_steps;
+        p.rejected_steps += res.rejected_steps;
+        if (!res.ok)
+          return ring_failed(res);
+        y = res.y;
+        h = res.h_next;
+        if (m > 0)
+          push_sample(p.samples, law[ring], ring, A, x1, y);
+        return true;
+      }
+
+      bool ring_failed(const Integrator::Result &res)
+      {
+        if (res.domain_failure)
+          return failed(equations.fail);
+        equations.fail_x = res.x;
+        return failed(res.accepted_steps + res.rejected_steps >= control.max_steps ?
+                        "too many Runge-Kutta steps" :
+                        "the Runge-Kutta step size underflowed (the solution "
+                        "turns singular)",
+                      &res.y);
+      }
+    };
   } // namespace
 
   // At fixed l2, g > 0 means I < 3 + Jlim, i.e. with u = l1^2
@@ -64,6 +276,78 @@ namespace cdea::shooting
     return solve_lambda1(ShootingLaw(law, false), l2, target, guess, why);
   }
 
+  namespace
+  {
+    /// A bracket lo < hi with f(lo) <= 0 < f(hi) grown from @p guess in
+    /// steps doubling from 2 % of it; never onto the domain ends l_lo, l_hi
+    /// (f tends to -inf at l_lo and to +inf at l_hi). False with @p why if
+    /// none is found.
+    template <typename F>
+    bool grow_bracket(const F &f, const double guess, const double l_lo, const double l_hi,
+                      double &lo, double &flo, double &hi, double &fhi, std::string *why)
+    {
+      lo = hi  = guess;
+      flo = fhi = f(guess);
+      double       d = 0.02 * guess;
+      unsigned int n = 0;
+      while (flo > 0.)
+        {
+          hi       = lo;
+          fhi      = flo;
+          double c = lo - d;
+          if (c <= l_lo)
+            c = 0.5 * (lo + l_lo);
+          if (c <= l_lo || c >= lo || ++n > 400)
+            {
+              set(why, "no lambda1 below the guess gives the required s1");
+              return false;
+            }
+          lo  = c;
+          flo = f(lo);
+          d *= 2.;
+        }
+      while (fhi < 0.)
+        {
+          lo       = hi;
+          flo      = fhi;
+          double c = hi + d;
+          if (c >= l_hi)
+            c = 0.5 * (hi + l_hi);
+          if (c >= l_hi || c <= hi || ++n > 400)
+            {
+              set(why, "no lambda1 above the guess gives the required s1");
+              return false;
+            }
+          hi  = c;
+          fhi = f(hi);
+          d *= 2.;
+        }
+      return true;
+    }
+
+    /// Whether s1 rises from @p guess to the root @p x at every one of 33
+    /// points: otherwise the law lost monotonicity (pull-in, loss of
+    /// ellipticity) and the root lies on another branch of the law.
+    bool rises_to_root(const ShootingLaw &law, const double l2, const double guess,
+                       const double x, std::string *why)
+    {
+      constexpr unsigned int n_check = 32;
+      for (unsigned int i = 0; i <= n_check; ++i)
+        {
+          const double l1 = guess + (x - guess) * i / n_check;
+          if (!(law.tangent(l1, l2).s11 > 0.))
+            {
+              std::ostringstream o;
+              o << "ds1/dlambda1 <= 0 at lambda1 = " << l1 << " between the start " << guess
+                << " and the solution " << x << " (loss of monotonicity of the law, pull-in)";
+              set(why, o.str());
+              return false;
+            }
+        }
+      return true;
+    }
+  } // namespace
+
   std::optional<double> solve_lambda1(const ShootingLaw &law, const double l2,
                                       const double target, double guess, std::string *why)
   {
@@ -76,76 +360,24 @@ namespace cdea::shooting
     if (!std::isfinite(guess) || guess <= l_lo || guess >= l_hi)
       guess = std::sqrt(l_lo * l_hi);
     const auto f = [&](const double l1) { return law.stress(l1, l2).s1 - target; };
-
-    // Grow a bracket [lo, hi] with f(lo) <= 0 < f(hi) around the guess; never
-    // step onto the domain ends (f tends to -inf at l_lo and to +inf at l_hi).
-    double       lo = guess, hi = guess;
-    double       flo = f(guess), fhi = flo;
-    double       d   = 0.02 * guess;
-    unsigned int n   = 0;
-    while (flo > 0.)
-      {
-        hi      = lo;
-        fhi     = flo;
-        double c = lo - d;
-        if (c <= l_lo)
-          c = 0.5 * (lo + l_lo);
-        if (c <= l_lo || c >= lo || ++n > 400)
-          {
-            set(why, "no lambda1 below the guess gives the required s1");
-            return std::nullopt;
-          }
-        lo  = c;
-        flo = f(lo);
-        d *= 2.;
-      }
-    while (fhi < 0.)
-      {
-        lo       = hi;
-        flo      = fhi;
-        double c = hi + d;
-        if (c >= l_hi)
-          c = 0.5 * (hi + l_hi);
-        if (c >= l_hi || c <= hi || ++n > 400)
-          {
-            set(why, "no lambda1 above the guess gives the required s1");
-            return std::nullopt;
-          }
-        hi  = c;
-        fhi = f(hi);
-        d *= 2.;
-      }
+    double     lo = 0., flo = 0., hi = 0., fhi = 0.;
+    if (!grow_bracket(f, guess, l_lo, l_hi, lo, flo, hi, fhi, why))
+      return std::nullopt;
     // The toolbox's safeguarded Newton to rounding level (the derivative is
     // cheap here; TOMS 748 without it made shooting runs up to 10 % slower).
     const auto df = [&](const double l1) { return law.tangent(l1, l2).s11; };
     BracketedRootSettings settings;
     settings.max_evaluations = 200;
     const BracketedRoot root  = find_bracketed_root_newton(f, df, lo, flo, hi, fhi, settings);
-    const double        x     = root.x;
     const double        scale = std::abs(target) + law.constants().shear_modulus;
     if (!(std::abs(root.f) <= 1e-9 * scale))
       {
         set(why, "the s1 equation for lambda1 did not converge");
         return std::nullopt;
       }
-    // The root must be reached from the guess along a rising s1: otherwise the
-    // law lost monotonicity (pull-in, loss of ellipticity) and the root lies on
-    // another branch of the law.
-    constexpr unsigned int n_check = 32;
-    for (unsigned int i = 0; i <= n_check; ++i)
-      {
-        const double l1 = guess + (x - guess) * i / n_check;
-        if (!(law.tangent(l1, l2).s11 > 0.))
-          {
-            std::ostringstream o;
-            o << "ds1/dlambda1 <= 0 at lambda1 = " << l1 << " between the start "
-              << guess << " and the solution " << x
-              << " (loss of monotonicity of the law, pull-in)";
-            set(why, o.str());
-            return std::nullopt;
-          }
-      }
-    return x;
+    if (!rises_to_root(law, l2, guess, root.x, why))
+      return std::nullopt;
+    return root.x;
   }
 
   MeridianIntegrator::MeridianIntegrator(const Scene &scene,
@@ -239,166 +471,24 @@ namespace cdea::shooting
     p.theta0        = theta0;
     p.lambda1_start = lambda1_start;
     p.message       = check_load(load);
+    const bool cone = load.force > 0.;
+    if (p.message.empty() && cone && !(theta0 > 0. && theta0 < pi))
+      p.message = "the shooting angle must lie in (0, pi) under a dead load";
+    if (p.message.empty() && !cone && theta0 != 0.)
+      p.message = "without a dead load the film is flat: theta0 must be 0";
     if (!p.message.empty())
       return p;
-    const bool cone = load.force > 0.;
-    if (cone && !(theta0 > 0. && theta0 < pi))
-      {
-        p.message = "the shooting angle must lie in (0, pi) under a dead load";
-        return p;
-      }
-    if (!cone && theta0 != 0.)
-      {
-        p.message = "without a dead load the film is flat: theta0 must be 0";
-        return p;
-      }
-
-    const auto         law   = laws(load);
-    const unsigned int n     = sc.n_rings();
-    const unsigned int m     = std::max(2u, opts.samples_per_ring);
-    std::string        fail;   // reason of the last refused state
-    double             fail_x = 0.;
-    unsigned int       ring   = 0;
-
-    // Right-hand side in x = R/A, refusing states outside the model's domain.
-    const auto rhs = [&](const double x, const State &y, State &dy) -> bool {
-      const double th = y[2], l1 = y[3];
-      const double l2 = y[0] / x;
-      fail_x          = x;
-      if (!(l1 > 0.) || !(l2 > 0.))
-        {
-          fail = "a stretch became non-positive";
-          return false;
-        }
-      if (!(law[ring].gent_margin(l1, l2) > 0.))
-        {
-          fail = "the Gent limit was reached (g <= 0)";
-          return false;
-        }
-      if (cone && !(th > 0. && th < pi))
-        {
-          fail = "theta left (0, pi)";
-          return false;
-        }
-      const auto s = law[ring].stress(l1, l2);
-      const auto t = law[ring].tangent(l1, l2);
-      if (!(t.s11 > 0.))
-        {
-          fail = "ds1/dlambda1 <= 0 (loss of monotonicity, pull-in)";
-          return false;
-        }
-      if (cone && !(s.s1 > 0.))
-        {
-          fail = "the meridian stress s1 became non-positive";
-          return false;
-        }
-      const double c = std::cos(th), sn = std::sin(th);
-      const double dl2 = (l1 * c - l2) / x;
-      dy[0]            = l1 * c;
-      dy[1]            = -l1 * sn;
-      dy[2]            = cone ? -s.s2 * sn / (s.s1 * x) : 0.;
-      dy[3]            = (s.s2 * c - s.s1 - x * t.s12 * dl2) / (x * t.s11);
-      return std::isfinite(dy[2]) && std::isfinite(dy[3]);
-    };
 
     Integrator::Control control;
     control.rtol      = opts.tolerance;
     control.atol      = opts.effective_absolute_tolerance();
     control.max_steps = opts.max_steps_per_ring;
-    const Integrator rk(control);
-
-    State y(load.stretch, 0., theta0, lambda1_start);
-    p.s2_min   = std::numeric_limits<double>::infinity();
-    // Keep the smallest hoop stress and where it occurs (x = R/A).
-    const auto note_s2 = [&](const double s2, const double x) {
-      if (s2 < p.s2_min)
-        {
-          p.s2_min        = s2;
-          p.s2_min_radius = x * A;
-        }
-    };
-    double h   = 0.;
-    const auto failed = [&](const std::string &what, const State *at = nullptr) {
-      std::ostringstream o;
-      o << what << " in ring " << ring + 1 << " at R/A = " << fail_x;
-      if (at != nullptr)
-        {
-          const double l1 = (*at)[3], l2 = (*at)[0] / fail_x;
-          o << " (l1 = " << l1 << ", l2 = " << l2 << ", theta = " << (*at)[2]
-            << ", g = " << law[ring].gent_margin(l1, l2) << ", ds1/dl1 / mu = "
-            << law[ring].tangent(l1, l2).s11 / sc.material.shear_modulus << ")";
-        }
-      p.message = o.str();
+    const auto law    = laws(load);
+    State      y(load.stretch, 0., theta0, lambda1_start);
+    RingByRing rings(law, edges, A, sc.material.shear_modulus, control, cone,
+                     with_samples ? std::max(2u, opts.samples_per_ring) : 0u, p);
+    if (!rings.run(y))
       return p;
-    };
-
-    for (ring = 0; ring < n; ++ring)
-      {
-        const double x0 = edges[ring], x1 = edges[ring + 1];
-        if (ring > 0)
-          {
-            // s1 continuity (eq. 14): l1 jumps to the next ring's law.
-            const double l2     = y[0] / x0;
-            const double s1_old = law[ring - 1].stress(y[3], l2).s1;
-            std::string  why;
-            const auto   l1 = solve_lambda1(law[ring], l2, s1_old, y[3], &why);
-            fail_x          = x0;
-            if (!l1)
-              return failed("ring edge: " + why);
-            y[3] = *l1;
-          }
-        if (!(law[ring].gent_margin(y[3], y[0] / x0) > 0.))
-          {
-            fail_x = x0;
-            return failed("the Gent limit was reached (g <= 0)");
-          }
-        const double s2_in = law[ring].plain_stress(y[3], y[0] / x0).s2;
-        p.s2_ring_inner.push_back(s2_in);
-        note_s2(s2_in, x0);
-
-        // Uniform samples x0 + j (x1 - x0)/(m - 1), j = 0 .. m-1.
-        unsigned int next   = 0;
-        const auto   sample = [&](const unsigned int j) {
-          return j == m - 1 ? x1 : x0 + j * (x1 - x0) / (m - 1);
-        };
-        if (with_samples)
-          push_sample(p.samples, law[ring], ring, A, x0, y);
-        ++next;
-
-        const auto observe = [&](const Integrator::DenseStep &step, const double x,
-                                 const State &ye) {
-          note_s2(law[ring].plain_stress(ye[3], ye[0] / x).s2, x);
-          if (!with_samples)
-            return;
-          while (next < m - 1 && sample(next) <= x)
-            {
-              const double xs = sample(next);
-              const State  ys = step(xs);
-              push_sample(p.samples, law[ring], ring, A, xs, ys);
-              note_s2(law[ring].plain_stress(ys[3], ys[0] / xs).s2, xs);
-              ++next;
-            }
-        };
-        const auto res = rk.integrate(rhs, x0, x1, y, h, observe);
-        p.rhs_evaluations += res.rhs_evaluations;
-        p.accepted_steps += res.accepted_steps;
-        p.rejected_steps += res.rejected_steps;
-        if (!res.ok)
-          {
-            if (res.domain_failure)
-              return failed(fail);
-            fail_x = res.x;
-            return failed(res.accepted_steps + res.rejected_steps >= control.max_steps ?
-                            "too many Runge-Kutta steps" :
-                            "the Runge-Kutta step size underflowed (the solution "
-                            "turns singular)",
-                          &res.y);
-          }
-        y = res.y;
-        h = res.h_next;
-        if (with_samples)
-          push_sample(p.samples, law[ring], ring, A, x1, y);
-      }
 
     // Shift z so that z(B) = 0; the disk then sits at z(A) = -z_end.
     const double z_end = y[1] * A;

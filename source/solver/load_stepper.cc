@@ -50,15 +50,6 @@ namespace cdea
     postprocessors.push_back(std::move(postprocessor));
   }
 
-  std::vector<SummaryColumn> LoadStepper::columns() const
-  {
-    std::vector<SummaryColumn> all;
-    for (const auto &p : postprocessors)
-      for (const auto &c : p->columns())
-        all.push_back(c);
-    return all;
-  }
-
   LoadState LoadStepper::load(const Stage stage, const double t) const
   {
     if (stage == Stage::voltage)

@@ -1,3 +1,4 @@
+#include <cdea/model/output_fields.h>
 #include <cdea/solver/postprocessors.h>
 
 #include <cmath>
@@ -30,27 +31,18 @@ namespace cdea
     return s;
   }
 
-  std::vector<SummaryColumn> ModelQuantities::columns() const
-  {
-    return {{"wrinkled_zone_inner_mm", "mm",
-             "pre-stretched flat radius lam_pre R where the relaxed law's wrinkled zone starts "
-             "(NaN: none, or Wrinkling/Model = check)"},
-            {"wrinkled_zone_outer_mm", "mm",
-             "pre-stretched flat radius where the wrinkled zone ends"}};
-  }
-
   void ModelQuantities::evaluate(StepContext &context, StepSummary &summary)
   {
-    std::vector<std::pair<std::string, double>> columns = std::move(summary.columns);
+    ColumnValues columns = std::move(summary.columns);
     summary             = context.model.summary();
     summary.columns     = std::move(columns);
     summary.stage       = context.stage;
     summary.load_factor = context.load_factor;
     summary.wrinkled    = context.stage != Stage::prestretch && summary.s2_min < 0.;
-    summary.columns.emplace_back("wrinkled_zone_inner_mm",
-                                 prestretch * summary.wrinkled_zone_inner * 1e3);
-    summary.columns.emplace_back("wrinkled_zone_outer_mm",
-                                 prestretch * summary.wrinkled_zone_outer * 1e3);
+    summary.columns.set(summary_column::wrinkled_zone_inner,
+                        prestretch * summary.wrinkled_zone_inner);
+    summary.columns.set(summary_column::wrinkled_zone_outer,
+                        prestretch * summary.wrinkled_zone_outer);
   }
 
   void Stroke::evaluate(StepContext &context, StepSummary &summary)
@@ -62,27 +54,13 @@ namespace cdea
     summary.stroke = reference ? summary.displacement - *reference : nan;
   }
 
-  std::vector<SummaryColumn> Stability::columns() const
-  {
-    return {{"min_eigenvalue", "N/m",
-             "smallest eigenvalue of the tangent with dead load and voltages held (NaN: "
-             "Solver/Stability check off)"},
-            {"stable", "0/1", "min_eigenvalue > 0"}};
-  }
-
   void Stability::evaluate(StepContext &context, StepSummary &summary)
   {
     summary.min_eigenvalue = enabled ? context.model.min_tangent_eigenvalue() : nan;
-    summary.columns.emplace_back("min_eigenvalue", summary.min_eigenvalue);
-    summary.columns.emplace_back("stable", std::isnan(summary.min_eigenvalue) ?
-                                             nan :
-                                             double(summary.min_eigenvalue > 0.));
-  }
-
-  std::vector<SummaryColumn> MaxField::columns() const
-  {
-    return {{"max_field_MV_per_m", "MV/m",
-             "largest true electric field (NaN: breakdown check off)"}};
+    summary.columns.set(summary_column::min_eigenvalue, summary.min_eigenvalue);
+    summary.columns.set(summary_column::stable, std::isnan(summary.min_eigenvalue) ?
+                                                  nan :
+                                                  double(summary.min_eigenvalue > 0.));
   }
 
   void MaxField::evaluate(StepContext &context, StepSummary &summary)
@@ -99,17 +77,7 @@ namespace cdea
               summary.max_field_radius = f.R[i];
             }
       }
-    summary.columns.emplace_back("max_field_MV_per_m", summary.max_field * 1e-6);
-  }
-
-  std::vector<SummaryColumn> EnclosedVolume::columns() const
-  {
-    return {{"volume_mm3", "mm^3",
-             "volume enclosed between the frame plane and the deformed membrane with the disk, "
-             "pi int r^2 dz"},
-            {"volume_change_mm3", "mm^3",
-             "enclosed volume minus its value at the end of the load stage (NaN before)"},
-            {"level_drop_mm", "mm", "volume change / cross-section of the Reservoir level tube"}};
+    summary.columns.set(summary_column::max_field, summary.max_field);
   }
 
   void EnclosedVolume::evaluate(StepContext &context, StepSummary &summary)
@@ -121,9 +89,9 @@ namespace cdea
       reference = volume;
     volume_change = reference ? volume - *reference : nan;
     level_drop    = volume_change / tube_area;
-    summary.columns.emplace_back("volume_mm3", volume * 1e9);
-    summary.columns.emplace_back("volume_change_mm3", volume_change * 1e9);
-    summary.columns.emplace_back("level_drop_mm", level_drop * 1e3);
+    summary.columns.set(summary_column::volume, volume);
+    summary.columns.set(summary_column::volume_change, volume_change);
+    summary.columns.set(summary_column::level_drop, level_drop);
   }
 
   std::vector<std::unique_ptr<Postprocessor>>

@@ -1,3 +1,4 @@
+#include <cdea/model/output_fields.h>
 #include <cdea/solver/state_check.h>
 
 #include <algorithm>
@@ -75,16 +76,9 @@ namespace cdea
     return flags;
   }
 
-  std::vector<SummaryColumn> NonPhysicalCheck::columns() const
-  {
-    return {{"nonphysical", "bits",
-             "0: a possible state; 1: the meridian leaves 0 <= r <= b; 2: it crosses itself "
-             "or the disk (3: both)"}};
-  }
-
   void NonPhysicalCheck::evaluate(StepContext &context, StepSummary &summary)
   {
-    summary.columns.emplace_back("nonphysical",
-                                 double(nonphysical_flags(context.fields(), frame_radius)));
+    summary.columns.set(summary_column::nonphysical,
+                        double(nonphysical_flags(context.fields(), frame_radius)));
   }
 } // namespace cdea

@@ -1,4 +1,5 @@
 #include <cdea/base/format.h>
+#include <cdea/model/output_fields.h>
 #include <cdea/numerics/bracketed_root.h>
 #include <cdea/model/load_state.h>
 #include <cdea/solver/time_stepper.h>
@@ -24,24 +25,13 @@ namespace cdea
   public:
     double time = nan, velocity = nan, work = nan, stored_change = nan, dissipated = nan;
 
-    std::vector<SummaryColumn> columns() const override
-    {
-      return {{"time_s", "s", "time since the voltage waveform started (negative: rest)"},
-              {"disk_velocity_mm_per_s", "mm/s", "velocity of the disk dz(A)/dt"},
-              {"electrical_work_mJ", "mJ",
-               "electrical work done on the film since the start of the time integration"},
-              {"stored_energy_change_mJ", "mJ",
-               "change of elastic, weight, water, electrostatic and kinetic energy since then"},
-              {"dissipated_energy_mJ", "mJ", "energy dissipated by the dashpots since then"}};
-    }
-
     void evaluate(StepContext &, StepSummary &summary) override
     {
-      summary.columns.emplace_back("time_s", time);
-      summary.columns.emplace_back("disk_velocity_mm_per_s", velocity * 1e3);
-      summary.columns.emplace_back("electrical_work_mJ", work * 1e3);
-      summary.columns.emplace_back("stored_energy_change_mJ", stored_change * 1e3);
-      summary.columns.emplace_back("dissipated_energy_mJ", dissipated * 1e3);
+      summary.columns.set(summary_column::waveform_time, time);
+      summary.columns.set(summary_column::disk_velocity, velocity);
+      summary.columns.set(summary_column::electrical_work, work);
+      summary.columns.set(summary_column::stored_energy_change, stored_change);
+      summary.columns.set(summary_column::dissipated_energy, dissipated);
     }
   };
 
@@ -56,21 +46,6 @@ namespace cdea
   void TimeStepper::add_postprocessor(const PostprocessorFactory &make)
   {
     factories.push_back(make);
-  }
-
-  std::vector<SummaryColumn> TimeStepper::columns() const
-  {
-    std::vector<SummaryColumn> all;
-    std::vector<std::unique_ptr<Postprocessor>> list =
-      standard_postprocessors(scene.prestretch, time_stage_stability(),
-                              quasi_static.breakdown_field > 0.);
-    for (const auto &make : factories)
-      list.push_back(make());
-    list.push_back(std::make_unique<TimeColumns>());
-    for (const auto &p : list)
-      for (const auto &c : p->columns())
-        all.push_back(c);
-    return all;
   }
 
   bool TimeStepper::fields_wanted() const { return quasi_static_stepper || wants_fields; }

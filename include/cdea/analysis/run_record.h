@@ -5,7 +5,7 @@
 
 #include <cdea/analysis/run_input.h>
 #include <cdea/model/records.h>
-#include <cdea/output/results_layout.h>
+#include <cdea/model/output_fields.h>
 #include <cdea/solver/load_stepper.h>
 
 #include <cstddef>
@@ -33,8 +33,6 @@ namespace cdea
   /// "stopped after step N: <why>" (N the last of @p n_steps steps kept).
   std::string run_status(const RunResult &result, std::size_t n_steps);
 
-  /// The extra /summary column @p name of a step (NaN if absent).
-  double summary_column(const StepSummary &s, const std::string &name);
 
   /// A run kept in memory.
   struct RunRecord
@@ -48,8 +46,6 @@ namespace cdea
     std::string  parameters; ///< every parameter (root attribute)
     unsigned int n_rings = 0;
     std::string  results_path; ///< where the command would write the results
-    /// Unit and meaning of the postprocessors' extra /summary columns.
-    std::vector<SummaryColumn> columns;
     std::vector<StepSummary>   steps;  ///< one per converged step
     std::vector<StepFields>    fields; ///< the fields of each step
     /// Completed or why not, onset, limit points, breakdown, counts. A run

@@ -198,5 +198,14 @@ namespace cdea
     /// Reference radii of the ring edges (n_rings + 1) and, per cell, the
     /// fractions f0, fh of its ring.
     std::vector<double> ring_edges, fraction_x0, fraction_h;
+
+    /// The steps of assemble(): zero what @p flags ask for in @p system; the
+    /// unknowns of cell @p c into local_x and the local contribution zeroed;
+    /// the shape-parameter derivatives of cell @p c by the chain rule; the
+    /// local contribution added into @p system at @p dofs.
+    void start(unsigned int flags, AssembledSystem &system) const;
+    void gather(unsigned int c, const Eigen::VectorXd &x, unsigned int flags);
+    void add_shape_derivatives(unsigned int c);
+    void scatter(const unsigned int *dofs, unsigned int flags, AssembledSystem &system) const;
   };
 } // namespace cdea

@@ -6,15 +6,21 @@
 // quadrature point; laws are immutable, so one object serves every ring.
 //
 // A law may carry internal variables per material point (a viscous stretch,
-// say). The FE model stores them, n_internal_variables() numbers per
-// quadrature point, for two times: `old` (the last accepted time step, read
+// say), and declares them (internal_variables(): name, unit, description,
+// the value a relaxed point has, whether the results hold them). The FE model
+// stores them, n_internal_variables() numbers per quadrature point in the
+// declared order, for two times: `old` (the last accepted time step, read
 // only) and `current` (written by evaluate(): the update rule of the law for
 // the step from old to current, and the stresses and the consistent tangent
-// at the updated values). An elastic law has none and ignores the step.
+// at the updated values). Everything outside the law (fields, results file,
+// journal, Python) takes them from the declaration, never by index. An
+// elastic law has none and ignores the step.
 
 #include <cdea/material/gent_dielectric.h>
 
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace cdea
 {
@@ -79,20 +85,52 @@ namespace cdea
     voltage       = 3
   };
 
+  /// The value an internal variable has at a point held long enough at its
+  /// stretches to be in equilibrium with them (relaxed), which is also where
+  /// a run starts. A variable that relaxes to a stretch is interpolated
+  /// between quadrature points as the log of its ratio to that stretch (so
+  /// that it stays relaxed where it is); one that relaxes to zero linearly.
+  enum class RelaxedValue
+  {
+    meridian_stretch, ///< l1
+    hoop_stretch,     ///< l2
+    zero
+  };
+
+  /// One internal variable of a law, as the law declares it.
+  struct InternalVariable
+  {
+    std::string  name;        ///< its /steps dataset of a time run (if written)
+    std::string  unit;        ///< of the stored value, which the file holds as it is
+    std::string  description;
+    RelaxedValue relaxed = RelaxedValue::zero;
+    bool         written = true; ///< a /steps field (false: state only, e.g. a rate)
+  };
+
   class MembraneLaw
   {
   public:
+    /// @p internal_variables: the law's declaration, in the order of the
+    /// numbers it stores per point (none for an elastic law).
+    explicit MembraneLaw(std::vector<InternalVariable> internal_variables = {})
+      : internal(std::move(internal_variables))
+    {}
     virtual ~MembraneLaw() = default;
 
+    /// The internal variables per material point, in their stored order.
+    const std::vector<InternalVariable> &internal_variables() const { return internal; }
+
     /// Numbers stored per material point (0: an elastic law).
-    virtual unsigned int n_internal_variables() const { return 0; }
+    unsigned int n_internal_variables() const { return static_cast<unsigned int>(internal.size()); }
 
     /// Internal variables of a point held long enough at (l1, l2) to be in
-    /// equilibrium with them (for a viscous network: relaxed).
-    virtual void relaxed_internal_variables(const LawInput &input, double *values) const
+    /// equilibrium with them (RelaxedValue of each).
+    void relaxed_internal_variables(const LawInput &input, double *values) const
     {
-      (void)input;
-      (void)values;
+      for (std::size_t i = 0; i < internal.size(); ++i)
+        values[i] = internal[i].relaxed == RelaxedValue::meridian_stretch ? input.l1 :
+                    internal[i].relaxed == RelaxedValue::hoop_stretch     ? input.l2 :
+                                                                            0.;
     }
 
     /// Energy, stresses and tangent as @p request asks (LawRequest bits);
@@ -125,6 +163,9 @@ namespace cdea
       (void)step;
       return 0.;
     }
+
+  private:
+    std::vector<InternalVariable> internal;
   };
 
 } // namespace cdea

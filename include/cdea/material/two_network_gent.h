@@ -34,8 +34,9 @@
 // dt = 0 holds xi fixed (instantaneous, "glassy" response); dt = +infinity
 // relaxes network B completely (xi = l, W_B = 0: network A alone).
 //
-// Internal variables per point, in this order: xi1, xi2, q1, q2 with
-// q = de/dt at the end of the step (1/s), which the trapezoidal rule needs.
+// Internal variables per point (declared in the constructor): xi1, xi2 (the
+// results hold them) and q1, q2 with q = de/dt at the end of the step (1/s),
+// which the trapezoidal rule needs.
 
 #include <cdea/material/membrane_law.h>
 
@@ -54,11 +55,6 @@ namespace cdea
   public:
     /// @p network_a: mu_A, Jlim_A and the dielectric (permittivity, thickness).
     TwoNetworkGentLaw(const MaterialConstants &network_a, const ViscousNetwork &network_b);
-
-    unsigned int n_internal_variables() const override { return 4; }
-
-    /// xi = (l1, l2), no viscous rate.
-    void relaxed_internal_variables(const LawInput &input, double *values) const override;
 
     /// Energy is the incremental potential Psi of the step (W itself for
     /// dt = 0); false outside either Gent limit or if the local update fails.

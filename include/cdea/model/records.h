@@ -1,6 +1,7 @@
 #pragma once
 // What a solver (FE or shooting) reports for one converged equilibrium, in SI
-// units. The HDF5 writer converts to the file's units (mm, kPa, kV, MV/m, g).
+// units. The HDF5 writer converts to the file's units (mm, kPa, kV, MV/m, g)
+// by the table of output fields (output_fields.h).
 
 #include <limits>
 #include <string>
@@ -9,6 +10,57 @@
 
 namespace cdea
 {
+  struct OutputField;
+
+  /// The values of the /summary columns the postprocessors add, each by its
+  /// row of the table (the handles in namespace summary_column of
+  /// output_fields.h), in SI units and in the order they were set.
+  class ColumnValues
+  {
+  public:
+    using Entry = std::pair<const OutputField *, double>;
+
+    /// Sets (or overwrites) the value of @p column.
+    void set(const OutputField &column, double value)
+    {
+      for (Entry &e : entries)
+        if (e.first == &column)
+          {
+            e.second = value;
+            return;
+          }
+      entries.emplace_back(&column, value);
+    }
+
+    bool has(const OutputField &column) const
+    {
+      for (const Entry &e : entries)
+        if (e.first == &column)
+          return true;
+      return false;
+    }
+
+    /// The SI value of @p column; NaN if it was not set.
+    double get(const OutputField &column) const
+    {
+      for (const Entry &e : entries)
+        if (e.first == &column)
+          return e.second;
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+
+    /// The value of @p column in the file's unit (get() times its factor).
+    double in_file_units(const OutputField &column) const;
+
+    std::vector<Entry>::const_iterator begin() const { return entries.begin(); }
+    std::vector<Entry>::const_iterator end() const { return entries.end(); }
+    bool                               empty() const { return entries.empty(); }
+    std::size_t                        size() const { return entries.size(); }
+
+  private:
+    std::vector<Entry> entries;
+  };
+
   enum class Stage : int
   {
     prestretch = 0,
@@ -44,9 +96,18 @@ namespace cdea
     /// not (e.g. the relaxed law loses ellipticity at some radius).
     std::string validity_limit;
     unsigned int        newton_iterations = 0;
-    /// Further /summary columns of the postprocessors: name (with its unit)
-    /// and value, in the order they were registered.
-    std::vector<std::pair<std::string, double>> columns;
+    /// Further /summary columns of the postprocessors, by their rows of the
+    /// table of output fields (SI).
+    ColumnValues columns;
+  };
+
+  /// An internal variable of the material law along the meridian, as the law
+  /// declares it (MembraneLaw::internal_variables()): a /steps dataset of
+  /// its own, values in its unit.
+  struct InternalField
+  {
+    std::string         name, unit, description;
+    std::vector<double> values;
   };
 
   /// Fields along the meridian, one entry per sample point (SI; theta in rad).
@@ -54,8 +115,12 @@ namespace cdea
   {
     std::vector<double> R, r, z, theta, lambda1, lambda2, s1, s2, E, Phi;
     std::vector<int>    ring;
-    /// Viscous stretches of a law with internal variables (empty otherwise).
-    std::vector<double> xi1, xi2;
+    /// The law's internal variables that it writes (empty for an elastic law).
+    std::vector<InternalField> internal;
+
+    /// The values of the internal variable @p name; throws
+    /// std::out_of_range if the law has none of that name.
+    const std::vector<double> &internal_values(const std::string &name) const;
   };
 
   /// Where the hoop stress first reaches zero (also used for the first

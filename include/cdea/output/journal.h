@@ -40,8 +40,10 @@ namespace cdea
     /// last complete record.
     void describe_column(const std::string &name, const std::string &unit,
                          const std::string &description);
+    /// A step; before it, the description of each column of
+    /// summary.columns not yet recorded.
     void append(const StepSummary &summary, const StepFields &fields,
-                const std::vector<std::pair<std::string, double>> &extra_columns);
+                const std::vector<NamedColumn> &extra_columns);
     void onset(const OnsetRecord &onset);
     void summary_attribute(const std::string &name, const std::vector<double> &values,
                            unsigned int rows, unsigned int columns);
@@ -54,6 +56,8 @@ namespace cdea
     int         fd    = -1;
     std::size_t bytes = 0;
     std::string file;
+    /// The columns of the table whose description is recorded.
+    std::vector<const OutputField *> described;
     void        write_record(unsigned char type, const std::string &payload);
   };
 

@@ -1,7 +1,7 @@
 #pragma once
 // The HDF5 layout of a results file, built in memory (see results_file.h for
-// the layout and for how it reaches the disk safely). Plain HDF5 C API, no
-// deal.II.
+// the layout and for how it reaches the disk safely), from the table of
+// output fields (model/output_fields.h). Plain HDF5 C API, no deal.II.
 
 #include <cdea/model/records.h>
 
@@ -12,6 +12,15 @@
 
 namespace cdea
 {
+  /// A /summary column outside the table, by name (the unit in the name),
+  /// with its value as written.
+  using NamedColumn = std::pair<std::string, double>;
+
+  /// The /summary columns beyond the standard ones of a step: those of
+  /// summary.columns (names and file units from the table), then @p extra.
+  std::vector<NamedColumn> named_columns(const StepSummary              &summary,
+                                         const std::vector<NamedColumn> &extra);
+
   class ResultsDocument
   {
   public:
@@ -31,9 +40,11 @@ namespace cdea
     /// Throws std::invalid_argument if append() would reject these (see
     /// ResultsFile::append()); changes nothing.
     void check_append(const StepSummary &summary, const StepFields &fields,
-                      const std::vector<std::pair<std::string, double>> &extra_columns) const;
+                      const std::vector<NamedColumn> &extra_columns = {}) const;
+    /// The columns of summary.columns are described by their rows of the
+    /// table when they first appear.
     void append(const StepSummary &summary, const StepFields &fields,
-                const std::vector<std::pair<std::string, double>> &extra_columns);
+                const std::vector<NamedColumn> &extra_columns = {});
     void describe_column(const std::string &name, const std::string &unit,
                          const std::string &description);
     void check_onset(const OnsetRecord &onset) const;

@@ -13,14 +13,16 @@
 //       stage (int: 0 pre-stretch, 1 load, 2 voltage), load_factor,
 //       voltage_kV [rings], mass_g, displacement_mm, stroke_mm (NaN allowed),
 //       s2_min_kPa, s2_ring_inner_kPa [rings], wrinkled (int 0/1),
-//       newton_iterations (int), plus extra columns (double, NaN-padded for
-//       rows written before the column first appeared)
+//       newton_iterations (int), plus the postprocessors' columns and any
+//       extra columns (double, NaN-padded for rows written before the column
+//       first appeared)
 //     attributes: onset_found (int), onset_voltage_kV (double[n_rings]),
 //                 onset_radius_mm (double), onset_load_factor (double: the
 //                 stage parameter t there), plus set_summary_attribute() ones
 //   /steps/NNNNNN           one group per appended step (6 digits from 000000)
 //       R, r, z (mm), theta (rad), lambda1, lambda2, s1, s2 (kPa), E (MV/m),
-//       Phi (kV), ring (int), and xi1, xi2 for a viscous film (time runs);
+//       Phi (kV), ring (int), and the internal variables the material law
+//       writes (xi1, xi2 for the viscous film of a time run);
 //       1D, one entry per sample point. A step appended with empty fields
 //       (R empty) has a /summary row and no group (time runs, doc/time.md)
 //     attributes: stage (int), load_factor, voltage_kV (double[n_rings]),
@@ -69,11 +71,13 @@ namespace cdea
     ResultsFile(ResultsFile &&) noexcept;
     ResultsFile &operator=(ResultsFile &&) noexcept;
 
-    /// Adds one row to /summary and the group /steps/NNNNNN.
-    /// @p extra_columns are further /summary datasets (double, written as
-    /// given; the name carries the unit, e.g. "volume_mm3"). A column first
-    /// seen now is NaN for earlier rows; a known column left out now is NaN
-    /// in this row.
+    /// Adds one row to /summary and the group /steps/NNNNNN. The columns of
+    /// summary.columns become /summary datasets with the names, units,
+    /// descriptions and file units of their rows of the table
+    /// (model/output_fields.h); @p extra_columns are further ones outside
+    /// the table (double, written as given; the name carries the unit, e.g.
+    /// "energy_mJ"). A column first seen now is NaN for earlier rows; a
+    /// known column left out now is NaN in this row.
     /// Throws std::invalid_argument (before recording anything) if
     /// summary.voltages or summary.s2_ring_inner do not have n_rings entries,
     /// if the field vectors differ in length, or if an extra column name is

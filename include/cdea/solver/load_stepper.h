@@ -67,8 +67,6 @@ namespace cdea
 
     /// Register a further postprocessor, called after the standard ones.
     void add_postprocessor(std::unique_ptr<Postprocessor> postprocessor);
-    /// The extra /summary columns of every registered postprocessor.
-    std::vector<SummaryColumn> columns() const;
 
     /// Called after each converged step, with the model in that state. The
     /// summary is complete (every postprocessor's part and the iterations).

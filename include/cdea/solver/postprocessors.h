@@ -3,8 +3,9 @@
 // once with the load stepper and called after every converged step (and at
 // the states its crossing searches visit), in the manner of ASPECT's
 // postprocessors. Each fills its part of the StepSummary; quantities beyond
-// StepSummary's typed ones go into StepSummary::columns (name with unit,
-// value) and become /summary columns of the results file.
+// StepSummary's typed ones go into StepSummary::columns by their rows of the
+// table of output fields (model/output_fields.h, namespace summary_column)
+// and become /summary columns of the results file.
 //
 // The fields along the meridian are computed at most once per state
 // (StepContext::fields()) and shared by every postprocessor and the writer.
@@ -46,18 +47,10 @@ namespace cdea
     std::shared_ptr<const StepFields> cached_fields;
   };
 
-  /// Name, unit and meaning of a column a postprocessor adds.
-  struct SummaryColumn
-  {
-    std::string name, unit, description;
-  };
-
   class Postprocessor
   {
   public:
     virtual ~Postprocessor() = default;
-    /// The columns this adds to StepSummary::columns (in that order).
-    virtual std::vector<SummaryColumn> columns() const { return {}; }
     /// Its quantities of the state of @p context into @p summary.
     virtual void evaluate(StepContext &context, StepSummary &summary) = 0;
   };
@@ -70,7 +63,6 @@ namespace cdea
     explicit ModelQuantities(double prestretch)
       : prestretch(prestretch)
     {}
-    std::vector<SummaryColumn> columns() const override;
     void evaluate(StepContext &context, StepSummary &summary) override;
 
   private:
@@ -95,7 +87,6 @@ namespace cdea
     explicit Stability(bool enabled)
       : enabled(enabled)
     {}
-    std::vector<SummaryColumn> columns() const override;
     void evaluate(StepContext &context, StepSummary &summary) override;
 
   private:
@@ -109,7 +100,6 @@ namespace cdea
     explicit MaxField(bool enabled)
       : enabled(enabled)
     {}
-    std::vector<SummaryColumn> columns() const override;
     void evaluate(StepContext &context, StepSummary &summary) override;
 
   private:
@@ -124,7 +114,6 @@ namespace cdea
     explicit EnclosedVolume(double tube_area)
       : tube_area(tube_area)
     {}
-    std::vector<SummaryColumn> columns() const override;
     void evaluate(StepContext &context, StepSummary &summary) override;
 
     double volume        = 0.; ///< m^3, of the last evaluation

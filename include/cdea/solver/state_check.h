@@ -31,7 +31,6 @@ namespace cdea
     explicit NonPhysicalCheck(double frame_radius)
       : frame_radius(frame_radius)
     {}
-    std::vector<SummaryColumn> columns() const override;
     void evaluate(StepContext &context, StepSummary &summary) override;
 
   private:

@@ -72,8 +72,6 @@ namespace cdea
     /// A postprocessor for both parts of the run (made once for each).
     using PostprocessorFactory = std::function<std::unique_ptr<Postprocessor>()>;
     void add_postprocessor(const PostprocessorFactory &make);
-    /// The /summary columns of every postprocessor, the time columns last.
-    std::vector<SummaryColumn> columns() const;
 
     std::function<void(const StepSummary &)> on_step;
     std::function<void(const OnsetRecord &)> on_onset;

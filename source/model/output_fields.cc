@@ -1,0 +1,175 @@
+#include <cdea/model/output_fields.h>
+
+#include <limits>
+#include <stdexcept>
+
+namespace cdea
+{
+  namespace
+  {
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+
+    /// The true stresses sigma_i = l_i s_i (SI).
+    std::vector<double> true_stress(const std::vector<double> &stretch,
+                                    const std::vector<double> &nominal)
+    {
+      std::vector<double> sigma(nominal.size());
+      for (std::size_t i = 0; i < sigma.size(); ++i)
+        sigma[i] = stretch[i] * nominal[i];
+      return sigma;
+    }
+  } // namespace
+
+  std::vector<double> scaled(const std::vector<double> &values, const double factor)
+  {
+    std::vector<double> result(values.size());
+    for (std::size_t i = 0; i < values.size(); ++i)
+      result[i] = values[i] * factor;
+    return result;
+  }
+
+  double ColumnValues::in_file_units(const OutputField &column) const
+  {
+    return column.in_file_units(get(column));
+  }
+
+  const std::vector<double> &StepFields::internal_values(const std::string &name) const
+  {
+    for (const InternalField &f : internal)
+      if (f.name == name)
+        return f.values;
+    throw std::out_of_range("StepFields: no internal variable '" + name + "'");
+  }
+
+  const std::vector<const OutputField *> &standard_summary_columns()
+  {
+    using namespace summary_column;
+    static const std::vector<const OutputField *> columns = {
+      &stage,  &load_factor, &voltage,       &mass,     &displacement,
+      &stroke, &s2_min,      &s2_ring_inner, &wrinkled, &newton_iterations};
+    return columns;
+  }
+
+  const std::vector<const OutputField *> &step_attributes()
+  {
+    using namespace summary_column;
+    static const std::vector<const OutputField *> attributes = {&stage, &load_factor, &voltage,
+                                                                &displacement};
+    return attributes;
+  }
+
+  std::vector<SummaryAttribute> onset_attributes(const OnsetRecord &onset,
+                                                 const unsigned int n_rings)
+  {
+    using namespace summary_attribute;
+    std::vector<SummaryAttribute> a(4);
+    a[0] = {onset_found.name, {onset.found ? 1. : 0.}, 0, 0, true, true};
+    a[1] = {onset_voltage.name, onset.found ? scaled(onset.voltages, onset_voltage.factor) :
+                                              std::vector<double>(n_rings, nan)};
+    a[2] = {onset_radius.name,
+            {onset.found ? onset_radius.in_file_units(onset.radius) : nan},
+            0,
+            0,
+            true};
+    a[3] = {onset_load_factor.name, {onset.found ? onset.load_factor : nan}, 0, 0, true};
+    return a;
+  }
+
+  std::vector<SummaryAttribute> limit_point_attributes(const std::vector<LimitPoint> &limits,
+                                                       const unsigned int n_rings)
+  {
+    using namespace summary_attribute;
+    SummaryAttribute voltages{limit_point_voltage.name, {}, unsigned(limits.size()), n_rings};
+    SummaryAttribute displacements{limit_point_displacement.name, {}};
+    for (const LimitPoint &limit : limits)
+      {
+        for (const double v : limit.voltages)
+          voltages.values.push_back(limit_point_voltage.in_file_units(v));
+        displacements.values.push_back(limit_point_displacement.in_file_units(limit.displacement));
+      }
+    return {voltages, displacements};
+  }
+
+  std::vector<SummaryAttribute> breakdown_attributes(const OnsetRecord &breakdown)
+  {
+    using namespace summary_attribute;
+    if (!breakdown.found)
+      return {};
+    return {{breakdown_voltage.name, scaled(breakdown.voltages, breakdown_voltage.factor)},
+            {breakdown_radius.name, {breakdown_radius.in_file_units(breakdown.radius)}}};
+  }
+
+  std::vector<SummaryAttribute> run_attributes(const unsigned int run, const OnsetRecord &onset,
+                                               const std::vector<LimitPoint> &limits,
+                                               const OnsetRecord             &breakdown,
+                                               const unsigned int             n_rings)
+  {
+    std::vector<SummaryAttribute> all = onset_attributes(onset, n_rings);
+    const auto                    add = [&](const std::vector<SummaryAttribute> &more) {
+      all.insert(all.end(), more.begin(), more.end());
+    };
+    add(breakdown_attributes(breakdown));
+    if (run & summary_attribute::limit_point_voltage.runs)
+      add(limit_point_attributes(limits, n_rings));
+    return all;
+  }
+
+  const std::vector<StepField> &step_fields()
+  {
+    // clang-format off
+    // Each row: name, unit, SI -> file factor, storage, shape, runs,
+    // description; the member of StepFields (or the derivation); whether the
+    // results file and the ParaView output have it.
+    static const std::vector<StepField> fields = {
+      {{"R", "mm", file_units::mm, Storage::real, Shape::scalar, every_run,
+        "undeformed (reference) radius of the material point"},
+       &StepFields::R, nullptr, true, true},
+      {{"r", "mm", file_units::mm, Storage::real, Shape::scalar, every_run,
+        "deformed radius"},
+       &StepFields::r, nullptr, true, true},
+      {{"z", "mm", file_units::mm, Storage::real, Shape::scalar, every_run,
+        "deformed height (same sign convention as the solver)"},
+       &StepFields::z, nullptr, true, true},
+      {{"theta", "rad", 1., Storage::real, Shape::scalar, every_run,
+        "meridian slope angle"},
+       &StepFields::theta, nullptr, true, false},
+      {{"lambda1", "1", 1., Storage::real, Shape::scalar, every_run,
+        "meridian stretch"},
+       &StepFields::lambda1, nullptr, true, true},
+      {{"lambda2", "1", 1., Storage::real, Shape::scalar, every_run,
+        "hoop stretch r/R"},
+       &StepFields::lambda2, nullptr, true, true},
+      {{"s1", "kPa", file_units::kPa, Storage::real, Shape::scalar, every_run,
+        "nominal meridian stress"},
+       &StepFields::s1, nullptr, true, true},
+      {{"s2", "kPa", file_units::kPa, Storage::real, Shape::scalar, every_run,
+        "nominal hoop stress"},
+       &StepFields::s2, nullptr, true, true},
+      {{"sigma1", "kPa", file_units::kPa, Storage::real, Shape::scalar, every_run,
+        "true meridian stress lambda1 s1"},
+       nullptr, [](const StepFields &f) { return true_stress(f.lambda1, f.s1); }, false, true},
+      {{"sigma2", "kPa", file_units::kPa, Storage::real, Shape::scalar, every_run,
+        "true hoop stress lambda2 s2"},
+       nullptr, [](const StepFields &f) { return true_stress(f.lambda2, f.s2); }, false, true},
+      {{"E", "MV/m", file_units::MV_per_m, Storage::real, Shape::scalar, every_run,
+        "true electric field in the thickness direction"},
+       &StepFields::E, nullptr, true, true},
+      {{"Phi", "kV", file_units::kV, Storage::real, Shape::scalar, every_run,
+        "voltage across the film"},
+       &StepFields::Phi, nullptr, true, true},
+      {{"ring", "1", 1., Storage::integer, Shape::scalar, every_run,
+        "index of the electrode ring (0 = innermost)"},
+       nullptr, nullptr, true, true}};
+    // clang-format on
+    return fields;
+  }
+
+  std::vector<double> step_field_values(const StepField &row, const StepFields &fields)
+  {
+    if (row.values)
+      return fields.*row.values;
+    if (row.derived)
+      return row.derived(fields);
+    return std::vector<double>(fields.ring.begin(), fields.ring.end());
+  }
+} // namespace cdea
