@@ -10,6 +10,7 @@
 #include <cdea/design/optimize.h>
 #include <cdea/input/parameter_input.h>
 #include <cdea/input/parameters.h>
+#include <cdea/input/validation.h>
 #include <cdea/model/output_fields.h>
 
 #include <pybind11/numpy.h>
@@ -222,18 +223,20 @@ namespace
   }
 
   /// CSV text (a str with a line break) or a path.
-  CalibrationData calibration_data(const py::object &data, const unsigned int n_rings)
+  CalibrationData calibration_data(const py::object &data, const Scene &scene)
   {
+    const unsigned int n_rings = scene.n_rings();
+    const double       ceiling = voltage_ceiling(scene);
     if (py::isinstance<py::str>(data))
       {
         const std::string s = data.cast<std::string>();
         if (s.find('\n') != std::string::npos)
           {
             std::istringstream in(s);
-            return read_calibration_data(in, "data", n_rings);
+            return read_calibration_data(in, "data", n_rings, ceiling);
           }
       }
-    return read_calibration_data(path_of(data), n_rings);
+    return read_calibration_data(path_of(data), n_rings, ceiling);
   }
   void bind_optimize(py::module_ &m)
   {
@@ -329,7 +332,7 @@ namespace
         const Parameters p    = design_parameters(m, prm, overrides, c.parameter_text);
         const Scene      base = p.scene();
         c.settings            = fit_settings(p);
-        c.data                = calibration_data(data, base.n_rings());
+        c.data                = calibration_data(data, base);
         require_enough_points(c.data, c.settings, "data");
         const Calibrated run =
           calibrate(p, base, c.data, c.settings,

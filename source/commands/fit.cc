@@ -8,6 +8,7 @@
 #include <cdea/base/run_control.h>
 #include <cdea/commands/command.h>
 #include <cdea/design/fit.h>
+#include <cdea/input/validation.h>
 
 #include <chrono>
 #include <cmath>
@@ -42,7 +43,7 @@ namespace cdea
         const std::string &data_file = invocation.arguments.at(1);
         base     = invocation.parameters.scene();
         settings = fit_settings(invocation.parameters);
-        data     = read_calibration_data(data_file, base.n_rings());
+        data     = read_calibration_data(data_file, base.n_rings(), voltage_ceiling(base));
         require_enough_points(data, settings, data_file);
       }
 
@@ -62,6 +63,15 @@ namespace cdea
                     });
         const double seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (!c.result.started)
+          {
+            // Nothing was fitted: an older fit file stays as it was.
+            invocation.output.give_up();
+            std::cerr << "cdea: " << c.result.status
+                      << " (change the start values in the parameter file or check that "
+                         "point; nothing was written)\n";
+            return exit_input_error;
+          }
         print_values(c.result);
         print_residuals(c.result);
         for (const auto &w : c.result.warnings)

@@ -28,11 +28,13 @@ namespace cdea
     {
     public:
       DisplacementResiduals(DisplacementModel &model, const CalibrationData &data,
-                            const std::vector<double> &scale, unsigned int &evaluations)
+                            const std::vector<double> &scale, unsigned int &evaluations,
+                            std::string &failure)
         : model(model)
         , data(data)
         , scale(scale)
         , evaluations(evaluations)
+        , failure(failure)
       {
         set_num_residuals(int(data.size()));
         mutable_parameter_block_sizes()->push_back(int(scale.size()));
@@ -48,8 +50,17 @@ namespace cdea
         Eigen::MatrixXd J;
         const bool      want = jacobians != nullptr && jacobians[0] != nullptr;
         ++evaluations;
-        if (!model.evaluate(values, d, want ? &J : nullptr))
-          return false;
+        try
+          {
+            if (!model.evaluate(values, d, want ? &J : nullptr, &failure))
+              return false;
+          }
+        catch (const std::exception &e)
+          {
+            // Nothing may leave Ceres by an exception: a failed evaluation.
+            failure = e.what();
+            return false;
+          }
         for (std::size_t i = 0; i < data.size(); ++i)
           {
             const double root_w = std::sqrt(data.weight[i]);
@@ -66,6 +77,7 @@ namespace cdea
       const CalibrationData     &data;
       const std::vector<double> &scale;
       unsigned int              &evaluations;
+      std::string               &failure; ///< why the last failed evaluation failed
     };
 
     class Progress final : public ceres::IterationCallback
@@ -206,9 +218,18 @@ namespace cdea
     const std::vector<double> scale = r.initial;
     std::vector<double>       q(K, 1.);
 
+    r.standard_errors.assign(K, nan);
+    r.correlation = Eigen::MatrixXd::Constant(K, K, nan);
+    r.values      = r.initial;
+    r.rms         = nan;
+    r.condition   = nan;
+
+    // Ceres' own log lines (glog) would repeat on stderr what the result says.
+    FLAGS_minloglevel = google::GLOG_FATAL;
+    std::string    failure;
     ceres::Problem problem;
-    problem.AddResidualBlock(new DisplacementResiduals(model, data, scale, r.evaluations), nullptr,
-                             q.data());
+    problem.AddResidualBlock(
+      new DisplacementResiduals(model, data, scale, r.evaluations, failure), nullptr, q.data());
     set_lower_bounds(problem, q, base, settings, scale);
     ceres::Solver::Options options = solver_options(settings);
     Progress               callback(progress, q, scale);
@@ -218,8 +239,16 @@ namespace cdea
     r.iterations = unsigned(summary.iterations.size());
     r.converged  = summary.termination_type == ceres::CONVERGENCE;
     r.status     = summary.message;
+    if (summary.iterations.empty())
+      {
+        // The start itself failed: no iteration, nothing fitted.
+        r.started   = false;
+        r.converged = false;
+        r.status    = "the fit cannot start: " + (failure.empty() ? r.status : failure);
+        return r;
+      }
     for (std::size_t j = 0; j < K; ++j)
-      r.values.push_back(q[j] * scale[j]);
+      r.values[j] = q[j] * scale[j];
 
     // Residuals and the Jacobian at the optimum.
     Eigen::VectorXd d;

@@ -1,6 +1,7 @@
 // The input of `cdea fit` (the data file, subsection Calibration) and the
 // displacements of the data points with their Jacobian (DisplacementModel).
 
+#include <cdea/base/file_reading.h>
 #include <cdea/base/format.h>
 #include <cdea/design/fit.h>
 #include <cdea/input/parameters.h>
@@ -19,6 +20,11 @@ namespace cdea
 {
   namespace
   {
+    /// Bounds of the data file: a fit solves every point at every
+    /// evaluation, so more points than this are no calibration data.
+    constexpr std::size_t max_data_points     = 10000;
+    constexpr std::size_t max_data_file_bytes = std::size_t(64) << 20;
+
     /// Fields of one CSV line, blanks around each removed; a ',' at the end
     /// of the line ends in an empty field.
     std::vector<std::string> fields_of(const std::string &line)
@@ -46,12 +52,14 @@ namespace cdea
     }
   } // namespace
 
-  CalibrationData read_calibration_data(const std::string &file, const unsigned int n_rings)
+  CalibrationData read_calibration_data(const std::string &file, const unsigned int n_rings,
+                                        const double voltage_ceiling)
   {
-    std::ifstream in(file);
-    if (!in)
-      throw InputError("cannot read data file '" + file + "'");
-    return read_calibration_data(in, file, n_rings);
+    const FileRead read = read_regular_file(file, max_data_file_bytes);
+    if (!read.ok)
+      throw InputError("cannot read data file '" + file + "': " + read.error);
+    std::istringstream in(read.bytes);
+    return read_calibration_data(in, file, n_rings, voltage_ceiling);
   }
 
   namespace
@@ -69,12 +77,15 @@ namespace cdea
           for (unsigned int r = 1; r <= n_rings; ++r)
             known = known || name == "V" + std::to_string(r) + "_kV";
           if (!known)
-            throw InputError(where + ": unknown column '" + name + "' (expected V1_kV .. V" +
+            throw InputError(where + ": unknown column '" + printable(name) +
+                             "' (expected V1_kV .. V" +
                              std::to_string(n_rings) +
                              "_kV, one per ring of Electrodes/Ring edges (r/a), "
                              "displacement_mm and optionally weight)");
           if (!column.emplace(name, int(k)).second)
-            throw InputError(where + ": column '" + name + "' appears twice");
+            throw InputError(where + ": column '" + name + "' appears twice (columns " +
+                             std::to_string(column.at(name) + 1) + " and " +
+                             std::to_string(k + 1) + ")");
         }
       for (unsigned int r = 1; r <= n_rings; ++r)
         if (!column.count("V" + std::to_string(r) + "_kV"))
@@ -85,13 +96,18 @@ namespace cdea
       return column;
     }
 
-    /// One data line @p line (its @p fields) appended to @p data.
+    /// One data line @p line (its @p fields) appended to @p data: voltages
+    /// from 0 to the film's @p ceiling (V), a displacement |z(A) - z(B)| of
+    /// at least 0, a positive weight.
     void add_point(const std::vector<std::string> &fields, const std::string &line,
                    const std::string &where, const std::map<std::string, int> &column,
-                   const unsigned int n_rings, CalibrationData &data)
+                   const unsigned int n_rings, const double ceiling, CalibrationData &data)
     {
+      const auto place = [&](const std::string &name) {
+        return where + ", column " + name;
+      };
       const auto value = [&](const std::string &name) {
-        return parse_number(fields[column.at(name)], where + ", column " + name, line);
+        return parse_number(fields[column.at(name)], place(name), line);
       };
       std::vector<double> volts;
       for (unsigned int r = 1; r <= n_rings; ++r)
@@ -99,23 +115,45 @@ namespace cdea
           const std::string name = "V" + std::to_string(r) + "_kV";
           const double      v    = value(name);
           if (v < 0.)
-            throw InputError(where + ", column " + name +
-                             ": a voltage must not be negative, got " + format_number(v));
+            throw InputError(place(name) + ": a voltage must not be negative, got " +
+                             format_number(v));
+          if (v * 1e3 > ceiling)
+            throw InputError(place(name) + ": " + format_number(v) +
+                             " kV is above the ceiling of " + format_number(ceiling * 1e-3) +
+                             " kV for this film (the field V lam_pre^2 / H in the flat "
+                             "pre-stretched film must stay below 10 GV/m)");
           volts.push_back(v * 1e3);
         }
       const double d = value("displacement_mm");
+      if (d < 0.)
+        throw InputError(place("displacement_mm") +
+                         ": a displacement is the distance |z(A) - z(B)| between disk and "
+                         "frame and must not be negative, got " + format_number(d));
       const double w = column.count("weight") ? value("weight") : 1.;
       if (!(w > 0.))
-        throw InputError(where + ", column weight: weights must be positive, got " +
+        throw InputError(place("weight") + ": weights must be positive, got " +
                          format_number(w));
       data.voltages.push_back(volts);
       data.displacement.push_back(d * 1e-3);
       data.weight.push_back(w);
     }
+
+    /// One line of the file without its comment, line end and (on the
+    /// first line) UTF-8 byte order mark.
+    std::string content_of(std::string line, const unsigned int number)
+    {
+      if (number == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0)
+        line.erase(0, 3);
+      if (const auto hash = line.find('#'); hash != std::string::npos)
+        line.erase(hash);
+      if (!line.empty() && line.back() == '\r')
+        line.pop_back();
+      return line;
+    }
   } // namespace
 
   CalibrationData read_calibration_data(std::istream &in, const std::string &file,
-                                        const unsigned int n_rings)
+                                        const unsigned int n_rings, const double voltage_ceiling)
   {
     CalibrationData            data;
     std::map<std::string, int> column; // name -> index in a line
@@ -123,10 +161,7 @@ namespace cdea
     std::string                line;
     for (unsigned int number = 1; std::getline(in, line); ++number)
       {
-        if (const auto hash = line.find('#'); hash != std::string::npos)
-          line.erase(hash);
-        if (!line.empty() && line.back() == '\r')
-          line.pop_back();
+        line = content_of(line, number);
         if (line.find_first_not_of(" \t") == std::string::npos)
           continue;
         const auto        fields = fields_of(line);
@@ -140,7 +175,10 @@ namespace cdea
         if (fields.size() != n_columns)
           throw InputError(where + ": " + std::to_string(fields.size()) +
                            " fields, but the header has " + std::to_string(n_columns));
-        add_point(fields, line, where, column, n_rings, data);
+        if (data.size() == max_data_points)
+          throw InputError(where + ": more than " + std::to_string(max_data_points) +
+                           " data points");
+        add_point(fields, line, where, column, n_rings, voltage_ceiling, data);
       }
     if (column.empty())
       throw InputError(file + ": no header line (the column names V1_kV, ..., displacement_mm)");
@@ -193,6 +231,21 @@ namespace cdea
                        std::to_string(settings.free.size()) +
                        " free parameters (Calibration/Free parameters): give at least as "
                        "many points as parameters");
+  }
+
+  std::string value_text(const SceneParameter &p, const double value)
+  {
+    switch (p.kind)
+      {
+        case ParameterKind::shear_modulus:
+          return format_number(value * 1e-3) + " kPa";
+        case ParameterKind::mass:
+          return format_number(value * 1e3) + " g";
+        case ParameterKind::permittivity:
+          return format_number(value) + " F/m";
+        default:
+          return format_number(value);
+      }
   }
 
   std::string label(const SceneParameter &p)
@@ -284,19 +337,37 @@ namespace cdea
     return full_load(scene, data.voltages[point]);
   }
 
-  bool DisplacementModel::ramp(const unsigned int point, std::string *message)
+  bool DisplacementModel::ramp(const unsigned int point, std::string *message, const int via)
   {
     ++ramps_;
-    Scene ramp_scene = scene;
-    ramp_scene.path  = VoltagePath(std::vector<std::vector<double>>{data.voltages[point]});
+    Scene                            ramp_scene = scene;
+    std::vector<std::vector<double>> waypoints;
+    if (via >= 0)
+      waypoints.push_back(data.voltages[unsigned(via)]);
+    waypoints.push_back(data.voltages[point]);
+    ramp_scene.path = VoltagePath(waypoints);
     LoadStepper     stepper(ramp_scene, *model, stepping);
     const RunResult run = stepper.run();
     solves_ += run.solves;
     if (!run.completed && message)
-      *message = "data point " + std::to_string(point + 1) + " (" +
-                 format_kV(data.voltages[point]) + ") cannot be reached from zero voltage: " +
-                 run.message;
+      *message = run.message;
     return run.completed;
+  }
+
+  std::string DisplacementModel::point_text(const unsigned int point) const
+  {
+    return "data point " + std::to_string(point + 1) + " (" + format_kV(data.voltages[point]) +
+           ")";
+  }
+
+  void DisplacementModel::keep(const unsigned int point, const StateSensitivity &at,
+                               Eigen::VectorXd &d, Eigen::MatrixXd *jacobian)
+  {
+    d[point] = at.displacement();
+    if (jacobian)
+      jacobian->row(point) = at.d_displacement().transpose();
+    states[point]            = model->state();
+    state_derivatives[point] = at.state_derivative();
   }
 
   bool DisplacementModel::evaluate(const std::vector<double> &values, Eigen::VectorXd &d,
@@ -311,6 +382,7 @@ namespace cdea
     Eigen::VectorXd dp(values.size());
     for (std::size_t j = 0; continued && j < values.size(); ++j)
       dp[j] = values[j] - state_values[j];
+    std::vector<std::pair<unsigned int, std::string>> missed; // at the start: point, why
     for (unsigned int i = 0; i < M; ++i)
       {
         // From the point's own last state by the tangent predictor; a ramp
@@ -329,18 +401,76 @@ namespace cdea
           at = std::make_unique<StateSensitivity>(m, free);
         if (!ok || !at->stable())
           {
-            if (!ramp(i, message))
-              return false;
+            std::string why;
+            if (!ramp(i, &why))
+              {
+                if (continued)
+                  {
+                    if (message)
+                      *message = point_text(i) + " cannot be reached from zero voltage: " + why;
+                    return false;
+                  }
+                missed.emplace_back(i, why);
+                continue;
+              }
             at = std::make_unique<StateSensitivity>(m, free);
           }
-        d[i] = at->displacement();
-        if (jacobian)
-          jacobian->row(i) = at->d_displacement().transpose();
-        states[i]            = m.state();
-        state_derivatives[i] = at->state_derivative();
+        keep(i, *at, d, jacobian);
       }
+    if (!missed.empty() && !reach_along_the_data(missed, values, d, jacobian, message))
+      return false;
     state_values = values;
     return true;
+  }
+
+  bool DisplacementModel::reach_along_the_data(
+    const std::vector<std::pair<unsigned int, std::string>> &missed,
+    const std::vector<double> &values, Eigen::VectorXd &d, Eigen::MatrixXd *jacobian,
+    std::string *message)
+  {
+    // The start: a point the ramp from zero misses (beyond a fold of the
+    // proportional path) is continued from the nearest point that was
+    // reached, as an experiment steps through its data.
+    std::vector<bool> reached(data.size(), true);
+    for (const auto &[point, why] : missed)
+      reached[point] = false;
+    for (const auto &[point, why] : missed)
+      {
+        int    via  = -1;
+        double best = HUGE_VAL;
+        for (unsigned int j = 0; j < data.size(); ++j)
+          if (reached[j])
+            {
+              double distance = 0.;
+              for (std::size_t r = 0; r < data.voltages[j].size(); ++r)
+                distance += std::pow(data.voltages[j][r] - data.voltages[point][r], 2);
+              if (distance < best)
+                best = distance, via = int(j);
+            }
+        std::string from_via;
+        if (via >= 0 && ramp(point, &from_via, via))
+          {
+            keep(point, StateSensitivity(*model, free), d, jacobian);
+            reached[point] = true;
+            continue;
+          }
+        if (message)
+          *message = point_text(point) + " cannot be reached at " + values_text(values) +
+                     ": from zero voltage: " + why +
+                     (via >= 0 ? "; nor from " + point_text(unsigned(via)) + ", the nearest " +
+                                   "point reached: " + from_via :
+                                 std::string("; no other point was reached either"));
+        return false;
+      }
+    return true;
+  }
+
+  std::string DisplacementModel::values_text(const std::vector<double> &values) const
+  {
+    std::string text;
+    for (std::size_t j = 0; j < free.size(); ++j)
+      text += (j ? ", " : "") + label(free[j]) + " " + value_text(free[j], values[j]);
+    return text;
   }
 
   void DisplacementModel::curve(const std::vector<double> &values, const unsigned int steps,

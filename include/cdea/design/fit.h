@@ -20,6 +20,7 @@
 #include <cdea/fe/sensitivities.h>
 #include <cdea/solver/load_stepper.h>
 
+#include <cmath>
 #include <functional>
 #include <istream>
 #include <memory>
@@ -39,14 +40,18 @@ namespace cdea
     std::size_t                      size() const { return displacement.size(); }
   };
 
-  /// Reads the CSV file: a header line naming the columns V1_kV .. VN_kV (one
-  /// per ring), displacement_mm and optionally weight, in any order; then one
-  /// line per point. '#' starts a comment. Throws InputError naming the file,
-  /// line and column.
-  CalibrationData read_calibration_data(const std::string &file, unsigned int n_rings);
+  /// Reads the CSV file (a regular file of at most 64 MB): a header line
+  /// naming the columns V1_kV .. VN_kV (one per ring), displacement_mm and
+  /// optionally weight, in any order; then one line per point, at most 10000.
+  /// '#' starts a comment; a UTF-8 byte order mark is skipped. Voltages from
+  /// 0 to @p voltage_ceiling (V; voltage_ceiling() of the scene, input/validation.h),
+  /// displacements |z(A) - z(B)| from 0, weights above 0. Throws InputError
+  /// naming the file, line and column.
+  CalibrationData read_calibration_data(const std::string &file, unsigned int n_rings,
+                                        double voltage_ceiling = HUGE_VAL);
   /// The same from @p in (CSV text), named @p name in the messages.
   CalibrationData read_calibration_data(std::istream &in, const std::string &name,
-                                        unsigned int n_rings);
+                                        unsigned int n_rings, double voltage_ceiling = HUGE_VAL);
 
   struct FitSettings
   {
@@ -67,6 +72,9 @@ namespace cdea
   /// "pre-stretch").
   std::string label(const SceneParameter &p);
 
+  /// @p value (SI) of @p p in the unit of its prm entry: "20 kPa", "280 g", "150".
+  std::string value_text(const SceneParameter &p, double value);
+
   /// @p base with the free parameters set to @p values.
   Scene scene_with(const Scene &base, const std::vector<SceneParameter> &free,
                    const std::vector<double> &values);
@@ -81,7 +89,10 @@ namespace cdea
                       const NewtonSettings &newton, const SteppingSettings &stepping);
     ~DisplacementModel();
 
-    /// false (with @p message) if some point cannot be reached.
+    /// false (with @p message) if some point cannot be reached. The first
+    /// evaluation (the start) ramps every point from zero voltage and
+    /// continues one the ramp misses from the nearest point reached; the
+    /// message names the point, the values and why.
     bool evaluate(const std::vector<double> &values, Eigen::VectorXd &displacement,
                   Eigen::MatrixXd *jacobian, std::string *message = nullptr);
 
@@ -111,7 +122,20 @@ namespace cdea
 
     MembraneModel &model_for(const std::vector<double> &values);
     LoadState      load_of(unsigned int point) const;
-    bool           ramp(unsigned int point, std::string *message);
+    /// The point reached by load stepping from zero voltage, proportionally
+    /// to its voltages, or (@p via >= 0) through data point @p via first;
+    /// false with why in @p message.
+    bool        ramp(unsigned int point, std::string *message, int via = -1);
+    std::string point_text(unsigned int point) const;
+    std::string values_text(const std::vector<double> &values) const;
+    /// The point's displacement, Jacobian row, state and dx/dp kept.
+    void keep(unsigned int point, const StateSensitivity &at, Eigen::VectorXd &d,
+              Eigen::MatrixXd *jacobian);
+    /// At the start: the points the ramp from zero missed (with why),
+    /// continued from the nearest point reached; false with the message.
+    bool reach_along_the_data(const std::vector<std::pair<unsigned int, std::string>> &missed,
+                              const std::vector<double> &values, Eigen::VectorXd &d,
+                              Eigen::MatrixXd *jacobian, std::string *message);
   };
 
   struct FitResult
@@ -122,6 +146,9 @@ namespace cdea
     double              rms = 0.;          ///< sqrt(sum w r^2 / sum w), m
     double              condition = 0.;    ///< of the column-scaled Jacobian
     bool                converged = false;
+    /// false: the start values reach not every data point (status says
+    /// which and why); values are the start values, nothing else is set.
+    bool                started = true;
     std::string         status;
     std::vector<std::string> warnings; ///< parameters the data do not determine
     unsigned int        iterations = 0, evaluations = 0;
