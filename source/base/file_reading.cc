@@ -88,6 +88,12 @@ namespace cdea
     return r;
   }
 
+  bool is_regular_file(const std::string &path)
+  {
+    struct stat st = {};
+    return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
+  }
+
   std::string printable(const std::string &text)
   {
     std::string out;

@@ -33,7 +33,7 @@ namespace cdea
        reads_parameters | stops_on_signals | in_python, Ranks::one, Output::claimed_by_run,
        shoot_job},
       {"compare", {"FILE.prm"}, {"run both solvers and print their differences"},
-       reads_parameters, Ranks::one, Output::none, compare_job},
+       reads_parameters | stops_on_signals, Ranks::one, Output::none, compare_job},
       {"sweep", {"FILE.prm"},
        {"design map over two-ring layouts and outer voltages\n"
         "(subsection Sweep), <Base name>_map.h5; runs under\n"
@@ -43,7 +43,7 @@ namespace cdea
       {"recover", {"FILE.h5"},
        {"rebuild the results of a killed run from its\n"
         "journal FILE.h5.journal"},
-       0, Ranks::one, Output::claimed_by_run, recover_job},
+       stops_on_signals, Ranks::one, Output::claimed_by_run, recover_job},
       {"optimize", {"FILE.prm"},
        {"electrode layout with the largest stroke without\n"
         "wrinkling (subsection Optimization), <Base name>_optimum.h5"},

@@ -1,6 +1,7 @@
 // `cdea compare FILE.prm`: the FE and the shooting model along the same load
 // stages (by load stepping, nothing written), and the differences of their
-// last converged states.
+// last converged states. SIGINT, SIGTERM, SIGHUP end it with exit 2 and no
+// table.
 
 #include <cdea/analysis/run_input.h>
 #include <cdea/analysis/run_setup.h>
@@ -32,7 +33,11 @@ namespace cdea
     {
       QuietRun    run;
       LoadStepper stepper(in.scene, model, stepping_settings(in.parameters));
-      stepper.on_step  = [&](const StepSummary &s) { run.last = s; };
+      stepper.on_step  = [&](const StepSummary &s) {
+        run.last = s;
+        if (const int signal = StopOnSignals::requested())
+          throw RunInterrupted(signal); // SIGINT, SIGTERM, SIGHUP: no comparison
+      };
       const auto start = std::chrono::steady_clock::now();
       run.result       = stepper.run();
       run.seconds =
@@ -67,8 +72,17 @@ namespace cdea
         const auto              fe_ptr = make_fe_model(p, input.scene);
         MembraneModel          &fe     = *fe_ptr;
         shooting::ShootingModel sh(input.scene, shooting_options(p));
-        const QuietRun          a = quiet_run(fe, input);
-        const QuietRun          b = quiet_run(sh, input);
+        QuietRun                a, b;
+        try
+          {
+            a = quiet_run(fe, input);
+            b = quiet_run(sh, input);
+          }
+        catch (const RunInterrupted &e)
+          {
+            std::cerr << "cdea: " << e.what() << " before both runs had ended: no comparison\n";
+            return exit_not_complete;
+          }
         print_header(fe, a, b);
         print_states(fe, sh, a, b);
         print_profiles(fe, sh);

@@ -155,13 +155,25 @@ namespace cdea
       if (!read_input(*job, invocation))
         return exit_input_error;
       print_warnings(invocation);
-      if (command.output == Output::claimed_first && !claim(*job, invocation))
-        return exit_input_error;
       // A stop request ends the work at its next step, row, evaluation or
-      // iteration, with the results so far written (exit code 2).
-      std::optional<StopOnSignals> stop_on_signals;
+      // iteration, with the results so far written (exit code 2). The
+      // handlers come before the claim, so that no signal finds a lock
+      // without its owner ready to remove it, and stay until the process
+      // ends: a signal after the work (MPI's and deal.II's clean-up) is moot.
+      static std::optional<StopOnSignals> stop_on_signals;
       if (command.has(stops_on_signals))
         stop_on_signals.emplace();
+      if (command.output == Output::claimed_first && !claim(*job, invocation))
+        return exit_input_error;
+      if (const int signal = StopOnSignals::requested();
+          signal != 0 && stop_on_signals && command.ranks != Ranks::all)
+        {
+          invocation.output.give_up();
+          if (invocation.root)
+            std::cerr << "cdea: interrupted by " << signal_name(signal)
+                      << " before the work began; nothing was written\n";
+          return exit_not_complete;
+        }
       return job->run(invocation);
     }
   } // namespace

@@ -1,8 +1,10 @@
 // `cdea recover FILE.h5`: the results of a killed run that was writing
 // FILE.h5, rebuilt from its journal into FILE.h5 (or, if that exists,
-// FILE.recovered.h5). 0 done, 1 nothing to recover or the run still going,
-// 2 the journal is damaged (what could be read is written) or the file
-// cannot be written.
+// FILE.recovered.h5); a checkpoint without its journal is moved there.
+// 0 done; 1 nothing to recover (no journal or checkpoint, a journal without
+// a step or that is no regular file) or the run still going; 2 the journal
+// or checkpoint is damaged (what could be read is written), the file cannot
+// be written, or SIGINT, SIGTERM or SIGHUP stopped it (nothing changed).
 
 #include <cdea/base/run_control.h>
 #include <cdea/commands/command.h>
@@ -21,7 +23,7 @@ namespace cdea
       int run(Invocation &invocation) override
       {
         const std::string &path = invocation.arguments.at(0);
-        if (!file_exists(path + ".journal"))
+        if (!file_exists(path + ".journal") && !file_exists(sibling_name(path, ".partial")))
           {
             std::cerr << "cdea: nothing to recover for " << path << ": there is no journal "
                       << path << ".journal (a run that ends by itself, or stops on SIGINT or "
@@ -45,7 +47,7 @@ namespace cdea
       {
         try
           {
-            const Recovery r = recover_results(path, true);
+            const Recovery r = recover_results(path, true, false, true);
             if (r.damaged)
               {
                 // Not everything could be read: the journal stays for a closer look.
@@ -60,6 +62,23 @@ namespace cdea
               }
             std::cout << "cdea recover: " << r.message << '\n';
             return exit_success;
+          }
+        catch (const RunInterrupted &e)
+          {
+            std::cerr << "cdea: " << e.what() << " while reading the journal of " << path
+                      << ": nothing was changed (the journal is kept)\n";
+            return exit_not_complete;
+          }
+        catch (const JournalInUse &e)
+          {
+            std::cerr << "cdea: cannot recover " << path << ": " << e.what()
+                      << " (a running job keeps its own journal)\n";
+            return exit_input_error;
+          }
+        catch (const NotAJournal &e)
+          {
+            std::cerr << "cdea: nothing to recover for " << path << ": " << e.what() << '\n';
+            return exit_input_error;
           }
         catch (const std::exception &e)
           {

@@ -1,3 +1,5 @@
+#include <cdea/base/file_reading.h>
+#include <cdea/base/run_control.h>
 #include <cdea/model/output_fields.h>
 #include <cdea/output/journal.h>
 #include <cdea/output/safe_files.h>
@@ -184,12 +186,11 @@ namespace cdea
 
     Parsed read_records(const std::string &path)
     {
-      std::ifstream in(path, std::ios::binary);
-      if (!in)
-        throw OutputError("cannot read the journal " + path + ": " + std::strerror(errno));
-      const std::string data((std::istreambuf_iterator<char>(in)),
-                             std::istreambuf_iterator<char>());
-      Parsed parsed;
+      FileRead read = read_regular_file(path, max_journal_bytes);
+      if (!read.ok)
+        throw OutputError("cannot read the journal " + path + ": " + read.error);
+      const std::string data = std::move(read.bytes);
+      Parsed            parsed;
       if (data.size() >= sizeof(magic) &&
           std::memcmp(data.data(), magic_format1, sizeof(magic)) == 0)
         throw OutputError(path + " was written by an older version of cdea (journal format 1): "
@@ -212,6 +213,13 @@ namespace cdea
           std::memcpy(&crc, data.data() + at + 5 + length, 4);
           if (crc32(data.data() + at, 5 + length) != crc)
             break;
+          if (data[at] == char(start_record) && !parsed.records.empty())
+            {
+              // A second start: another journal (or this one) appended to it.
+              parsed.dropped_bytes = data.size() - at;
+              parsed.damaged_at    = at;
+              return parsed;
+            }
           parsed.records.push_back(
             {static_cast<unsigned char>(data[at]), data.substr(at + 5, length)});
           if (data[at] == char(append_record))
@@ -513,7 +521,7 @@ namespace cdea
   } // namespace
 
   JournalReplay replay_journal(const std::string &path, const std::string &name,
-                               const unsigned int max_steps)
+                               const unsigned int max_steps, const bool stop_on_request)
   {
     const Parsed  parsed = read_records(path);
     JournalReplay replay;
@@ -531,6 +539,8 @@ namespace cdea
               Decoder in(r.payload.data(), r.payload.size());
               replay.document = replay_start(in, name);
             }
+          else if (stop_on_request && StopOnSignals::requested() != 0)
+            throw RunInterrupted(StopOnSignals::requested());
           else if (!replay_record(r, replay, max_steps))
             break;
       }

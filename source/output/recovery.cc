@@ -1,6 +1,7 @@
 // recover_results(): the results of a run that did not finish its file,
 // rebuilt from its journal (or its last checkpoint where the journal is
 // damaged). Nothing is removed that was not recovered whole.
+#include <cdea/base/file_reading.h>
 #include <cdea/output/hdf5_support.h>
 #include <cdea/output/journal.h>
 #include <cdea/output/results_file.h>
@@ -8,11 +9,14 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <fstream>
-#include <iterator>
+#include <cerrno>
+#include <climits>
+#include <cstdio>
+#include <cstring>
 
 namespace cdea
 {
@@ -35,13 +39,22 @@ namespace cdea
     {
     public:
       explicit JournalClaim(const std::string &journal)
-        : fd(::open(journal.c_str(), O_RDONLY | O_CLOEXEC))
+        : fd(::open(journal.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC))
       {
+        // O_NONBLOCK: a FIFO in the journal's place must not wait for a writer.
+        struct stat st = {};
+        if (fd >= 0 && (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)))
+          {
+            ::close(fd);
+            throw NotAJournal("the journal " + journal + " is not a regular file (" +
+                              (S_ISDIR(st.st_mode) ? "a directory" : "a FIFO, device or socket") +
+                              ")");
+          }
         if (fd >= 0 && ::flock(fd, LOCK_EX | LOCK_NB) != 0)
           {
             ::close(fd);
-            throw OutputError("a running cdea process is still writing the journal " + journal +
-                              " (it holds the journal's lock)");
+            throw JournalInUse("a running cdea process is still writing the journal " + journal +
+                               " (it holds the journal's lock)");
           }
       }
       ~JournalClaim()
@@ -60,7 +73,7 @@ namespace cdea
     /// unreadable.
     unsigned int checkpoint_steps(const std::string &path)
     {
-      if (!file_exists(path))
+      if (!is_regular_file(path)) // a FIFO would block H5Fopen
         return 0;
       hdf5::ErrorPrintingOff quiet;
       const hdf5::Handle     fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
@@ -82,9 +95,10 @@ namespace cdea
 
     std::vector<char> file_bytes(const std::string &path)
     {
-      std::ifstream in(path, std::ios::binary);
-      return std::vector<char>((std::istreambuf_iterator<char>(in)),
-                               std::istreambuf_iterator<char>());
+      const FileRead read = read_regular_file(path, max_journal_bytes);
+      if (!read.ok)
+        throw OutputError("cannot read " + path + ": " + read.error);
+      return std::vector<char>(read.bytes.begin(), read.bytes.end());
     }
 
     std::string where_to(const std::string &path, const bool into_path_if_free)
@@ -94,61 +108,110 @@ namespace cdea
     }
   } // namespace
 
+  namespace
+  {
+    /// The damaged journal's readable steps, or the checkpoint's if it has
+    /// more, written to a free name; the journal and checkpoint stay.
+    Recovery save_damaged(const std::string &path, JournalReplay &replay,
+                          const bool into_path_if_free)
+    {
+      Recovery           r;
+      const std::string  journal    = journal_of(path);
+      const unsigned int steps      = replay.document ? replay.steps : 0;
+      const std::string  damage     = "the journal " + journal + " is damaged at byte " +
+                                  std::to_string(replay.damaged_at) +
+                                  " (a record there fails its check, or starts a second "
+                                  "journal, and " + std::to_string(replay.dropped_bytes) +
+                                  " bytes from there on cannot be read)";
+      r.found                       = true;
+      r.damaged                     = true;
+      const std::string  checkpoint = checkpoint_of(path);
+      const unsigned int saved      = checkpoint_steps(checkpoint);
+      const std::string  kept =
+        "; the journal" + std::string(file_exists(checkpoint) ? " and " + checkpoint : "") +
+        " are kept: remove them once you have what you need";
+      if (steps == 0 && saved == 0)
+        {
+          r.message = damage + "; no step could be read before it" + kept;
+          return r;
+        }
+      r.file = where_to(path, into_path_if_free);
+      std::vector<char> bytes;
+      if (saved > steps)
+        bytes = file_bytes(checkpoint);
+      else
+        {
+          replay.document->set_root_attribute(
+            "run_status", "rebuilt from the readable start of a damaged journal: the steps "
+                          "after the last one here were lost");
+          bytes = replay.document->image();
+        }
+      const WriteOutcome out = replace_file(r.file, bytes, true);
+      if (!out.ok)
+        throw OutputError("cannot write the recovered results: " + out.message + " (" + damage +
+                          "; the journal is kept)");
+      r.steps   = std::max(saved, steps);
+      r.message = damage + "; the " + std::to_string(r.steps) + " step(s) of the " +
+                  (saved > steps ? "last checkpoint " + checkpoint :
+                                   std::string("journal before the damage")) +
+                  " are in " + r.file + kept;
+      return r;
+    }
+
+    /// A checkpoint without its journal (the journal was deleted): moved to
+    /// a free name if readable, else kept and reported as damage.
+    Recovery save_checkpoint(const std::string &path, const bool into_path_if_free,
+                             const bool only_if_intact)
+    {
+      Recovery           r;
+      const std::string  checkpoint = checkpoint_of(path);
+      const unsigned int steps      = checkpoint_steps(checkpoint);
+      r.found                       = true;
+      if (steps == 0)
+        {
+          r.damaged = true;
+          r.message = "there is no journal " + journal_of(path) + ", and the checkpoint " +
+                      checkpoint + " cannot be read; it is kept: remove it once you have "
+                      "looked at it";
+          if (only_if_intact)
+            throw OutputError(r.message);
+          return r;
+        }
+      r.file = where_to(path, into_path_if_free);
+      if (std::rename(checkpoint.c_str(), r.file.c_str()) != 0)
+        throw OutputError("cannot move the checkpoint " + checkpoint + " to " + r.file + ": " +
+                          std::strerror(errno));
+      r.steps   = steps;
+      r.message = "there is no journal " + journal_of(path) + "; the checkpoint's " +
+                  std::to_string(steps) + " step(s) (the run as it was at its last " +
+                  "checkpoint) are in " + r.file;
+      return r;
+    }
+  } // namespace
+
   Recovery recover_results(const std::string &path, const bool into_path_if_free,
-                           const bool only_if_intact)
+                           const bool only_if_intact, const bool stop_on_request)
   {
     Recovery          r;
     const std::string journal = journal_of(path);
     if (!file_exists(journal))
       {
+        if (file_exists(checkpoint_of(path)))
+          return save_checkpoint(path, into_path_if_free, only_if_intact);
         r.message = "no journal " + journal + ": nothing to recover";
         return r;
       }
     r.found = true;
-    const JournalClaim  claim(journal);
-    JournalReplay       replay = replay_journal(journal, path);
-    const unsigned int  steps  = replay.document ? replay.steps : 0;
+    const JournalClaim claim(journal);
+    JournalReplay      replay = replay_journal(journal, path, UINT_MAX, stop_on_request);
+    const unsigned int steps  = replay.document ? replay.steps : 0;
     if (replay.damaged_at != no_damage)
       {
-        const std::string damage =
-          "the journal " + journal + " is damaged at byte " + std::to_string(replay.damaged_at) +
-          " (a record there fails its check and " + std::to_string(replay.dropped_bytes) +
-          " bytes follow it, which cannot be read)";
         if (only_if_intact)
-          throw OutputError(damage + "; run 'cdea recover " + path +
+          throw OutputError("the journal " + journal + " is damaged at byte " +
+                            std::to_string(replay.damaged_at) + "; run 'cdea recover " + path +
                             "' to save its readable steps, then move the journal away");
-        r.damaged                    = true;
-        const std::string checkpoint = checkpoint_of(path);
-        const unsigned int saved     = checkpoint_steps(checkpoint);
-        const std::string  kept =
-          "; the journal" + std::string(file_exists(checkpoint) ? " and " + checkpoint : "") +
-          " are kept: remove them once you have what you need";
-        if (steps == 0 && saved == 0)
-          {
-            r.message = damage + "; no step could be read before it" + kept;
-            return r;
-          }
-        r.file = where_to(path, into_path_if_free);
-        std::vector<char> bytes;
-        if (saved > steps)
-          bytes = file_bytes(checkpoint);
-        else
-          {
-            replay.document->set_root_attribute(
-              "run_status", "rebuilt from the readable start of a damaged journal: the steps "
-                            "after the last one here were lost");
-            bytes = replay.document->image();
-          }
-        const WriteOutcome out = replace_file(r.file, bytes, true);
-        if (!out.ok)
-          throw OutputError("cannot write the recovered results: " + out.message + " (" +
-                            damage + "; the journal is kept)");
-        r.steps   = std::max(saved, steps);
-        r.message = damage + "; the " + std::to_string(r.steps) + " step(s) of the " +
-                    (saved > steps ? "last checkpoint " + checkpoint :
-                                     std::string("journal before the damage")) +
-                    " are in " + r.file + kept;
-        return r;
+        return save_damaged(path, replay, into_path_if_free);
       }
     if (steps == 0)
       {

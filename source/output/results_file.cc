@@ -148,7 +148,7 @@ namespace cdea
     }
     try
       {
-        if (file_exists(journal_of(path)))
+        if (file_exists(journal_of(path)) || file_exists(checkpoint_of(path)))
           {
             try
               {
@@ -269,15 +269,24 @@ namespace cdea
             f.steps_written = n;
             if (owner)
               {
-                remove_file(journal_of(file_path));
+                // The checkpoint first: a kill between the two leaves a
+                // journal, whose recovery removes both, not a lone checkpoint.
                 remove_file(checkpoint_of(file_path));
+                remove_file(journal_of(file_path));
               }
             lock.release();
             return f;
           }
         f.messages.push_back("cannot write " + target + ": " + out.message);
-        if (!vanished && out.written > 0 &&
-            write_leading_steps(target, status, out, full_size, f))
+        // An older file stays as it is: the steps that fit go beside it.
+        const bool older = file_exists(target);
+        if (older)
+          {
+            f.messages.push_back(target + " (older results) is kept as it was");
+            remove_file(checkpoint_of(file_path)); // its room for the steps that fit
+          }
+        const std::string part = older ? checkpoint_of(file_path) : target;
+        if (!vanished && out.written > 0 && write_leading_steps(part, status, out, full_size, f))
           return f;
         if (!vanished)
           nothing_written(n, f);
@@ -340,7 +349,8 @@ namespace cdea
         f.written       = true;
         f.file          = target;
         f.steps_written = k;
-        remove_file(checkpoint_of(file_path));
+        if (target != checkpoint_of(file_path))
+          remove_file(checkpoint_of(file_path));
         f.messages.push_back("only the first " + std::to_string(k) + " of " + std::to_string(n) +
                              " steps fit into " + target + "; the journal " + journal_path +
                              " keeps all " + std::to_string(n) + ": make room and run 'cdea " +

@@ -22,6 +22,9 @@ namespace cdea
   /// The bytes of the regular file @p path, at most @p max_bytes of them.
   FileRead read_regular_file(const std::string &path, std::size_t max_bytes);
 
+  /// Whether @p path names a regular file (after symbolic links).
+  bool is_regular_file(const std::string &path);
+
   /// @p text with every byte outside printable ASCII written as \xNN, so
   /// that an invisible byte (a UTF-8 byte order mark, a tab) shows in a
   /// message.

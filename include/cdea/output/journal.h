@@ -77,8 +77,15 @@ namespace cdea
 
   /// Replays the journal at @p path into a new document named @p name, with
   /// at most @p max_steps steps (the records after the last step kept are
-  /// left out too). Throws OutputError if the journal cannot be read.
+  /// left out too). Only a regular file of at most max_journal_bytes is read.
+  /// Throws OutputError if the journal cannot be read, and with
+  /// @p stop_on_request RunInterrupted (base/run_control.h) between records
+  /// once a stop is requested (`cdea recover` under SIGINT).
   JournalReplay replay_journal(const std::string &path, const std::string &name,
-                               unsigned int max_steps = UINT_MAX);
+                               unsigned int max_steps = UINT_MAX, bool stop_on_request = false);
+
+  /// The largest journal read back: a run's results are held in memory and
+  /// limited to 2 GB (doc/usage.md), and its journal is smaller than them.
+  constexpr std::size_t max_journal_bytes = std::size_t(4) << 30;
 
 } // namespace cdea

@@ -37,6 +37,7 @@
 // leaves the journal, which recover_results() turns into a file.
 
 #include <cdea/model/records.h>
+#include <cdea/output/safe_files.h>
 
 #include <memory>
 #include <string>
@@ -127,9 +128,11 @@ namespace cdea
     /// @p status and writes the file at path() (written whole, then renamed
     /// onto any older file). If the output directory vanished it is created
     /// again; if the file does not fit (disk full, file size limit), the
-    /// leading steps that fit are written and the journal is kept. Then the
-    /// journal, checkpoint and lock go. Never throws; calls after the first
-    /// do nothing.
+    /// leading steps that fit are written, to path() if nothing is there,
+    /// else beside an older file (which stays as it is) to the checkpoint's
+    /// name <stem>.partial.h5, and the journal is kept. Then the journal,
+    /// checkpoint and lock go. Never throws; calls after the first do
+    /// nothing.
     Finish finish(const std::string &status);
 
     /// Gives the output up before its first step (a write failed): removes
@@ -167,6 +170,21 @@ namespace cdea
     bool damaged = false;
   };
 
+  /// recover_results(): a run still writes the journal (holds its flock).
+  class JournalInUse : public OutputError
+  {
+  public:
+    using OutputError::OutputError;
+  };
+
+  /// recover_results(): the journal's name is taken by something other than
+  /// a regular file (a directory, a FIFO, a device).
+  class NotAJournal : public OutputError
+  {
+  public:
+    using OutputError::OutputError;
+  };
+
   /// Rebuilds the results of a killed run that was writing @p path from its
   /// journal. The file goes to @p path if nothing is there and
   /// @p into_path_if_free, else to a free "<stem>.recovered[-N].h5" beside
@@ -174,9 +192,13 @@ namespace cdea
   /// before its end (not a last record cut short) is never removed: the more
   /// steps of its readable part and the checkpoint are written, or, with
   /// @p only_if_intact, nothing is done and OutputError says where the damage
-  /// is. The caller must hold the lock of @p path. Throws OutputError if the
-  /// journal is still being written (its flock is held) or the file cannot
-  /// be written (source/output/recovery.cc).
+  /// is. A checkpoint without a journal is moved to the same place if it
+  /// can be read (else reported as damage and kept). The caller must hold
+  /// the lock of @p path. Throws JournalInUse if the journal is still being
+  /// written (its flock is held), NotAJournal if it is not a regular file,
+  /// OutputError if it cannot be read or the file cannot be written, and
+  /// with @p stop_on_request RunInterrupted once a stop is requested during
+  /// the replay (source/output/recovery.cc).
   Recovery recover_results(const std::string &path, bool into_path_if_free,
-                           bool only_if_intact = false);
+                           bool only_if_intact = false, bool stop_on_request = false);
 } // namespace cdea
