@@ -2,7 +2,15 @@
 
 #include <cdea/base/run_control.h>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
 #include <sstream>
 
 namespace cdea
@@ -78,6 +86,61 @@ namespace cdea
   {
     std::signal(SIGPIPE, SIG_IGN);
     std::signal(SIGXFSZ, SIG_IGN);
+  }
+
+  namespace
+  {
+    bool stdout_was_closed = false;
+
+    /// Opens @p device onto the closed descriptor @p fd.
+    void fill(const int fd, const char *device, const int flags)
+    {
+      if (::fcntl(fd, F_GETFD) != -1 || errno != EBADF)
+        return;
+      int opened = ::open(device, flags);
+      if (opened < 0)
+        opened = ::open("/dev/null", flags);
+      if (opened >= 0 && opened != fd)
+        {
+          ::dup2(opened, fd);
+          ::close(opened);
+        }
+      if (fd == STDOUT_FILENO)
+        stdout_was_closed = true;
+    }
+  } // namespace
+
+  void reopen_closed_standard_streams()
+  {
+    fill(STDIN_FILENO, "/dev/null", O_RDONLY);
+    fill(STDOUT_FILENO, "/dev/full", O_WRONLY);
+    fill(STDERR_FILENO, "/dev/full", O_WRONLY);
+  }
+
+  int exit_code_after_output(const int code)
+  {
+    std::cout.flush();
+    errno                 = 0;
+    const bool out_failed = std::fflush(stdout) != 0 || std::ferror(stdout) || std::cout.fail();
+    const int  out_error  = errno;
+    std::cerr.flush();
+    const bool err_failed = std::fflush(stderr) != 0 || std::ferror(stderr) || std::cerr.fail();
+    if (!out_failed && !err_failed)
+      return code;
+    if (out_failed && !err_failed)
+      {
+        // The error of the failed write itself is gone: say what it must
+        // have been from what stdout is.
+        struct stat st = {};
+        const bool  pipe = ::fstat(STDOUT_FILENO, &st) == 0 && S_ISFIFO(st.st_mode);
+        std::cerr << "cdea: cannot write to standard output: "
+                  << (stdout_was_closed ? std::string("it was closed") :
+                      out_error != 0    ? std::string(std::strerror(out_error)) :
+                      pipe              ? std::string("the pipe was closed by its reader") :
+                                          std::string("the disk or device is full"))
+                  << " (what the command printed is incomplete)" << std::endl;
+      }
+    return code == exit_success ? exit_not_complete : code;
   }
 
   std::string fold_whitespace(const std::string &text)

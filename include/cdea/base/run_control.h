@@ -53,6 +53,18 @@ namespace cdea
   /// results file handles, instead of killing the process.
   void ignore_output_signals();
 
+  /// A standard stream closed when the process started (`cdea run x >&-`)
+  /// is opened onto /dev/full (stdin onto /dev/null), so that no file the
+  /// command opens takes its number and receives its text, and a write to it
+  /// fails as to a full disk. Call before anything is opened.
+  void reopen_closed_standard_streams();
+
+  /// The exit code after a command returned @p code: standard output and
+  /// error flushed, and if a write to either failed (a full disk, a closed
+  /// pipe, a closed stream) a message (on stderr if it works) and
+  /// exit_not_complete instead of exit_success.
+  int exit_code_after_output(int code);
+
   /// @p text on one line: every run of blanks, tabs and newlines becomes
   /// one blank (deal.II's messages span several indented lines).
   std::string fold_whitespace(const std::string &text);
