@@ -4,11 +4,12 @@
 #include <cdea/input/duplicate_entries.h>
 #include <cdea/input/parameter_input.h>
 #include <cdea/input/parameters.h>
+#include <cdea/input/prm_text.h>
 #include <cdea/input/validation.h>
 #include <cdea/output/safe_files.h>
 
 #include <filesystem>
-#include <fstream>
+#include <cctype>
 #include <sstream>
 
 namespace cdea
@@ -57,50 +58,43 @@ namespace cdea
       catch (const dealii::ExceptionBase &e)
         {
           prm.leave_subsection();
-          throw InputError(name + " = '" + value + "': " + message_of(e));
+          const std::string ours = explain_override_error(key, value, message_of(e));
+          throw InputError(name + " = '" + value + "': " + (ours.empty() ? message_of(e) : ours));
         }
       prm.leave_subsection();
+      check_override_value(key, value);
     }
 
     /// @p prm with every entry declared, the file or text parsed and the
-    /// overrides set.
-    void parse_input(const ParameterInput &input, ParameterHandler &prm)
+    /// overrides set; returns the text (a file read bounded, its structure
+    /// checked first: prm_text.h).
+    std::string parse_input(const ParameterInput &input, ParameterHandler &prm)
     {
-      if (!input.is_text)
-        {
-          std::ifstream probe(input.source);
-          if (!probe || !std::filesystem::is_regular_file(input.source))
-            throw InputError("cannot read parameter file '" + input.source +
-                             "': it does not exist, is not a regular file or is not readable");
-        }
+      const std::string text = input.is_text ? input.source : read_parameter_file(input.source);
+      const std::string name = input.is_text ? "parameter text" : input.source;
+      // .json and .xml files go to deal.II's readers of those formats.
+      std::string extension = std::filesystem::path(name).extension();
+      for (char &c : extension)
+        c = char(std::tolower(static_cast<unsigned char>(c)));
+      const bool prm_format = input.is_text || extension == ".prm";
       Parameters::declare(prm);
+      if (prm_format)
+        check_prm_structure(text, where(input), prm);
       try
         {
-          if (input.is_text)
-            {
-              std::istringstream in(input.source);
-              prm.parse_input(in, "parameter text", "", false);
-            }
+          std::istringstream in(text);
+          if (prm_format)
+            prm.parse_input(in, name, "", false);
           else
             prm.parse_input(input.source, "", false, false);
         }
       catch (const dealii::ExceptionBase &e)
         {
-          throw InputError(where(input) + message_of(e));
+          throw InputError(where(input) + explain_parse_error(text, message_of(e)));
         }
       for (const auto &[key, value] : input.overrides)
         apply_override(prm, key, value);
-    }
-
-    /// The entries set twice in the file or text.
-    std::vector<std::string> duplicate_warnings(const ParameterInput &input)
-    {
-      if (input.is_text)
-        return duplicate_entry_warnings(input.source, "parameter text");
-      std::ifstream      in(input.source);
-      std::ostringstream content;
-      content << in.rdbuf();
-      return duplicate_entry_warnings(content.str(), input.source);
+      return text;
     }
   } // namespace
 
@@ -121,9 +115,9 @@ namespace cdea
 
   Parameters read_parameters(const ParameterInput &input, std::string *text)
   {
-    ParameterHandler prm;
-    parse_input(input, prm);
-    Parameters parameters;
+    ParameterHandler  prm;
+    const std::string content = parse_input(input, prm);
+    Parameters        parameters;
     try
       {
         parameters.parse(prm);
@@ -134,7 +128,8 @@ namespace cdea
       }
     validate_ranges(parameters, parameters.scene()); // now, before anything is written
     validate_time(parameters);
-    parameters.input_warnings = duplicate_warnings(input);
+    parameters.input_warnings =
+      duplicate_entry_warnings(content, input.is_text ? "parameter text" : input.source);
     if (text)
       {
         std::ostringstream out;
