@@ -105,6 +105,9 @@ class Run:
             self.n_rings = self.voltage_kV.shape[1]
             self.displacement_mm = np.asarray(s["displacement_mm"][...], dtype=float)
             self.stroke_mm = self._column(s, "stroke_mm")
+            # A time run (Time/Enabled): the time of each step, NaN in the
+            # quasi-static stages before the time integration.
+            self.time_s = self._column(s, "time_s")
             self.mass_g = self._column(s, "mass_g")
             self.wrinkled = self._column(s, "wrinkled", fill=0).astype(int)
             # 0: possible; bit 1: r outside [0, b]; bit 2: the meridian crosses
@@ -206,9 +209,13 @@ class Run:
         return mask
 
     def x_axis(self, rows):
-        """x values and label of a curve over the voltage stage: the voltage
-        (one ring); with several rings the outer ring's voltage, unless the
-        path holds it while other rings move (then the path parameter t)."""
+        """x values and label of a curve over the voltage stage: the time of
+        a time run; else the voltage (one ring); with several rings the outer
+        ring's voltage, unless the path holds it while other rings move (then
+        the path parameter t)."""
+        if np.any(np.isfinite(self.time_s[rows])):
+            x = np.nan_to_num(self.time_s[rows], nan=0.0)  # the load stage ends at t = 0
+            return x, "time t (s)"
         v = self.voltage_kV[rows]
         if self.n_rings == 1:
             return v[:, 0], "voltage Φ (kV)"
@@ -429,7 +436,9 @@ def plot_displacement(run, out):
             rows = np.concatenate(([end_load], rows))  # the zero-voltage state
     single = run.n_rings == 1
     x, xlabel = run.x_axis(rows)
-    on_path_parameter = xlabel.startswith("voltage path parameter")
+    # Over the path parameter or the time the onset is at its load factor
+    # (a time run's load factor is its time).
+    on_path_parameter = xlabel.startswith(("voltage path parameter", "time"))
 
     fig, ax = plt.subplots(figsize=(7.5, 5.6))
     ax.plot(x, run.displacement_mm[rows], "o-", ms=3, color="tab:blue",

@@ -15,7 +15,9 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <string>
@@ -24,6 +26,23 @@
 
 namespace py = pybind11;
 using namespace cdea;
+
+/// write(path): the folder of @p path must exist (FileNotFoundError); only
+/// the default path creates Output/Directory, as the command line does.
+void require_directory_of(const std::string &file)
+{
+  const std::filesystem::path parent = std::filesystem::path(file).parent_path();
+  std::error_code             error;
+  if (parent.empty() || std::filesystem::is_directory(parent, error))
+    return;
+  const std::string message =
+    "cannot write '" + file + "': the directory '" + parent.string() +
+    "' does not exist (write(path) creates no directory; write() without a path creates "
+    "Output/Directory as the command line does)";
+  PyErr_SetObject(PyExc_FileNotFoundError,
+                  py::make_tuple(ENOENT, message).ptr());
+  throw py::error_already_set();
+}
 
 namespace
 {
@@ -90,8 +109,14 @@ namespace
         ParameterInput::file(py::module_::import("os").attr("fspath")(prm).cast<std::string>());
     else
       throw py::type_error("prm must be the path of a parameter file or its text");
+    if (!overrides.is_none() && !py::isinstance<py::dict>(overrides) &&
+        !py::hasattr(overrides, "items"))
+      throw py::type_error("overrides must be a dict {'Subsection/Entry': value}, e.g. "
+                           "{'Loading/Mass (g)': 300}; got " +
+                           py::str(py::type::of(overrides).attr("__name__")).cast<std::string>() +
+                           " " + py::repr(overrides).cast<std::string>());
     if (!overrides.is_none())
-      for (const auto &[key, value] : overrides.cast<py::dict>())
+      for (const auto &[key, value] : py::dict(overrides))
         {
           const std::string name = py::str(key).cast<std::string>();
           const std::string text = override_text(name, py::reinterpret_borrow<py::object>(value));
@@ -137,6 +162,8 @@ namespace
     const std::string file =
       path.is_none() ? default_path :
                        py::module_::import("os").attr("fspath")(path).cast<std::string>();
+    if (!path.is_none())
+      require_directory_of(file);
     try
       {
         writer(file);
@@ -181,11 +208,12 @@ namespace
     py::dict fields(long step) const
     {
       const long n = long(record.fields.size());
+      if (step < -n || step >= n)
+        throw py::index_error("step " + std::to_string(step) + " is not one of the " +
+                              std::to_string(n) + " steps (0 to " + std::to_string(n - 1) +
+                              ", or -" + std::to_string(n) + " to -1 from the end)");
       if (step < 0)
         step += n;
-      if (step < 0 || step >= n)
-        throw py::index_error("step " + std::to_string(step) + " is not one of the " +
-                              std::to_string(n) + " steps");
       const StepFields &f = record.fields[std::size_t(step)];
       if (f.R.empty())
         throw py::index_error("step " + std::to_string(step) +

@@ -18,6 +18,7 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -25,6 +26,8 @@
 
 namespace py = pybind11;
 using namespace cdea;
+
+void require_directory_of(const std::string &file); // python/cdea_module.cc
 
 namespace
 {
@@ -222,6 +225,23 @@ namespace
     return py::module_::import("os").attr("fspath")(path).cast<std::string>();
   }
 
+  /// write(path) of the results: the folder must exist; a file that cannot
+  /// be written raises OSError with the writer's message.
+  void write_to(const py::object &path, const std::function<void(const std::string &)> &writer)
+  {
+    const std::string file = path_of(path);
+    require_directory_of(file);
+    try
+      {
+        writer(file);
+      }
+    catch (const std::exception &e)
+      {
+        PyErr_SetString(PyExc_OSError, e.what());
+        throw py::error_already_set();
+      }
+  }
+
   /// CSV text (a str with a line break) or a path.
   CalibrationData calibration_data(const py::object &data, const Scene &scene)
   {
@@ -250,7 +270,10 @@ namespace
       .def_property_readonly("converged",
                              [](const Optimization &o) { return o.best().converged; })
       .def(
-        "write", [](const Optimization &o, const py::object &path) { o.write(path_of(path)); },
+        "write",
+        [](const Optimization &o, const py::object &path) {
+          write_to(path, [&](const std::string &file) { o.write(file); });
+        },
         py::arg("path"), "Write the optimum file (HDF5) to path")
       .def("__repr__", [](const Optimization &o) {
         const StartResult &b = o.best();
@@ -310,7 +333,10 @@ namespace
       .def_property_readonly("warnings", [](const Calibration &c) { return c.result.warnings; })
       .def_property_readonly("converged", [](const Calibration &c) { return c.result.converged; })
       .def(
-        "write", [](const Calibration &c, const py::object &path) { c.write(path_of(path)); },
+        "write",
+        [](const Calibration &c, const py::object &path) {
+          write_to(path, [&](const std::string &file) { c.write(file); });
+        },
         py::arg("path"), "Write the fit file (HDF5) to path")
       .def("__repr__", [](const Calibration &c) {
         std::string s = "<cdea.FitResult " +

@@ -56,4 +56,21 @@ namespace cdea
       s += (i ? " " : "") + format_fixed(values[i] * factor, decimals);
     return s;
   }
+
+  std::string shorten_at_word(const std::string &text, const std::size_t width)
+  {
+    if (text.size() <= width)
+      return text;
+    const std::string more = " ...";
+    // The last blank that leaves room for the marker; a first word longer
+    // than that is kept whole.
+    std::size_t cut = text.rfind(' ', width - more.size());
+    if (cut == std::string::npos || cut == 0)
+      cut = text.find(' ');
+    if (cut == std::string::npos)
+      return text;
+    while (cut > 0 && (text[cut - 1] == ' ' || text[cut - 1] == ',' || text[cut - 1] == ':'))
+      --cut;
+    return text.substr(0, cut) + more;
+  }
 } // namespace cdea

@@ -159,7 +159,7 @@ namespace cdea
                       << format_fixed_or_dash(r.red.stroke_increase, 2) << std::setw(10)
                       << format_fixed_or_dash(r.blue.outer_voltage / 1e3, 4) << std::setw(10)
                       << format_fixed_or_dash(r.blue.stroke_increase, 2) << "  "
-                      << (r.message.empty() ? "-" : r.message.substr(0, 60)) << '\n';
+                      << (r.message.empty() ? "-" : shorten_at_word(r.message, 60)) << '\n';
           }
         for (const auto &[name, line] :
              {std::pair<const char *, SweepLine SweepRow::*>{"red", &SweepRow::red},

@@ -25,4 +25,7 @@ namespace cdea
   /// separated by spaces ("5.0000 6.3824").
   std::string format_fixed_list(const std::vector<double> &values, int decimals,
                                 double factor = 1.);
+  /// @p text if it has at most @p width characters, else its words that fit
+  /// in @p width followed by " ..." (never cut inside a word).
+  std::string shorten_at_word(const std::string &text, std::size_t width);
 } // namespace cdea
