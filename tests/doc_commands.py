@@ -1,0 +1,255 @@
+"""Docs as tests: the command blocks of README.md, doc/*.md and
+postprocess/README.md run as written, in their order, and the numbers the
+docs quote compared with what the commands print.
+
+Conventions (doc/architecture.md, "Docs as tests"):
+  ```sh                a block of shell commands to run from the repository
+                       root, as written (bash -e -o pipefail)
+  ```pycon             a Python session: the first line starts the interpreter
+                       (PYTHONPATH=build/python /usr/bin/python3), then
+                       doctest examples (>>> lines and the output they print)
+  any other block      (indented, ```text, ```prm, ...) is not run
+  <!-- doc-test: expect TEXT -->     after a block: its output holds TEXT
+                       (blanks compared as one); every number of TEXT must
+                       also stand in the doc's text near the marker
+  <!-- doc-test: quick 'Sub/Entry=value' ... -->   before a block: in the
+                       quick mode (ctest) every `build/cdea` command of the
+                       block that reads a parameter file gets these --set
+                       overrides (a smaller case); its expects are checked in
+                       the full mode only
+  <!-- doc-test: exit N -->          before a block: it ends with status N
+  <!-- doc-test: by-hand REASON -->  before a block: not run in the quick
+                       mode (only its shell syntax and the files it names
+                       are checked), run in the full mode
+
+Each document runs in a scratch copy of the repository (prm/, postprocess/,
+scripts/, doc/ copied or linked; build/ linked, with build/cdea a wrapper
+that adds the quick overrides), so `results/` starts empty, as in a fresh
+clone.
+
+Usage: doc_commands.py SOURCE_DIR BUILD_DIR [--full] [--keep] [DOC.md ...]
+(default: every document; --full: every block at its full size; --keep:
+leave the scratch directories for a look).
+"""
+import os
+import re
+import shlex
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+MARKER = re.compile(r"<!--\s*doc-test:\s*(\w[\w-]*)\s*(.*?)\s*-->", re.S)
+FENCE = re.compile(r"^```(\w*)\s*$")
+NUMBER = re.compile(r"(?<![\w.])[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?(?![\w])")
+PYCON_START = "PYTHONPATH=build/python /usr/bin/python3"
+NEAR = 25  # lines around an expect marker where its numbers must stand
+
+
+class Block:
+    def __init__(self, doc, line, kind, text):
+        self.doc, self.line, self.kind, self.text = doc, line, kind, text
+        self.quick = []      # --set overrides in the quick mode
+        self.exit = 0        # expected exit status
+        self.by_hand = None  # why it runs in the full mode only
+        self.expects = []    # (line, text)
+
+    def where(self):
+        return f"{self.doc}:{self.line}"
+
+
+def parse(path, name):
+    """The runnable blocks of a document, with their markers."""
+    lines = open(path, encoding="utf-8").read().split("\n")
+    blocks, pending, prose = [], {}, []
+    i = 0
+    while i < len(lines):
+        m = FENCE.match(lines[i])
+        if m:
+            kind, start, body = m.group(1), i + 1, []
+            i += 1
+            while i < len(lines) and not lines[i].startswith("```"):
+                body.append(lines[i])
+                i += 1
+            if kind in ("sh", "pycon"):
+                b = Block(name, start, kind, "\n".join(body) + "\n")
+                b.quick = pending.get("quick", [])
+                b.exit = int(pending.get("exit", "0"))
+                b.by_hand = pending.get("by-hand")
+                blocks.append(b)
+            pending = {}
+            i += 1
+            continue
+        for m in MARKER.finditer(lines[i]):
+            key, value = m.group(1), m.group(2)
+            if key == "expect":
+                if not blocks:
+                    raise SystemExit(f"{name}:{i + 1}: an expect marker before any block")
+                blocks[-1].expects.append((i + 1, value))
+            elif key == "quick":
+                pending["quick"] = shlex.split(value)
+            elif key in ("exit", "by-hand"):
+                pending[key] = value
+            else:
+                raise SystemExit(f"{name}:{i + 1}: unknown doc-test marker '{key}'")
+        i += 1
+    return blocks, lines
+
+
+def prose_numbers(lines, line):
+    """Numbers in the text (not code, not markers) within NEAR lines of @p line."""
+    numbers, fenced = set(), False
+    for k, text in enumerate(lines):
+        if text.startswith("```"):
+            fenced = not fenced
+            continue
+        if fenced or text.startswith("    ") or abs(k + 1 - line) > NEAR:
+            continue
+        numbers.update(NUMBER.findall(MARKER.sub("", text)))
+    return numbers
+
+
+def scratch_copy(src, build, work):
+    """A repository the commands can write into: copies of what they write
+    (doc/), links to the rest, build/ with the cdea wrapper."""
+    os.makedirs(work)
+    for name in ("prm", "doc"):
+        shutil.copytree(os.path.join(src, name), os.path.join(work, name))
+    for name in ("postprocess", "scripts", "benchmarks", "tests", "include", "source",
+                 "python", "CMakeLists.txt", "README.md"):
+        if os.path.exists(os.path.join(src, name)):
+            os.symlink(os.path.join(src, name), os.path.join(work, name))
+    os.makedirs(os.path.join(work, "build"))
+    for name in os.listdir(build):
+        if name != "cdea":
+            os.symlink(os.path.join(build, name), os.path.join(work, "build", name))
+    wrapper = os.path.join(work, "build", "cdea")
+    with open(wrapper, "w") as f:
+        f.write(f"""#!/bin/bash
+# doc test: cdea with the quick overrides of the block (CDEA_DOC_SET, one a line)
+case "$1" in
+  run|shoot|compare|sweep|optimize|fit)
+    extra=()
+    while IFS= read -r item; do [ -n "$item" ] && extra+=(--set "$item"); done <<< "$CDEA_DOC_SET"
+    exec {shlex.quote(os.path.join(build, 'cdea'))} "$@" "${{extra[@]}}" ;;
+esac
+exec {shlex.quote(os.path.join(build, 'cdea'))} "$@"
+""")
+    os.chmod(wrapper, 0o755)
+
+
+def run_sh(block, work, full):
+    env = dict(os.environ)
+    env["CDEA_DOC_SET"] = "" if full else "\n".join(block.quick)
+    env.setdefault("MPLBACKEND", "Agg")
+    if os.geteuid() == 0:  # an MPI launcher refuses root without these
+        env.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    script = ("set -o pipefail\n" if block.exit else "set -e -o pipefail\n") + block.text
+    done = subprocess.run(["bash", "-c", script], cwd=work, env=env, stdout=subprocess.PIPE,
+                          stderr=subprocess.STDOUT, timeout=3600)
+    return done.returncode, done.stdout.decode(errors="replace")
+
+
+def run_pycon(block, work):
+    first, _, session = block.text.partition("\n")
+    if first.strip() != PYCON_START:
+        return 1, f"a pycon block must start with '{PYCON_START}', not '{first}'"
+    runner = (
+        "import doctest, sys\n"
+        "text = sys.stdin.read()\n"
+        "test = doctest.DocTestParser().get_doctest(text, {}, 'block', 'doc', 0)\n"
+        "flags = doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE\n"
+        "runner = doctest.DocTestRunner(optionflags=flags)\n"
+        "runner.run(test)\n"
+        "sys.exit(1 if runner.failures else 0)\n")
+    env = dict(os.environ, PYTHONPATH="build/python", MPLBACKEND="Agg")
+    done = subprocess.run(["/usr/bin/python3", "-c", runner], cwd=work, env=env,
+                          input=session.encode(), stdout=subprocess.PIPE,
+                          stderr=subprocess.STDOUT, timeout=600)
+    return done.returncode, done.stdout.decode(errors="replace")
+
+
+def syntax_only(block, work):
+    """A by-hand block in the quick mode: bash -n, and every repository file
+    it names (prm/..., postprocess/..., scripts/..., benchmarks/...) exists."""
+    done = subprocess.run(["bash", "-n", "-c", block.text], stdout=subprocess.PIPE,
+                          stderr=subprocess.STDOUT)
+    if done.returncode:
+        return done.returncode, done.stdout.decode(errors="replace")
+    for path in re.findall(r"(?<![\w/.])((?:prm|postprocess|scripts|benchmarks)/[\w./-]+)",
+                           block.text):
+        if not os.path.exists(os.path.join(work, path)):
+            return 1, f"the block names {path}, which does not exist"
+    return 0, ""
+
+
+def normalized(text):
+    return " ".join(text.split())
+
+
+def check_expects(block, lines, output, full):
+    problems = []
+    for line, text in block.expects:
+        missing = [n for n in NUMBER.findall(text) if n not in prose_numbers(lines, line)]
+        if missing:
+            problems.append(f"{block.doc}:{line}: the expect's numbers {missing} stand nowhere "
+                            f"in the text within {NEAR} lines")
+        if (block.quick and not full) or block.by_hand and not full:
+            continue
+        if normalized(text) not in normalized(output):
+            problems.append(f"{block.doc}:{line}: the output lacks '{text}'")
+    return problems
+
+
+def run_document(src, build, name, full, keep):
+    blocks, lines = parse(os.path.join(src, name), name)
+    work = os.path.join(tempfile.mkdtemp(prefix="cdea-doc-"), "repo")
+    scratch_copy(src, build, work)
+    failures = 0
+    for b in blocks:
+        start = time.time()
+        if b.by_hand and not full:
+            rc, out = syntax_only(b, work)
+            label = "syntax (by hand: %s)" % b.by_hand
+        elif b.kind == "pycon":
+            rc, out = run_pycon(b, work)
+            label = "pycon"
+        else:
+            rc, out = run_sh(b, work, full)
+            label = "quick" if b.quick and not full else "as written"
+        expected = 0 if (b.by_hand and not full) or b.kind == "pycon" else b.exit
+        problems = [] if rc == expected else [f"{b.where()}: exit {rc}, expected {expected}"]
+        problems += check_expects(b, lines, out, full)
+        if problems:
+            failures += 1
+            print(f"FAIL {b.where()} ({label}, {time.time() - start:.1f} s)")
+            for p in problems:
+                print("     " + p)
+            print("     output: " + out[-3000:].replace("\n", "\n     "))
+        else:
+            print(f"ok   {b.where()} ({label}, {time.time() - start:.1f} s"
+                  f"{', %d expects' % len(b.expects) if b.expects else ''})")
+    if keep:
+        print(f"     scratch copy: {work}")
+    else:
+        shutil.rmtree(os.path.dirname(work), ignore_errors=True)
+    return failures, len(blocks)
+
+
+def main(argv):
+    args = [a for a in argv if not a.startswith("--")]
+    src, build, docs = os.path.abspath(args[0]), os.path.abspath(args[1]), args[2:]
+    if not docs:
+        docs = ["README.md"] + sorted("doc/" + d for d in os.listdir(os.path.join(src, "doc"))
+                                      if d.endswith(".md")) + ["postprocess/README.md"]
+    failures = total = 0
+    for name in docs:
+        f, n = run_document(src, build, name, "--full" in argv, "--keep" in argv)
+        failures, total = failures + f, total + n
+    print(f"{failures} of {total} blocks failed")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
