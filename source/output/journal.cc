@@ -119,8 +119,7 @@ namespace cdea
       }
       std::vector<double> doubles()
       {
-        const std::size_t n = u64();
-        need(n * sizeof(double));
+        const std::size_t n = count(sizeof(double));
         std::vector<double> v(n);
         std::memcpy(v.data(), p, n * sizeof(double));
         p += n * sizeof(double);
@@ -128,8 +127,7 @@ namespace cdea
       }
       std::vector<int> ints()
       {
-        const std::size_t n = u64();
-        need(n * sizeof(int));
+        const std::size_t n = count(sizeof(int));
         std::vector<int> v(n);
         std::memcpy(v.data(), p, n * sizeof(int));
         p += n * sizeof(int);
@@ -142,6 +140,15 @@ namespace cdea
       {
         if (std::size_t(end - p) < n)
           throw OutputError("journal record shorter than its content");
+      }
+      /// A count of items of @p size bytes that the rest of the record holds
+      /// (checked without n * size, which a damaged count would overflow).
+      std::size_t count(const std::size_t size)
+      {
+        const std::size_t n = u64();
+        if (n > std::size_t(end - p) / size)
+          throw OutputError("journal record shorter than its content");
+        return n;
       }
     };
 
@@ -544,12 +551,18 @@ namespace cdea
           else if (!replay_record(r, replay, max_steps))
             break;
       }
+    catch (const RunInterrupted &)
+      {
+        throw;
+      }
     catch (const std::invalid_argument &e)
       {
         throw OutputError("the journal " + path + " holds an invalid record: " + e.what());
       }
-    catch (const OutputError &e)
+    catch (const std::exception &e)
       {
+        // A record that passes its check but not the replay (another
+        // build's journal, or damage the CRC missed): as damage, one line.
         throw OutputError("the journal " + path + " cannot be replayed: " + e.what());
       }
     return replay;
