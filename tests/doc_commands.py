@@ -4,20 +4,25 @@ docs quote compared with what the commands print.
 
 Conventions (doc/architecture.md, "Docs as tests"):
   ```sh                a block of shell commands to run from the repository
-                       root, as written (bash -e -o pipefail)
+                       root, as written (bash, as if typed: every command runs;
+                       one that ends with a status other than 0 fails the block)
   ```pycon             a Python session: the first line starts the interpreter
                        (PYTHONPATH=build/python /usr/bin/python3), then
                        doctest examples (>>> lines and the output they print)
   any other block      (indented, ```text, ```prm, ...) is not run
   <!-- doc-test: expect TEXT -->     after a block: its output holds TEXT
-                       (blanks compared as one); every number of TEXT must
-                       also stand in the doc's text near the marker
+                       (blanks compared as one, and each number of TEXT as the
+                       printed one rounded to the digits TEXT quotes); every
+                       number of TEXT must also stand in the doc's text or
+                       output samples near the marker
   <!-- doc-test: quick 'Sub/Entry=value' ... -->   before a block: in the
                        quick mode (ctest) every `build/cdea` command of the
                        block that reads a parameter file gets these --set
                        overrides (a smaller case); its expects are checked in
                        the full mode only
-  <!-- doc-test: exit N -->          before a block: it ends with status N
+  <!-- doc-test: allow-exit N,... --> before a block: its commands may end
+                       with these statuses too (a run that stops at a fold: 2);
+                       any other non-zero status of a command fails the block
   <!-- doc-test: by-hand REASON -->  before a block: not run in the quick
                        mode (only its shell syntax and the files it names
                        are checked), run in the full mode
@@ -41,17 +46,17 @@ import tempfile
 import time
 
 MARKER = re.compile(r"<!--\s*doc-test:\s*(\w[\w-]*)\s*(.*?)\s*-->", re.S)
-FENCE = re.compile(r"^```(\w*)\s*$")
+FENCE = re.compile(r"^( {0,3})```(\w*)\s*$")  # a fence may be indented (in a list item)
 NUMBER = re.compile(r"(?<![\w.])[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?(?![\w])")
 PYCON_START = "PYTHONPATH=build/python /usr/bin/python3"
-NEAR = 25  # lines around an expect marker where its numbers must stand
+NEAR = 40  # lines around an expect marker where its numbers must stand
 
 
 class Block:
     def __init__(self, doc, line, kind, text):
         self.doc, self.line, self.kind, self.text = doc, line, kind, text
         self.quick = []      # --set overrides in the quick mode
-        self.exit = 0        # expected exit status
+        self.allowed = {0}   # exit statuses its commands may have
         self.by_hand = None  # why it runs in the full mode only
         self.expects = []    # (line, text)
 
@@ -67,15 +72,15 @@ def parse(path, name):
     while i < len(lines):
         m = FENCE.match(lines[i])
         if m:
-            kind, start, body = m.group(1), i + 1, []
+            indent, kind, start, body = len(m.group(1)), m.group(2), i + 1, []
             i += 1
-            while i < len(lines) and not lines[i].startswith("```"):
-                body.append(lines[i])
+            while i < len(lines) and not lines[i].lstrip(" ").startswith("```"):
+                body.append(lines[i][indent:] if lines[i][:indent].isspace() else lines[i])
                 i += 1
             if kind in ("sh", "pycon"):
                 b = Block(name, start, kind, "\n".join(body) + "\n")
                 b.quick = pending.get("quick", [])
-                b.exit = int(pending.get("exit", "0"))
+                b.allowed = {0} | {int(x) for x in pending.get("allow-exit", "").split(",") if x}
                 b.by_hand = pending.get("by-hand")
                 blocks.append(b)
             pending = {}
@@ -89,7 +94,7 @@ def parse(path, name):
                 blocks[-1].expects.append((i + 1, value))
             elif key == "quick":
                 pending["quick"] = shlex.split(value)
-            elif key in ("exit", "by-hand"):
+            elif key in ("allow-exit", "by-hand"):
                 pending[key] = value
             else:
                 raise SystemExit(f"{name}:{i + 1}: unknown doc-test marker '{key}'")
@@ -98,13 +103,18 @@ def parse(path, name):
 
 
 def prose_numbers(lines, line):
-    """Numbers in the text (not code, not markers) within NEAR lines of @p line."""
-    numbers, fenced = set(), False
+    """Numbers the doc shows within NEAR lines of @p line: in its text and
+    its output samples, not in the blocks that run nor in markers."""
+    numbers, runnable = set(), None
     for k, text in enumerate(lines):
-        if text.startswith("```"):
-            fenced = not fenced
+        fence = FENCE.match(text) if runnable is None else None
+        if fence:
+            runnable = fence.group(2) in ("sh", "pycon")
             continue
-        if fenced or text.startswith("    ") or abs(k + 1 - line) > NEAR:
+        if text.lstrip(" ").startswith("```"):
+            runnable = None
+            continue
+        if runnable or abs(k + 1 - line) > NEAR:
             continue
         numbers.update(NUMBER.findall(MARKER.sub("", text)))
     return numbers
@@ -145,10 +155,20 @@ def run_sh(block, work, full):
     env.setdefault("MPLBACKEND", "Agg")
     if os.geteuid() == 0:  # an MPI launcher refuses root without these
         env.update(OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    script = ("set -o pipefail\n" if block.exit else "set -e -o pipefail\n") + block.text
+    # Every command runs, as typed into a shell; the ERR trap notes each that
+    # ends with a non-zero status.
+    statuses = os.path.join(work, ".doc-test-statuses")
+    script = ("set -E -o pipefail\nexec 3> %s\n" % shlex.quote(statuses) +
+              "trap 'echo \"$? $BASH_COMMAND\" >&3' ERR\n" + block.text)
     done = subprocess.run(["bash", "-c", script], cwd=work, env=env, stdout=subprocess.PIPE,
                           stderr=subprocess.STDOUT, timeout=3600)
-    return done.returncode, done.stdout.decode(errors="replace")
+    failed = [line for line in open(statuses).read().splitlines()
+              if int(line.split(" ", 1)[0]) not in block.allowed]
+    os.remove(statuses)
+    output = done.stdout.decode(errors="replace")
+    if failed:
+        return 1, output + "\n" + "\n".join("status " + f for f in failed)
+    return 0, output
 
 
 def run_pycon(block, work):
@@ -188,16 +208,55 @@ def normalized(text):
     return " ".join(text.split())
 
 
+def rounds_to(printed, quoted):
+    """Whether the printed number, rounded to the digits of the quoted one,
+    is the quoted one (2.0 quotes 2, 6.6309 quotes 6.63091)."""
+    decimals = len(quoted.split("e")[0].split(".")[1]) if "." in quoted.split("e")[0] else 0
+    try:
+        a, b = float(printed), float(quoted)
+    except ValueError:
+        return False
+    if "e" in quoted.lower():
+        return abs(a - b) <= 0.5 * 10.0 ** (-decimals) * abs(b) * 1.000001 + 1e-300
+    return abs(a - b) <= 0.5 * 10.0 ** (-decimals) * 1.000001
+
+
+def quotes(shown, number):
+    """Whether the doc's number @p shown is the expect's @p number: equal, or
+    one of them the other rounded to its digits (a quoted 4.26 for 4.2618)."""
+    try:
+        if float(shown) == float(number):
+            return True
+    except ValueError:
+        return False
+    return ("." in number and rounds_to(shown, number)) or ("." in shown and rounds_to(number, shown))
+
+
+def found(expect, output):
+    """Whether the output holds the expect's text, blanks compared as one and
+    each number as the output's rounded to the digits the expect quotes."""
+    parts, pattern, quoted = NUMBER.split(normalized(expect)), "", NUMBER.findall(normalized(expect))
+    for k, part in enumerate(parts):
+        pattern += re.escape(part)
+        if k < len(quoted):
+            pattern += r"([-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?)"
+    for m in re.finditer(pattern, normalized(output)):
+        if all(rounds_to(p, q) for p, q in zip(m.groups(), quoted)):
+            return True
+    return False
+
+
 def check_expects(block, lines, output, full):
     problems = []
     for line, text in block.expects:
-        missing = [n for n in NUMBER.findall(text) if n not in prose_numbers(lines, line)]
+        shown = prose_numbers(lines, line)
+        missing = [n for n in NUMBER.findall(text) if not any(quotes(p, n) for p in shown)]
         if missing:
             problems.append(f"{block.doc}:{line}: the expect's numbers {missing} stand nowhere "
                             f"in the text within {NEAR} lines")
         if (block.quick and not full) or block.by_hand and not full:
             continue
-        if normalized(text) not in normalized(output):
+        if not found(text, output):
             problems.append(f"{block.doc}:{line}: the output lacks '{text}'")
     return problems
 
@@ -218,8 +277,10 @@ def run_document(src, build, name, full, keep):
         else:
             rc, out = run_sh(b, work, full)
             label = "quick" if b.quick and not full else "as written"
-        expected = 0 if (b.by_hand and not full) or b.kind == "pycon" else b.exit
-        problems = [] if rc == expected else [f"{b.where()}: exit {rc}, expected {expected}"]
+        problems = [] if rc == 0 else [f"{b.where()}: a command failed (see the status lines "
+                                       "at the end of the output)" if b.kind == "sh" and
+                                       not (b.by_hand and not full) else
+                                       f"{b.where()}: exit {rc}"]
         problems += check_expects(b, lines, out, full)
         if problems:
             failures += 1

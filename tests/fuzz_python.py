@@ -71,7 +71,7 @@ def csv_case(rng, text):
         elif kind == "crlf":
             lines = [l + "\r" for l in lines]
         elif kind == "many" and data:
-            lines += [lines[rng.choice(data)]] * rng.choice([50, 2000])
+            lines += [lines[rng.choice(data)]] * rng.choice([50, 300])
         else:
             joined = "\n".join(lines)
             at = rng.randrange(len(joined) + 1)
