@@ -23,6 +23,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <random>
 
 using namespace cdea;
@@ -134,6 +135,25 @@ int main(int argc, char **argv)
   expect(data_error("V1_kV, V2_kV, displacement_mm\n-1, 1, 20\n", 2),
          "column V1_kV: a voltage must not be negative");
   expect(data_error("# only a comment\n", 1), "no header line");
+  expect(data_error("V1_kV, V2_kV, displacement_mm\n1, 1, -20\n", 2),
+         "line 2, column displacement_mm: a displacement is the distance");
+  check(data_error("\xEF\xBB\xBFV1_kV, displacement_mm\n1, 20\n", 1) == "",
+        "a UTF-8 byte order mark before the header is skipped");
+  expect(data_error("V1_kV, displacement_mm\xC2\xA0\n", 1),
+         "unknown column 'displacement_mm\\xC2\\xA0'");
+  {
+    std::istringstream in("V1_kV, displacement_mm\n1601, 20\n");
+    std::string        message;
+    try
+      {
+        read_calibration_data(in, "data", 1, 1.6e6);
+      }
+    catch (const InputError &e)
+      {
+        message = e.what();
+      }
+    expect(message, "data, line 2, column V1_kV: 1601 kV is above the ceiling of 1600 kV");
+  }
   check(data_error("V2_kV,displacement_mm, V1_kV\n1,20,2 # comment\n\n", 2) == "",
         "columns in any order, comments and blank lines accepted");
   expect(settings_error("  set Free parameters = shear modulus, thickness\n"),

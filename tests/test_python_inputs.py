@@ -1,0 +1,90 @@
+"""The Python module's answers to inputs it cannot use (issue 22): fields()
+names the steps it has, overrides must be a dict, write(path) creates no
+folder, a fit whose start cannot reach a point returns (not converged, the
+point named, standard errors NaN); plot_run.py puts a time run over time."""
+import math
+import os
+import subprocess
+import sys
+
+import pytest
+
+import cdea
+
+SRC = os.environ["CDEA_SOURCE_DIR"]
+DEFAULT = os.path.join(SRC, "prm", "default.prm")
+
+
+def test_fields_names_the_range():
+    r = cdea.run(DEFAULT)
+    assert len(r.fields(-26)["r"]) > 0 and len(r.fields(25)["r"]) > 0
+    for step in (-27, 26):
+        with pytest.raises(IndexError) as raised:
+            r.fields(step)
+        assert str(raised.value) == (f"step {step} is not one of the 26 steps (0 to 25, or -26 "
+                                     "to -1 from the end)")
+
+
+def test_overrides_must_be_a_dict():
+    with pytest.raises(TypeError, match=r"overrides must be a dict \{'Subsection/Entry': value\}"
+                       r".*got str 'Loading/Mass \(g\)=300'"):
+        cdea.run(DEFAULT, overrides="Loading/Mass (g)=300")
+    with pytest.raises(TypeError, match="overrides must be a dict"):
+        cdea.parameters("", overrides=[("Loading/Mass (g)", 300)])
+    assert cdea.run(DEFAULT, overrides={"Loading/Mass (g)": 300}).completed
+
+
+def test_override_values_refused_with_the_entry():
+    with pytest.raises(ValueError, match=r"Material/Jlim must be a finite number, got 'inf'"):
+        cdea.parameters("", overrides={"Material/Jlim": float("inf")})
+    with pytest.raises(ValueError, match="'#' starts a comment"):
+        cdea.parameters("", overrides={"Output/Base name": "a#b"})
+    with pytest.raises(ValueError, match="in parameter text: line 3: 'end' without a subsection"):
+        cdea.parameters("subsection Loading\nend\nend\n")
+
+
+def test_write_creates_no_folder(tmp_path):
+    r = cdea.run(DEFAULT)
+    missing = tmp_path / "nonexistent" / "dir"
+    with pytest.raises(FileNotFoundError, match="the directory '.*nonexistent/dir' does not exist"):
+        r.write(str(missing / "x.h5"))
+    assert not (tmp_path / "nonexistent").exists()
+    assert r.write(str(tmp_path / "x.h5")) == str(tmp_path / "x.h5")
+
+
+def test_fit_start_beyond_the_fold(tmp_path):
+    data = open(os.path.join(SRC, "prm", "fit-example.csv")).read() + "5.00, 7.20, 31.0\n"
+    f = cdea.fit(os.path.join(SRC, "prm", "fit-example.prm"), data)
+    assert not f.converged
+    status = f.attributes["status"]
+    assert status.startswith("the fit cannot start: data point 21 (5, 7.2 kV) cannot be reached")
+    assert "nor from data point 20 (5, 6.5 kV)" in status
+    assert all(math.isnan(e) for e in f.standard_errors.values())
+    assert f.values == {"shear modulus (Pa)": 20000.0, "Jlim": 150.0}
+
+
+def test_fit_data_checked():
+    prm = os.path.join(SRC, "prm", "fit-example.prm")
+    for csv, message in [("\ufeffV1_kV, V2_kV, displacement_mm\n1, 1, -18\n",
+                          "data, line 2, column displacement_mm: a displacement is the distance"),
+                         ("V1_kV, V2_kV, displacement_mm\n1, 1700, 18\n",
+                          "data, line 2, column V2_kV: 1700 kV is above the ceiling"),
+                         ("V1_kV, V2_kV, displacement_mm\n1, 1\n",
+                          "data, line 2: 2 fields, but the header has 3")]:
+        with pytest.raises(ValueError, match=message.replace("(", r"\(").replace("|", r"\|")):
+            cdea.fit(prm, csv)
+
+
+def test_plot_run_puts_a_time_run_over_time(tmp_path):
+    text = open(os.path.join(SRC, "prm", "pump-time.prm")).read()
+    r = cdea.run(text, overrides={"Time/Cycles": 1, "Time/Time step (s)": 0.05})
+    path = r.write(str(tmp_path / "pump-time.h5"))
+    sys.path.insert(0, os.path.join(SRC, "postprocess"))
+    import plot_run
+    run = plot_run.Run(path)
+    rows = run.rows(plot_run.STAGE_VOLTAGE)
+    x, label = run.x_axis(rows)
+    assert label == "time t (s)" and x[-1] == pytest.approx(2.0)
+    done = subprocess.run(["/usr/bin/python3", os.path.join(SRC, "postprocess", "plot_run.py"),
+                           path, "--out", str(tmp_path)], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
