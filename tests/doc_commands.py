@@ -102,7 +102,10 @@ def parse(path, name):
             pending = {}
             i += 1
             continue
-        for m in MARKER.finditer(lines[i]):
+        # A marker is a line of its own (one quoted in the text is none).
+        for m in [MARKER.fullmatch(lines[i].strip())] if lines[i].strip() else []:
+            if m is None:
+                continue
             key, value = m.group(1), m.group(2)
             if key == "expect":
                 if not blocks:
