@@ -27,20 +27,38 @@
 namespace py = pybind11;
 using namespace cdea;
 
-/// write(path): the folder of @p path must exist (FileNotFoundError); only
-/// the default path creates Output/Directory, as the command line does.
+/// write(path): the file's folder is created if the folder above it exists
+/// (as mkdir does), never a chain of folders (a typo must not build a tree
+/// from /); FileNotFoundError otherwise. Only the default path creates
+/// Output/Directory whole, as the command line does.
 void require_directory_of(const std::string &file)
 {
   const std::filesystem::path parent = std::filesystem::path(file).parent_path();
   std::error_code             error;
   if (parent.empty() || std::filesystem::is_directory(parent, error))
     return;
+  const std::filesystem::path above = parent.parent_path();
+  if (!std::filesystem::exists(parent, error) &&
+      (above.empty() || std::filesystem::is_directory(above, error)))
+    {
+      if (std::filesystem::create_directory(parent, error) || error.value() == 0)
+        return;
+      PyErr_SetString(PyExc_OSError, ("cannot write '" + file + "': cannot create the folder '" +
+                                      parent.string() + "': " + error.message())
+                                       .c_str());
+      throw py::error_already_set();
+    }
   const std::string message =
-    "cannot write '" + file + "': the directory '" + parent.string() +
-    "' does not exist (write(path) creates no directory; write() without a path creates "
-    "Output/Directory as the command line does)";
-  PyErr_SetObject(PyExc_FileNotFoundError,
-                  py::make_tuple(ENOENT, message).ptr());
+    "cannot write '" + file + "': " +
+    (std::filesystem::exists(parent, error) ?
+       "'" + parent.string() + "' is not a directory" :
+       "the directory '" + above.string() + "' does not exist (write(path) creates the " +
+         "file's folder only below a folder that exists)");
+  PyErr_SetObject(std::filesystem::exists(parent, error) ? PyExc_NotADirectoryError :
+                                                           PyExc_FileNotFoundError,
+                  py::make_tuple(std::filesystem::exists(parent, error) ? ENOTDIR : ENOENT,
+                                 message)
+                    .ptr());
   throw py::error_already_set();
 }
 

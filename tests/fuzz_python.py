@@ -35,7 +35,7 @@ BAD_TEXT = re.compile(r"[Ss]tacktrace|An error occurred in line|terminate called
                       r"Segmentation fault|Traceback|what\(\):|Unable to cast")
 NUMBERS = ["0", "-0", "-1", "-18.2", "1e-320", "1e306", "-1e306", "1e400", "nan", "NaN", "inf",
            "-inf", "", " ", "abc", "1,5", "0x10", "1e", "+", "7.2", "9", "1600", "1601", "99999",
-           "1" * 400, "\xff", "5.00.1", "--1", "1_000", "٣"]
+           "1" * 400, "\xff", "5.00.1", "--1", "1_000", "٣", "1, " * 200000]
 
 
 def csv_case(rng, text):
@@ -99,7 +99,8 @@ def prm_case(rng, texts):
         i = rng.randrange(len(lines)) if lines else 0
         if kind == "value" and sets:
             i = rng.choice(sets)
-            lines[i] = lines[i].split("=", 1)[0] + "= " + rng.choice(NUMBERS + ["a#b", "1 # x"])
+            lines[i] = lines[i].split("=", 1)[0] + "= " + rng.choice(NUMBERS + ["a#b", "1 # x",
+                                                                                "inf", "-nan"])
         elif kind == "delete" and lines:
             del lines[i]
         elif kind == "repeat" and lines:

@@ -76,7 +76,11 @@ def journal_for_recover(work):
     p = subprocess.Popen([exe, "run", "prm/default.prm", "--set",
                           "Solver/Voltage increment (kV)=0.0005"], cwd=work,
                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    time.sleep(1.2)
+    journal = os.path.join(work, "results/default.h5.journal")
+    for _ in range(600):  # a few hundred steps, however loaded the machine
+        if os.path.exists(journal) and os.path.getsize(journal) > 2_000_000:
+            break
+        time.sleep(0.05)
     p.kill()
     p.wait()
     for leftover in ("results/default.partial.h5", "results/default.h5.lock"):

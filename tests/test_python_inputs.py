@@ -43,13 +43,16 @@ def test_override_values_refused_with_the_entry():
         cdea.parameters("subsection Loading\nend\nend\n")
 
 
-def test_write_creates_no_folder(tmp_path):
+def test_write_creates_no_chain_of_folders(tmp_path):
     r = cdea.run(DEFAULT)
     missing = tmp_path / "nonexistent" / "dir"
-    with pytest.raises(FileNotFoundError, match="the directory '.*nonexistent/dir' does not exist"):
+    with pytest.raises(FileNotFoundError, match="the directory '.*nonexistent' does not exist"):
         r.write(str(missing / "x.h5"))
     assert not (tmp_path / "nonexistent").exists()
-    assert r.write(str(tmp_path / "x.h5")) == str(tmp_path / "x.h5")
+    with pytest.raises(FileNotFoundError):
+        r.write("/nonexistent-cdea-test/dir/x.h5")
+    assert not os.path.exists("/nonexistent-cdea-test")
+    assert r.write(str(tmp_path / "sub" / "x.h5")) == str(tmp_path / "sub" / "x.h5")
 
 
 def test_fit_start_beyond_the_fold(tmp_path):

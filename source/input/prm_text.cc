@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <regex>
 #include <sstream>
 #include <vector>
 
@@ -196,23 +195,53 @@ namespace cdea
 
   namespace
   {
+    /// "nan", "inf", "-infinity", "NaN(1)": what strtod reads as no finite
+    /// number (compared by hand: a regular expression would recurse over a
+    /// value of a megabyte).
     bool not_finite(const std::string &value)
     {
-      static const std::regex special("[+-]?(nan|inf|infinity)(\\(.*\\))?",
-                                      std::regex::icase);
-      return std::regex_match(trim_blanks(value), special);
+      std::string v = trimmed(value);
+      if (v.size() > 40)
+        return false;
+      if (!v.empty() && (v[0] == '+' || v[0] == '-'))
+        v.erase(0, 1);
+      for (char &c : v)
+        c = char(std::tolower(static_cast<unsigned char>(c)));
+      return v == "inf" || v == "infinity" || v.rfind("nan", 0) == 0;
+    }
+
+    /// The text of @p message between @p before and @p after, from @p at on
+    /// (at moves past it); false if they are not there.
+    bool between(const std::string &message, std::size_t &at, const std::string &before,
+                 const std::string &after, std::string &text)
+    {
+      const auto begin = message.find(before, at);
+      if (begin == std::string::npos)
+        return false;
+      const auto end = message.find(after, begin + before.size());
+      if (end == std::string::npos)
+        return false;
+      text = message.substr(begin + before.size(), end - begin - before.size());
+      at   = end + after.size();
+      return true;
     }
   } // namespace
 
   std::string explain_parse_error(const std::string &text, const std::string &message)
   {
-    static const std::regex pattern_error(
-      "Line <([0-9]+)> of file <[^>]*>: The entry value (.*) for the entry named (.*) does "
-      "not match the given pattern: \\[(Double|Integer).*");
-    std::smatch m;
-    if (!std::regex_match(message, m, pattern_error) || !not_finite(m[2].str()))
+    // deal.II: "Line <N> of file <F>: The entry value V for the entry named E
+    // does not match the given pattern: [Double ...]".
+    std::string number, file, value, entry, pattern;
+    std::size_t at = 0;
+    if (message.rfind("Line <", 0) != 0 || !between(message, at, "Line <", ">", number) ||
+        !between(message, at, " of file <", ">: ", file) ||
+        !between(message, at, "The entry value ", " for the entry named ", value) ||
+        !between(message, at, "", " does not match the given pattern: [", entry) ||
+        (message.compare(at, 6, "Double") != 0 && message.compare(at, 7, "Integer") != 0) ||
+        !not_finite(value) || number.empty() || number.size() > 9 ||
+        number.find_first_not_of("0123456789") != std::string::npos)
       return message;
-    const unsigned int line = unsigned(std::stoul(m[1].str()));
+    const unsigned int line = unsigned(std::stoul(number));
     std::vector<Open>  open;
     for (const Line &l : lines_of(text))
       {
@@ -223,8 +252,8 @@ namespace cdea
         else if (is_end(l) && !open.empty())
           open.pop_back();
       }
-    return "line " + m[1].str() + ": " + path_of(open) + (open.empty() ? "" : "/") +
-           m[3].str() + " must be a finite number, got '" + m[2].str() + "'";
+    return "line " + number + ": " + path_of(open) + (open.empty() ? "" : "/") + entry +
+           " must be a finite number, got '" + value + "'";
   }
 
   std::string explain_override_error(const std::string &key, const std::string &value,
