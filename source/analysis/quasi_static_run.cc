@@ -30,6 +30,12 @@ namespace cdea
       return std::isnan(value) ? std::string("-") : format_fixed(value, decimals);
     }
 
+    /// The table's "stable" entry: the stability check's answer, "-" when off.
+    const char *stable_text(const double stable)
+    {
+      return std::isnan(stable) ? "-" : stable > 0. ? "yes" : "NO";
+    }
+
     /// Prints one table row per converged step and writes it to the file.
     class StepRecorder
     {
@@ -66,7 +72,7 @@ namespace cdea
                   << fixed_or_dash(column(s, summary_column::volume_change), 3) << ' ' << std::setw(11)
                   << format_fixed(s.s2_min / scene.material.shear_modulus, 6) << std::setw(6)
                   << (s.wrinkled ? "yes" : "no") << std::setw(7)
-                  << (std::isnan(s.min_eigenvalue) ? "-" : s.min_eigenvalue > 0. ? "yes" : "NO")
+                  << stable_text(column(s, summary_column::stable))
                   << std::setw(6) << s.newton_iterations << std::endl;
       }
 

@@ -7,7 +7,7 @@ namespace cdea
     const bool needs_volume =
       active() && inertia.volume_mass > 0. && (flags & (assemble_energy | assemble_residual |
                                                         assemble_tangent));
-    return needs_volume ? assemble_volume : 0;
+    return needs_volume ? static_cast<unsigned int>(assemble_volume) : 0u;
   }
 
   bool InertiaTerm::add_cell(const CellInput &in, const unsigned int flags, CellScratch &,

@@ -2,7 +2,6 @@
 
 #include <cdea/material/gent_law.h>
 #include <cdea/numerics/arc_length.h>
-#include <cdea/numerics/band_eigenvalue.h>
 
 #include <algorithm>
 #include <cmath>
@@ -217,21 +216,25 @@ namespace cdea
     return K;
   }
 
-  double MembraneModel::min_tangent_eigenvalue()
+  TangentStability MembraneModel::Impl::check_stability(const bool with_eigenvalue)
+  {
+    return stability_check.compute(system.tangent, mesh.constrained, system.rank_one_coupling,
+                                   system.volume_gradient, with_eigenvalue);
+  }
+
+  StateStability MembraneModel::stability()
   {
     if (!impl->tangent_is_current)
       {
         impl->assemble_constrained(impl->solution, assemble_residual | assemble_tangent);
         impl->tangent_is_current = true;
       }
-    const AssembledSystem &s = impl->system;
-    // A rank-one coupling (the water's free surface) fills the matrix: the
-    // dense solver on the band plus the rank-one term.
-    if (s.rank_one_coupling != 0.)
-      return smallest_symmetric_eigenvalue(s.tangent, s.rank_one_coupling, s.volume_gradient,
-                                           impl->mesh.constrained);
-    return smallest_symmetric_eigenvalue(s.tangent, impl->mesh.constrained);
+    const TangentStability t = impl->check_stability(true);
+    return {t.smallest_eigenvalue,
+            t.known ? double(t.positive_definite) : std::numeric_limits<double>::quiet_NaN()};
   }
+
+  double MembraneModel::min_tangent_eigenvalue() { return stability().min_eigenvalue; }
 
   void MembraneModel::set_relaxed(const bool relaxed)
   {

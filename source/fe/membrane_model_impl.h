@@ -9,6 +9,7 @@
 #include <cdea/fe/trilinos_solver.h>
 #include <cdea/fe/water_term.h>
 #include <cdea/material/tension_field.h>
+#include <cdea/numerics/band_eigenvalue.h>
 #include <cdea/numerics/sherman_morrison.h>
 
 namespace cdea
@@ -45,6 +46,8 @@ namespace cdea
     std::unique_ptr<TangentSolver> solver;
     ShermanMorrison                free_surface;
     bool                           factorized = false;
+    /// The stability check's factors and its last eigenvector.
+    StabilityCheck stability_check;
 
     void set_load(const LoadState &new_load);
     void apply_boundary_values(Eigen::VectorXd &x) const;
@@ -56,6 +59,10 @@ namespace cdea
     bool factorize();
     /// u = K^-1 b with the last tangent (NaN if singular), constrained entries zero.
     void solve_tangent(const Eigen::VectorXd &b, Eigen::VectorXd &u);
+    /// The stability of the tangent of the last assembly without the
+    /// constrained dofs: positive definite, and the smallest eigenvalue if
+    /// @p with_eigenvalue.
+    TangentStability check_stability(bool with_eigenvalue);
 
     void evaluate(const Eigen::VectorXd &x, Eigen::VectorXd &r) override;
     void solve_linearized(const Eigen::VectorXd &r, Eigen::VectorXd &dx) override;

@@ -9,10 +9,6 @@
 #include <stdexcept>
 #include <utility>
 
-// LAPACK: Cholesky factorization of a symmetric positive definite band matrix.
-extern "C" void dpbtrf_(const char *uplo, const int *n, const int *kd, double *ab,
-                        const int *ldab, int *info);
-
 namespace cdea
 {
   std::string SceneParameter::name() const
@@ -204,21 +200,8 @@ namespace cdea
 
   bool StateSensitivity::stable() const
   {
-    const MembraneModel::Impl &m = *model.impl;
-    if (m.system.rank_one_coupling != 0.)
-      return model.min_tangent_eigenvalue() > 0.;
-    // The upper band of the constrained tangent (constrained rows and columns
-    // are decoupled with a positive diagonal), column by column.
-    const BandMatrix &K = m.system.tangent;
-    const int         n = K.size(), kd = K.bandwidth(), ldab = kd + 1;
-    std::vector<double> ab(std::size_t(ldab) * n, 0.);
-    for (int j = 0; j < n; ++j)
-      for (int i = std::max(0, j - kd); i <= j; ++i)
-        ab[std::size_t(j) * ldab + kd + i - j] = 0.5 * (K.entry(i, j) + K.entry(j, i));
-    int        info = 0;
-    const char uplo = 'U';
-    dpbtrf_(&uplo, &n, &kd, ab.data(), &ldab, &info);
-    return info == 0;
+    // The constructor left the tangent of the state in the model.
+    return model.impl->check_stability(false).positive_definite;
   }
 
   namespace

@@ -77,8 +77,8 @@ namespace cdea
   unsigned int WaterTerm::extra_flags(const unsigned int flags) const
   {
     return weight > 0. && (flags & (assemble_energy | assemble_residual | assemble_tangent)) ?
-             assemble_volume :
-             0;
+             static_cast<unsigned int>(assemble_volume) :
+             0u;
   }
 
   // At h = 0 the local potential is c pi int phi dR with phi = z r^2 z':

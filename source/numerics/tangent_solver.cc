@@ -1,5 +1,8 @@
 #include <cdea/numerics/tangent_solver.h>
 
+#include <algorithm>
+#include <cmath>
+
 // LAPACK: LU factorization of a general band matrix and solves with it.
 extern "C" void dgbtrf_(const int *m, const int *n, const int *kl, const int *ku, double *ab,
                         const int *ldab, int *ipiv, int *info);
@@ -9,14 +12,106 @@ extern "C" void dgbtrs_(const char *trans, const int *n, const int *kl, const in
 
 namespace cdea
 {
+  namespace
+  {
+    /// Up to this bandwidth LAPACK's dgbtrf takes its unblocked path
+    /// (dgbtf2: ILAENV gives block size 1 for KU <= 64), which the loops
+    /// below repeat operation for operation, without its BLAS calls per
+    /// column (at the FE tangents' bandwidths the calls cost more than the
+    /// arithmetic). Wider bands go to LAPACK.
+    constexpr unsigned int widest_inline_band = 64;
+
+    /// dgbtf2 on A(i, j) at ab[(kv + i - j) + j ld], kv = 2 bw: partial
+    /// pivoting by rows, multipliers scaled by the pivot's reciprocal, the
+    /// trailing band updated column by column; the rows of fill-in zeroed as
+    /// they come into use. Pivots 0-based; false if a pivot is zero.
+    bool band_lu(double *ab, const unsigned int n, const unsigned int bw, int *pivots)
+    {
+      const std::size_t  ld = 3 * bw + 1;
+      const unsigned int kv = 2 * bw;
+      bool               regular = true;
+      for (unsigned int j = bw + 1; j < std::min(kv, n); ++j)
+        for (unsigned int i = kv - j; i < bw; ++i)
+          ab[i + j * ld] = 0.;
+      unsigned int ju = 0;
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          if (j + kv < n)
+            std::fill(ab + (j + kv) * ld, ab + (j + kv) * ld + bw, 0.);
+          double            *column = ab + kv + j * ld; // column[i] = A(j + i, j)
+          const unsigned int km     = std::min(bw, n - 1 - j);
+          unsigned int       p      = 0;
+          for (unsigned int i = 1; i <= km; ++i)
+            if (std::abs(column[i]) > std::abs(column[p]))
+              p = i;
+          pivots[j] = j + p;
+          if (column[p] == 0.)
+            {
+              regular = false;
+              continue;
+            }
+          ju = std::max(ju, std::min(j + bw + p, n - 1));
+          if (p != 0)
+            for (unsigned int k = 0; k <= ju - j; ++k) // A(j + p, j + k) <-> A(j, j + k)
+              std::swap(ab[(kv + p - k) + (j + k) * ld], ab[(kv - k) + (j + k) * ld]);
+          if (km == 0)
+            continue;
+          const double reciprocal = 1. / column[0];
+          for (unsigned int i = 1; i <= km; ++i)
+            column[i] *= reciprocal;
+          for (unsigned int c = 1; c <= ju - j; ++c)
+            {
+              double      *target = ab + (kv - c) + (j + c) * ld; // target[i] = A(j + i, j + c)
+              const double factor = -target[0];
+              if (factor != 0.)
+                for (unsigned int i = 1; i <= km; ++i)
+                  target[i] += column[i] * factor;
+            }
+        }
+      return regular;
+    }
+
+    /// dgbtrs for one right-hand side: the row interchanges and L column by
+    /// column, then U from the last row up (dtbsv).
+    void band_lu_solve(const double *ab, const unsigned int n, const unsigned int bw,
+                       const int *pivots, double *b)
+    {
+      const std::size_t  ld = 3 * bw + 1;
+      const unsigned int kv = 2 * bw;
+      for (unsigned int j = 0; j + 1 < n; ++j)
+        {
+          const unsigned int lm = std::min(bw, n - 1 - j);
+          if (unsigned(pivots[j]) != j)
+            std::swap(b[pivots[j]], b[j]);
+          const double factor = -b[j];
+          if (factor != 0.)
+            for (unsigned int i = 1; i <= lm; ++i)
+              b[j + i] += ab[kv + i + j * ld] * factor;
+        }
+      for (unsigned int j = n; j-- > 0;)
+        if (b[j] != 0.)
+          {
+            b[j] /= ab[kv + j * ld];
+            const double       x  = b[j];
+            const unsigned int lo = j > kv ? j - kv : 0;
+            for (unsigned int i = j; i-- > lo;)
+              b[i] -= x * ab[(kv + i - j) + j * ld];
+          }
+    }
+  } // namespace
+
   bool BandedLU::factorize(const BandMatrix &K)
   {
     lu = K;
     const int n = K.size(), kl = K.bandwidth(), ldab = K.leading_dimension();
     pivots.resize(n);
+    if (K.bandwidth() <= widest_inline_band)
+      {
+        factorized = band_lu(lu.data(), n, kl, pivots.data());
+        return factorized;
+      }
     int info = 0;
-    dgbtrf_(&n, &n, &kl, &kl, lu.data(), &ldab, pivots.data(),
-            &info);
+    dgbtrf_(&n, &n, &kl, &kl, lu.data(), &ldab, pivots.data(), &info);
     factorized = info == 0;
     return factorized;
   }
@@ -25,6 +120,11 @@ namespace cdea
   {
     if (!factorized)
       return false;
+    if (lu.bandwidth() <= widest_inline_band)
+      {
+        band_lu_solve(lu.data(), lu.size(), lu.bandwidth(), pivots.data(), b.data());
+        return true;
+      }
     const int  n = lu.size(), kl = lu.bandwidth(), ldab = lu.leading_dimension(), nrhs = 1;
     const char trans = 'N';
     int        info  = 0;

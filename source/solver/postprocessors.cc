@@ -56,11 +56,10 @@ namespace cdea
 
   void Stability::evaluate(StepContext &context, StepSummary &summary)
   {
-    summary.min_eigenvalue = enabled ? context.model.min_tangent_eigenvalue() : nan;
-    summary.columns.set(summary_column::min_eigenvalue, summary.min_eigenvalue);
-    summary.columns.set(summary_column::stable, std::isnan(summary.min_eigenvalue) ?
-                                                  nan :
-                                                  double(summary.min_eigenvalue > 0.));
+    const StateStability s = enabled ? context.model.stability() : StateStability();
+    summary.min_eigenvalue = s.min_eigenvalue;
+    summary.columns.set(summary_column::min_eigenvalue, s.min_eigenvalue);
+    summary.columns.set(summary_column::stable, s.stable);
   }
 
   void MaxField::evaluate(StepContext &context, StepSummary &summary)

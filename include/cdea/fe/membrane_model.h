@@ -51,6 +51,9 @@ namespace cdea
     ContinuationProblem *continuation(const std::function<LoadState(double)> &path) override;
     /// With the tangent of the current state when it is at hand (after a solve).
     double min_tangent_eigenvalue() override;
+    /// Positive definite by the inertia of the tangent's factorization, and
+    /// the smallest eigenvalue by shift-invert Lanczos on its factors.
+    StateStability stability() override;
 
     /// Tension-field relaxation where the hoop stress would be negative
     /// (Wrinkling/Model = relaxed); off: the plain law everywhere.

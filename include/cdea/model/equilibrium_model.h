@@ -7,6 +7,7 @@
 #include <cdea/model/records.h>
 #include <cdea/numerics/solve_report.h>
 
+#include <cmath>
 #include <functional>
 #include <limits>
 #include <string>
@@ -48,6 +49,13 @@ namespace cdea
     {
       return load == o.load && unknowns == o.unknowns && internal == o.internal;
     }
+  };
+
+  /// Stability of a state with dead load and voltages held.
+  struct StateStability
+  {
+    double min_eigenvalue = std::numeric_limits<double>::quiet_NaN(); ///< of the tangent (N/m)
+    double stable = std::numeric_limits<double>::quiet_NaN(); ///< 1 or 0; NaN: no answer
   };
 
   /// Hoop stresses of a state, as the wrinkling check reads them.
@@ -128,6 +136,15 @@ namespace cdea
     virtual double min_tangent_eigenvalue()
     {
       return std::numeric_limits<double>::quiet_NaN();
+    }
+
+    /// The stability check of the current state: min_tangent_eigenvalue()
+    /// and whether the tangent is positive definite (FE: from the inertia of
+    /// its factorization, Sylvester's law; by default the eigenvalue's sign).
+    virtual StateStability stability()
+    {
+      const double lambda = min_tangent_eigenvalue();
+      return {lambda, std::isnan(lambda) ? lambda : double(lambda > 0.)};
     }
 
     /// Copy of the current state, and its restoration.

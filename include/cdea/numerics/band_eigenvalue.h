@@ -1,25 +1,119 @@
 #pragma once
-// The smallest eigenvalue of a band tangent: the stability check of a state
-// (negative: unstable with the loads held).
+// The stability check of a state: is the band tangent (its symmetric part,
+// the prescribed dofs removed, plus the water's rank-one coupling k g g^T if
+// any) positive definite, and what is its smallest eigenvalue (negative:
+// unstable with the loads held)?
+//
+// The decision comes from the inertia of a factorization (Sylvester's law):
+// the banded Cholesky of S - sigma I with sigma >= 0 succeeds only when S is
+// positive definite, and fails at sigma = 0 exactly when it is not; with
+// k > 0 an LDL^T's count of negative pivots and the determinant lemma decide
+// for S + k g g^T. The eigenvalue comes from shift-invert Lanczos on the
+// same banded Cholesky factors (sigma just below the last state's
+// eigenvalue, 0, or below the smallest eigenvalue of an indefinite S), the
+// rank-one term by Sherman-Morrison: O(n kd^2) to factor, O(n kd) per
+// Lanczos step, where LAPACK's dsbevx (numerics/eigenvalue_reference.h)
+// reduces the whole band at O(n^2 kd).
 
 #include <cdea/numerics/band_matrix.h>
+#include <cdea/numerics/symmetric_band.h>
+#include <cdea/numerics/tangent_solver.h>
 
 #include <Eigen/Core>
 
+#include <limits>
 #include <vector>
 
 namespace cdea
 {
-  /// Smallest eigenvalue of the symmetric part (A + A^T) / 2 of @p A without
-  /// the rows and columns listed in @p excluded (LAPACK dsbevx on the band);
-  /// NaN if LAPACK fails.
+  /// The stability of a tangent.
+  struct TangentStability
+  {
+    /// Whether the matrix was finite (otherwise the check has no answer).
+    bool known = false;
+    /// Positive definite, by the inertia of a factorization.
+    bool positive_definite = false;
+    /// The smallest eigenvalue (NaN when not asked for or not finite).
+    double smallest_eigenvalue = std::numeric_limits<double>::quiet_NaN();
+  };
+
+  /// Work storage of the Lanczos iterations, kept across calls.
+  struct LanczosStorage
+  {
+    Eigen::MatrixXd     basis;
+    Eigen::VectorXd     alpha, beta, w, h, y;
+    std::vector<double> pivots;
+  };
+
+  /// The check, with its factors, work storage and the last eigenpair kept
+  /// across calls: the eigenvector of one state starts the Lanczos iteration
+  /// of the next, and the eigenvalue sets its shift (a step along a path
+  /// changes both little).
+  class StabilityCheck
+  {
+  public:
+    /// The stability of S + k g g^T (k >= 0; g zero at S's excluded dofs,
+    /// ignored if k = 0), with its smallest eigenvalue if @p with_eigenvalue.
+    TangentStability compute(const SymmetricBand &S, double k, const Eigen::VectorXd &g,
+                             bool with_eigenvalue);
+    /// The symmetric part of @p A without the rows and columns @p excluded,
+    /// plus k g g^T: compute() on it.
+    TangentStability compute(const BandMatrix &A, const std::vector<unsigned int> &excluded,
+                             double k, const Eigen::VectorXd &g, bool with_eigenvalue);
+
+    /// Of the last compute(): Lanczos steps and factorizations (Cholesky,
+    /// LDL^T, LU) it took.
+    unsigned int lanczos_steps() const { return steps; }
+    unsigned int factorizations() const { return n_factorizations; }
+
+  private:
+    SymmetricBand   S_own;
+    BandCholesky    cholesky;
+    BandedLU        lu;
+    BandMatrix      full;
+    LanczosStorage  storage;
+    Eigen::VectorXd spread, start, B_inv_g;
+    /// The last eigenpair (empty, NaN before the first).
+    Eigen::VectorXd warm;
+    double          warm_value = std::numeric_limits<double>::quiet_NaN();
+    unsigned int    steps = 0, n_factorizations = 0;
+
+    /// Factor S - sigma I (Cholesky) for a sigma that is >= 0 if S is
+    /// positive definite: just below the last eigenvalue if that is
+    /// positive and the factorization succeeds there, else 0. Whether S is
+    /// positive definite.
+    bool factor_definite(const SymmetricBand &S, bool with_eigenvalue);
+    /// S - shift I as a general band matrix, LU-factored in lu; false if
+    /// singular.
+    bool factor_lu(const SymmetricBand &S, double shift);
+    /// Is S + k g g^T - sigma I positive definite when S - sigma I is not
+    /// (k > 0)? By the inertia of S - sigma I and the determinant lemma.
+    bool rank_one_definite(const SymmetricBand &S, double k, const Eigen::VectorXd &g,
+                           double sigma);
+    /// Are all eigenvalues of S + k g g^T above @p sigma?
+    bool definite_above(const SymmetricBand &S, double k, const Eigen::VectorXd &g,
+                        double sigma);
+    /// The smallest eigenvalue of S + k g g^T, certified by the inertia just
+    /// below it; S_definite: whether cholesky holds the factors of S - sigma I
+    /// with sigma below the smallest eigenvalue of S.
+    double smallest_eigenvalue(const SymmetricBand &S, double k, const Eigen::VectorXd &g,
+                               bool S_definite);
+    /// For an S that is not positive definite: the Cholesky factors of
+    /// S - sigma I with sigma below its smallest eigenvalue, and the start
+    /// vector turned towards that eigenvector; false if none was found.
+    bool shift_below_spectrum(const SymmetricBand &S);
+    /// The smallest eigenvalue of S + k g g^T from the factors in cholesky
+    /// (S - sigma I positive definite), starting from the start vector.
+    double smallest_above_shift(const SymmetricBand &S, double k, const Eigen::VectorXd &g);
+  };
+
+  /// The smallest eigenvalue of (A + A^T) / 2 without the rows and columns
+  /// listed in @p excluded (NaN if not finite); a fresh StabilityCheck.
   double smallest_symmetric_eigenvalue(const BandMatrix                &A,
                                        const std::vector<unsigned int> &excluded);
 
   /// The same for A + k g g^T (the water's free surface couples every dof,
-  /// as in ShermanMorrison): the band and the rank-one term made into one
-  /// dense symmetric matrix over the dofs not excluded (Eigen's
-  /// SelfAdjointEigenSolver).
+  /// as in ShermanMorrison), k >= 0.
   double smallest_symmetric_eigenvalue(const BandMatrix &A, double k, const Eigen::VectorXd &g,
                                        const std::vector<unsigned int> &excluded);
 } // namespace cdea
