@@ -4,6 +4,7 @@
 #include <cdea/design/sweep.h>
 #include <cdea/input/parameters.h>
 #include <cdea/input/solver_settings.h>
+#include <cdea/input/validation.h>
 
 #include <algorithm>
 #include <cmath>
@@ -44,6 +45,7 @@ namespace cdea
     if (p.time.enabled)
       throw InputError("Time/Enabled = true is not supported by cdea sweep: the maps are "
                        "quasi-static (use false)");
+    require_film_law(p, "sweep", "the maps are of the film's Gent law");
     SweepSettings s;
     const double  b_over_a = scene.frame_radius / scene.disk_radius;
 

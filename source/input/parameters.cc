@@ -313,7 +313,7 @@ namespace cdea
     parameters::Optimization::declare(prm);
     parameters::Calibration::declare(prm);
     parameters::Output::declare(prm);
-    parameters::ViscousMaterial::declare(prm);
+    parameters::MaterialLaw::declare(prm);
     parameters::Time::declare(prm);
   }
 
@@ -332,7 +332,7 @@ namespace cdea
     optimization.parse(prm);
     calibration.parse(prm);
     output.parse(prm);
-    viscous_material.parse(prm);
+    material_law.parse(prm);
     time.parse(prm);
   }
 

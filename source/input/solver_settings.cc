@@ -80,16 +80,8 @@ namespace cdea
 
   std::shared_ptr<const MembraneLaw> material_law(const Parameters &p, const Scene &scene)
   {
-    const auto &m = p.viscous_material;
-    LawSettings settings;
-    settings.model     = to_string(m.model);
-    settings.material  = scene.material;
-    settings.constants = {{"Network B shear modulus (kPa)", m.network_b_shear_modulus_kPa},
-                          {"Network B Jlim", m.network_b_jlim},
-                          {"Relaxation time (s)", m.relaxation_time_s}};
-    return make_membrane_law(settings);
+    return make_membrane_law(p.material_law.settings(scene.material));
   }
-
 
   TimeSettings time_settings(const Parameters &p, const Scene &scene)
   {

@@ -3,6 +3,7 @@
 #include <cdea/input/parameters.h>
 #include <cdea/input/validation.h>
 #include <cdea/input/voltage_table.h>
+#include <cdea/material/law_factory.h>
 
 #include <algorithm>
 #include <cmath>
@@ -195,34 +196,23 @@ namespace cdea
                            " characters, more than the file system allows (255)");
     }
 
-    /// Network B and its interplay with the rest of the file (viscoelastic law).
-    void check_viscous_material(const Parameters &p)
+    /// The law of Material/Model built from its entries (the law checks
+    /// their ranges) and its interplay with the rest of the file: a law with
+    /// internal variables evolves them in time and is no elastic law for the
+    /// tension-field relaxation.
+    void check_material_law(const Parameters &p)
     {
-      // Bounds the solver can meet: network B more than 1e4 times as stiff
-      // as network A leaves no equilibrium under the dead load (measured at
-      // 1e5), and relaxation times outside 1e-12..1e12 s are below the
-      // smallest time step or beyond any run's duration.
-      const auto  &m    = p.viscous_material;
-      const double mu_a = p.material.shear_modulus_kPa;
-      const double mu_b = m.network_b_shear_modulus_kPa;
-      if (!(mu_b >= 1e-6 * mu_a && mu_b <= 1e4 * mu_a))
-        throw InputError("Material/Network B shear modulus (kPa) must be between 1e-6 and 1e4 "
-                         "times Material/Shear modulus (kPa) (" + format_number(1e-6 * mu_a) +
-                         " to " + format_number(1e4 * mu_a) + " kPa), got " +
-                         format_number(mu_b));
-      if (!(m.network_b_jlim >= 1e-12 && m.network_b_jlim <= 1e12))
-        throw InputError("Material/Network B Jlim must be between 1e-12 and 1e12, got " +
-                         format_number(m.network_b_jlim));
-      if (!(m.relaxation_time_s >= 1e-12 && m.relaxation_time_s <= 1e12))
-        throw InputError("Material/Relaxation time (s) must be between 1e-12 and 1e12 s, got " +
-                         format_number(m.relaxation_time_s));
+      const auto law = make_membrane_law(p.material_law.settings(p.scene().material));
+      if (law->n_internal_variables() == 0)
+        return;
       if (!p.time.enabled)
-        throw InputError("Material/Model = viscoelastic needs Time/Enabled = true (a "
-                         "quasi-static run has no time for the dashpots; its long-time limit "
-                         "is Material/Model = elastic)");
+        throw InputError("Material/Model = " + p.material_law.model +
+                         " needs Time/Enabled = true (a quasi-static run has no time for the "
+                         "law's internal variables to evolve)");
       if (p.wrinkling.model == WrinklingModel::relaxed)
-        throw InputError("Wrinkling/Model = relaxed needs Material/Model = elastic (the "
-                         "tension-field relaxation wraps an elastic law)");
+        throw InputError("Wrinkling/Model = relaxed needs Material/Model = " +
+                         LawSettings().model +
+                         " (the tension-field relaxation wraps an elastic law)");
     }
 
     void check_time_steps(const Parameters &p)
@@ -302,8 +292,7 @@ namespace cdea
     // results held in memory below a gigabyte; more is most likely a mistyped
     // duration.
     constexpr double max_time_steps = 1e6;
-    if (p.viscous_material.model == MaterialModel::viscoelastic)
-      check_viscous_material(p);
+    check_material_law(p);
     if (!p.time.enabled)
       return;
     check_time_steps(p);
@@ -350,14 +339,24 @@ namespace cdea
       throw InputError("Time/Enabled = true is implemented for 'cdea run' only: set it to "
                        "false for 'cdea " +
                        command + "'");
+    if (p.material_law.model != LawSettings().model)
+      throw InputError("Material/Model = " + p.material_law.model +
+                       " is implemented in the FE model only: use 'cdea run', or set it to " +
+                       LawSettings().model + " for 'cdea " + command + "'");
+  }
+
+  void require_film_law(const Parameters &p, const std::string &command, const std::string &why)
+  {
+    const std::string film_law = LawSettings().model;
+    if (p.material_law.model != film_law)
+      throw InputError("Material/Model = " + p.material_law.model + " is not supported by cdea " +
+                       command + ": " + why + " (use " + film_law + ")");
   }
 
   void require_quasi_static_elastic(const Parameters &p, const std::string &command)
   {
-    if (p.viscous_material.model != MaterialModel::elastic)
-      throw InputError("Material/Model = " + to_string(p.viscous_material.model) +
-                       " is not supported by cdea " + command +
-                       ": its sensitivities are those of the elastic law (use elastic)");
+    require_film_law(p, command,
+                     "its sensitivities are those of the " + LawSettings().model + " law");
     if (p.time.enabled)
       throw InputError("Time/Enabled = true is not supported by cdea " + command +
                        ": it works on quasi-static equilibria (use false)");

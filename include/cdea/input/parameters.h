@@ -2,8 +2,10 @@
 // Run-time parameters, one struct per subsection of the .prm file (as in the
 // deal.II tutorial step-44). Each struct declares its entries, documented where
 // they are declared, and parses them; choices become enums. The subsections of
-// the model are here, those of time runs in parameters_time.h and those of the
-// design studies in parameters_design.h; Parameters holds them all.
+// the model are here, those of time runs in parameters_time.h, those of the
+// design studies in parameters_design.h and the entries of the registered
+// plugins (Material/Model and the laws' constants) in parameters_plugins.h;
+// Parameters holds them all.
 // Parameters::scene() turns them into a Scene and rejects bad input with an
 // InputError that names the parameter. Reading a file (with overrides) is
 // parameter_input.h, the range checks validation.h, the solver settings made
@@ -11,6 +13,7 @@
 
 #include <cdea/base/text.h>
 #include <cdea/input/parameters_design.h>
+#include <cdea/input/parameters_plugins.h>
 #include <cdea/input/parameters_time.h>
 #include <cdea/model/scene.h>
 #include <cdea/numerics/tangent_solver.h>
@@ -167,8 +170,8 @@ namespace cdea
     parameters::Optimization   optimization;
     parameters::Calibration    calibration;
     parameters::Output         output;
-    parameters::ViscousMaterial viscous_material; ///< parameters_time.h
-    parameters::Time            time;             ///< parameters_time.h
+    parameters::MaterialLaw    material_law; ///< parameters_plugins.h
+    parameters::Time           time;         ///< parameters_time.h
 
     static void declare(dealii::ParameterHandler &prm);
     void        parse(dealii::ParameterHandler &prm);

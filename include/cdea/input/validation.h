@@ -26,7 +26,8 @@ namespace cdea
   /// @p scene is p.scene().
   void validate_ranges(const Parameters &p, const Scene &scene);
 
-  /// Checks the Material/Model and Time entries (reads the table file);
+  /// Checks the Material/Model and Time entries (reads the table file): the
+  /// law of Material/Model is built from its entries, which the law checks;
   /// throws InputError naming the parameter.
   void validate_time(const Parameters &p);
 
@@ -34,10 +35,15 @@ namespace cdea
   /// parameter, e.g. "Reservoir/Width (mm) must be positive, got -3".
   void validate_reservoir(const Parameters &p);
 
-  /// Refuses the options only the FE model has (water load, relaxed law)
-  /// and time runs for the command @p command ("shoot", "compare"): throws
-  /// InputError.
+  /// Refuses the options only the FE model has (water load, relaxed law, a
+  /// Material/Model other than the film's Gent law) and time runs for the
+  /// command @p command ("shoot", "compare"): throws InputError.
   void require_shooting_options(const Parameters &p, const std::string &command);
+
+  /// The design studies build their models with the film's Gent law (the
+  /// default Material/Model): throws InputError "Material/Model = NAME is not
+  /// supported by cdea COMMAND: WHY (use elastic)" for any other law.
+  void require_film_law(const Parameters &p, const std::string &command, const std::string &why);
 
   /// The design commands (@p command: "optimize", "fit") work on the
   /// quasi-static elastic model, whose sensitivities they use: throws
