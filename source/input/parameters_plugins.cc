@@ -73,6 +73,17 @@ namespace cdea
         constants[e.name] = values.number(e.path());
     }
 
+    void LoadTerms::declare(ParameterHandler                                    &prm,
+                            const std::function<bool(const EntryDeclaration &)> &which)
+    {
+      declare_plugin_entries(prm, load_term_parameters(), which);
+    }
+
+    void LoadTerms::parse(ParameterHandler &prm)
+    {
+      values = read_plugin_entries(prm, load_term_parameters());
+    }
+
     LawSettings MaterialLaw::settings(const MaterialConstants &network_a) const
     {
       LawSettings s;

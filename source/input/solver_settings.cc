@@ -1,3 +1,4 @@
+#include <cdea/fe/water_term.h>
 #include <cdea/input/parameters.h>
 #include <cdea/input/solver_settings.h>
 #include <cdea/input/validation.h>
@@ -67,17 +68,6 @@ namespace cdea
     return p.reservoir.width_mm * 1e-3 * p.reservoir.depth_mm * 1e-3;
   }
 
-  WaterLoad water_load(const Parameters &p)
-  {
-    WaterLoad w;
-    w.enabled      = p.reservoir.water_load;
-    w.density      = p.reservoir.water_density;
-    w.gravity      = p.loading.gravity;
-    w.water_volume = p.reservoir.water_volume_ml * 1e-6;
-    w.tube_area    = tube_area(p);
-    return w;
-  }
-
   std::shared_ptr<const MembraneLaw> material_law(const Parameters &p, const Scene &scene)
   {
     return make_membrane_law(p.material_law.settings(scene.material));
@@ -94,11 +84,15 @@ namespace cdea
     s.inertia      = t.inertia;
     s.rest_time    = t.rest_time();
     s.fields_interval = t.fields_interval_s;
-    if (t.inertia && t.water_inertia && p.reservoir.water_load)
+    // The water column's inertia (doc/time.md) is the time stepper's, with
+    // the water term's settings.
+    WaterTerm water;
+    water.parse_parameters(p.load_terms.values);
+    if (t.inertia && t.water_inertia && water.active())
       {
-        s.water_density = p.reservoir.water_density;
-        s.water_volume  = p.reservoir.water_volume_ml * 1e-6;
-        s.tube_area     = tube_area(p);
+        s.water_density = water.water().density;
+        s.water_volume  = water.water().water_volume;
+        s.tube_area     = water.water().tube_area;
       }
     const std::vector<double> peak = scene.path.voltages(scene.path.n_segments());
     switch (t.waveform)

@@ -1,5 +1,6 @@
 #include <cdea/base/format.h>
 #include <cdea/base/text.h>
+#include <cdea/fe/load_term.h>
 #include <cdea/input/parameters.h>
 #include <cdea/input/validation.h>
 #include <cdea/input/voltage_table.h>
@@ -18,22 +19,6 @@ namespace cdea
       std::ostringstream o;
       o << x;
       return o.str();
-    }
-
-    /// [lo, hi] in the entry's unit; with zero_allowed, 0 as well.
-    void require_range(const double value, const double lo, const double hi,
-                       const std::string &name, const std::string &why,
-                       const bool zero_allowed = false)
-    {
-      if (zero_allowed && value == 0.)
-        return;
-      if (lo > 0. && value <= 0.)
-        throw InputError(name + (zero_allowed ? " must be zero or positive, got " :
-                                                " must be positive, got ") +
-                         format(value));
-      if (!(value >= lo && value <= hi))
-        throw InputError(name + " must be " + (zero_allowed ? "0 or " : "") + "between " +
-                         format(lo) + " and " + format(hi) + why + ", got " + format(value));
     }
 
     constexpr double lo_dimensional = 1e-12, hi_dimensional = 1e12;
@@ -105,8 +90,32 @@ namespace cdea
       dim(p.loading.gravity, "Loading/Gravity (m/s^2)");
       dim(p.reservoir.width_mm, "Reservoir/Width (mm)");
       dim(p.reservoir.depth_mm, "Reservoir/Depth (mm)");
-      dim(p.reservoir.water_volume_ml, "Reservoir/Water volume (ml)");
-      dim(p.reservoir.water_density, "Reservoir/Water density (kg/m^3)");
+      // Every load term checks its entries as it reads them, on or off.
+      for (const LoadTermPlugin &plugin : load_term_plugins())
+        parse_load_term(plugin, p.load_terms.values);
+    }
+
+    /// The first load term that @p p switches on and that lacks @p support
+    /// (LoadTermSupport), or none.
+    std::unique_ptr<LoadTerm> unsupported_load_term(const Parameters &p, const unsigned int support)
+    {
+      for (const LoadTermPlugin &plugin : load_term_plugins())
+        if (!(plugin.supports & support))
+          if (auto term = parse_load_term(plugin, p.load_terms.values); term->active())
+            return term;
+      return nullptr;
+    }
+
+    /// "ENTRY = VALUE is not supported with OPTION (use OFF)" for a term
+    /// switched on that lacks @p support, when @p option_on.
+    void refuse_with_option(const Parameters &p, const bool option_on, const unsigned int support,
+                            const std::string &option)
+    {
+      if (!option_on)
+        return;
+      if (const auto term = unsupported_load_term(p, support))
+        throw InputError(term->switched_on() + " is not supported with " + option + " (use " +
+                         term->off_value() + ")");
     }
 
     /// Every voltage of the file below the film's @p ceiling (V), and the
@@ -321,15 +330,30 @@ namespace cdea
     const auto &r = p.reservoir;
     require_positive(r.width_mm, "Reservoir/Width (mm)");
     require_positive(r.depth_mm, "Reservoir/Depth (mm)");
-    require_positive(r.water_volume_ml, "Reservoir/Water volume (ml)");
-    require_positive(r.water_density, "Reservoir/Water density (kg/m^3)");
+  }
+
+  void validate_load_terms(const Parameters &p)
+  {
+    refuse_with_option(p, p.time.enabled, supports_time_runs, "Time/Enabled = true");
+    refuse_with_option(p, p.solver.continuation == Continuation::arc_length, supports_arc_length,
+                       "Solver/Continuation = arc length");
+    refuse_with_option(p, p.solver.stability_check, supports_stability,
+                       "Solver/Stability check = true");
+  }
+
+  void require_load_term_support(const Parameters &p, const unsigned int support,
+                                 const std::string &command, const std::string &why)
+  {
+    if (const auto term = unsupported_load_term(p, support))
+      throw InputError(term->switched_on() + " is not supported by cdea " + command + ": " + why +
+                       " (use " + term->off_value() + ")");
   }
 
   void require_shooting_options(const Parameters &p, const std::string &command)
   {
-    if (p.reservoir.water_load)
-      throw InputError("Reservoir/Water load = true is implemented in the FE model only: use "
-                       "'cdea run', or set it to false for 'cdea " +
+    if (const auto term = unsupported_load_term(p, supports_shooting))
+      throw InputError(term->switched_on() + " is implemented in the FE model only: use "
+                       "'cdea run', or set it to " + term->off_value() + " for 'cdea " +
                        command + "'");
     if (p.wrinkling.model == WrinklingModel::relaxed)
       throw InputError("Wrinkling/Model = relaxed is implemented in the FE model only: use "

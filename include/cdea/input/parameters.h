@@ -4,7 +4,8 @@
 // they are declared, and parses them; choices become enums. The subsections of
 // the model are here, those of time runs in parameters_time.h, those of the
 // design studies in parameters_design.h and the entries of the registered
-// plugins (Material/Model and the laws' constants) in parameters_plugins.h;
+// plugins (Material/Model and the laws' constants, the load terms' entries)
+// in parameters_plugins.h;
 // Parameters holds them all.
 // Parameters::scene() turns them into a Scene and rejects bad input with an
 // InputError that names the parameter. Reading a file (with overrides) is
@@ -132,14 +133,12 @@ namespace cdea
       void         parse(dealii::ParameterHandler &prm);
     };
 
-    /// The pump module's water reservoir above the actuator.
+    /// The pump module's level tube, for the level drop of every run (the
+    /// water load's entries are the water term's, fe/water_term.h).
     struct Reservoir
     {
       double      width_mm;
       double      depth_mm;
-      double      water_volume_ml;
-      double      water_density;
-      bool        water_load;
       static void declare(dealii::ParameterHandler &prm);
       void        parse(dealii::ParameterHandler &prm);
     };
@@ -172,6 +171,7 @@ namespace cdea
     parameters::Output         output;
     parameters::MaterialLaw    material_law; ///< parameters_plugins.h
     parameters::Time           time;         ///< parameters_time.h
+    parameters::LoadTerms      load_terms;   ///< parameters_plugins.h
 
     static void declare(dealii::ParameterHandler &prm);
     void        parse(dealii::ParameterHandler &prm);

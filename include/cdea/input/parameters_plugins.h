@@ -1,11 +1,13 @@
 #pragma once
 // The entries that plugins declare (base/parameter_declarations.h), made
 // entries of deal.II's ParameterHandler: Material/Model with the registered
-// material laws (material/law_factory.h) and their constants. The core lists
-// no plugin: the selection of Material/Model, its documentation and the
-// entries come from the registry.
+// material laws (material/law_factory.h) and their constants, and the entries
+// of the registered load terms (fe/load_term.h). The core lists no plugin:
+// the selection of Material/Model, its documentation and the entries come
+// from the registries.
 
 #include <cdea/base/parameter_declarations.h>
+#include <cdea/fe/load_term.h>
 #include <cdea/material/law_factory.h>
 
 #include <functional>
@@ -43,6 +45,19 @@ namespace cdea
 
       /// The settings of the law, with @p network_a (the film's constants, SI).
       LawSettings settings(const MaterialConstants &network_a) const;
+    };
+
+    /// The entries the registered load terms declare, and those of the core
+    /// they read, by path: what MembraneModel::set_load_terms() and the
+    /// checks of validation.h build the terms from.
+    struct LoadTerms
+    {
+      ParameterValues values;
+      /// Declares the terms' entries that @p which accepts (Parameters::declare()
+      /// places those of subsection Reservoir with the Reservoir's own).
+      static void declare(dealii::ParameterHandler                            &prm,
+                          const std::function<bool(const EntryDeclaration &)> &which);
+      void        parse(dealii::ParameterHandler &prm);
     };
   } // namespace parameters
 } // namespace cdea
