@@ -23,6 +23,7 @@
 
 #include "check.h"
 
+#include <algorithm>
 #include <memory>
 #include <string>
 
@@ -100,8 +101,11 @@ namespace
 
 int main()
 {
-  check(membrane_law_names() ==
-          std::vector<std::string>{"elastic", "stiffened test", "viscoelastic"},
+  const std::vector<std::string> names = membrane_law_names();
+  const auto has = [&](const std::string &name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
+  };
+  check(has("elastic") && has("stiffened test") && has("viscoelastic"),
         "the test program's law is registered beside the library's");
 
   std::cout << "Every law from its defaults\n";
@@ -138,8 +142,12 @@ int main()
   const std::string json = default_parameter_file(ParameterFormat::json);
   check(json.find("'stiffened test': the test program's Gent law") != std::string::npos,
         "Material/Model's documentation describes it");
-  check(json.find("[Selection elastic|stiffened test|viscoelastic ]") != std::string::npos,
-        "Material/Model's selection lists it");
+  std::string selection;
+  for (const std::string &name : names)
+    selection += (selection.empty() ? "" : "|") + name;
+  check(json.find("[Selection " + selection + " ]") != std::string::npos &&
+          selection.find("stiffened test") != std::string::npos,
+        "Material/Model's selection lists it: " + selection);
 
   std::cout << "Its range check, the FE model and the refusals\n";
   const std::string range = input_error([] {
