@@ -13,6 +13,7 @@
 //    elastic film (no dissipation) also.
 
 #include <cdea/fe/membrane_model.h>
+#include <cdea/fe/water_term.h>
 #include <cdea/material/two_network_gent.h>
 #include <cdea/model/output_fields.h>
 #include <cdea/solver/time_stepper.h>
@@ -82,7 +83,11 @@ int main()
     MembraneModel model(pump, cdea_test::discretization(3, 2), NewtonSettings());
     WaterLoad     water;
     water.enabled = true;
-    model.set_water_load(water);
+    auto water_term = std::make_unique<WaterTerm>();
+    water_term->set_water(water);
+    std::vector<std::unique_ptr<LoadTerm>> terms;
+    terms.push_back(std::move(water_term));
+    model.set_load_terms(std::move(terms));
     model.set_material_law(
       std::make_shared<TwoNetworkGentLaw>(pump.material, ViscousNetwork{45e3, 270., 2.}));
     model.set_time_step(std::numeric_limits<double>::infinity(), TimeScheme::backward_euler);

@@ -8,6 +8,7 @@
 
 #include <cdea/base/mpi_session.h>
 #include <cdea/fe/membrane_model.h>
+#include <cdea/fe/water_term.h>
 
 #include "check.h"
 #include "fe_checks.h"
@@ -16,6 +17,8 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <memory>
+#include <vector>
 
 using namespace cdea;
 using namespace cdea_test;
@@ -29,15 +32,31 @@ namespace
     return w;
   }
 
+  /// The water term with @p w, as the model's load terms.
+  std::vector<std::unique_ptr<LoadTerm>> water_terms(const WaterLoad &w)
+  {
+    auto term = std::make_unique<WaterTerm>();
+    term->set_water(w);
+    std::vector<std::unique_ptr<LoadTerm>> terms;
+    terms.push_back(std::move(term));
+    return terms;
+  }
+
+  /// The model's water term.
+  const WaterTerm &water_of(const MembraneModel &model)
+  {
+    return dynamic_cast<const WaterTerm &>(*model.load_terms().at(0));
+  }
+
   /// Largest entry of the water's share of the tangent at the current state
   /// (the model with the water on minus the same model with it off).
   double water_tangent_scale(MembraneModel &model)
   {
-    const WaterLoad w = model.water_load();
+    const WaterLoad w = water_of(model).water();
     const auto      K = model.tangent_matrix();
-    model.set_water_load(WaterLoad());
+    model.set_load_terms(std::vector<std::unique_ptr<LoadTerm>>());
     const auto K0 = model.tangent_matrix();
-    model.set_water_load(w);
+    model.set_load_terms(water_terms(w));
     double d = 0.;
     for (unsigned int i = 0; i < K.size(); ++i)
       for (unsigned int j = 0; j < K.size(); ++j)
@@ -54,7 +73,7 @@ int main(int argc, char **argv)
   std::cout << "Derivatives with the water load\n";
   {
     MembraneModel model(pump, discretization(3, 4), NewtonSettings());
-    model.set_water_load(paper_water());
+    model.set_load_terms(water_terms(paper_water()));
     run_to_end(model, pump);
     double K_scale = 0.;
     for (const auto &row : model.tangent_matrix())
@@ -71,7 +90,7 @@ int main(int argc, char **argv)
   {
     // Halfway through the load stage: the water's gravity is ramped with it.
     MembraneModel model(pump, discretization(1, 6), NewtonSettings());
-    model.set_water_load(paper_water());
+    model.set_load_terms(water_terms(paper_water()));
     LoadState load;
     load.stage    = Stage::prestretch;
     load.stretch  = pump.prestretch;
@@ -97,10 +116,10 @@ int main(int argc, char **argv)
       MembraneModel model(pump, refined ? discretization(4, 16, 1, 8) : discretization(3, 8, 0, 8),
                           NewtonSettings());
       const WaterLoad w = paper_water();
-      model.set_water_load(w);
+      model.set_load_terms(water_terms(w));
       run_to_end(model, pump);
       const StepFields f    = model.fields();
-      const double     head = model.free_surface_height();
+      const double     head = water_of(model).free_surface_height(model.enclosed_volume());
       const double     rg   = w.density * w.gravity, H = pump.material.thickness;
       const double     a    = f.r.front();
       double           load = pump.dead_load() + rg * (head + f.z.front()) * M_PI * a * a;
@@ -122,7 +141,7 @@ int main(int argc, char **argv)
   std::cout << "Newton through the Sherman-Morrison solve\n";
   {
     MembraneModel model(pump, FeDiscretization(), NewtonSettings());
-    model.set_water_load(paper_water());
+    model.set_load_terms(water_terms(paper_water()));
     run_to_end(model, pump);
     const double v0   = model.enclosed_volume();
     LoadState    load;
@@ -144,7 +163,7 @@ int main(int argc, char **argv)
     MembraneModel model(pump, FeDiscretization(), NewtonSettings());
     WaterLoad     w = paper_water();
     w.water_volume  = 20e-6; // 20 ml: less than the cone holds under the weight alone
-    model.set_water_load(w);
+    model.set_load_terms(water_terms(w));
     RunResult result;
     run_to_end(model, pump, &result);
     check(!result.completed, "the run stops");
@@ -158,7 +177,7 @@ int main(int argc, char **argv)
     MembraneModel off(pump, FeDiscretization(), NewtonSettings());
     WaterLoad     w = paper_water();
     w.enabled       = false;
-    off.set_water_load(w);
+    off.set_load_terms(water_terms(w));
     const StepSummary a = run_to_end(dry, pump), b = run_to_end(off, pump);
     check_close(a.displacement, b.displacement, 0., "same displacement");
   }

@@ -3,6 +3,7 @@
 #include <cdea/analysis/run_record.h>
 #include <cdea/analysis/run_setup.h>
 #include <cdea/base/format.h>
+#include <cdea/fe/load_term.h>
 #include <cdea/model/output_fields.h>
 #include <cdea/input/solver_settings.h>
 #include <cdea/output/paraview_writer.h>
@@ -213,10 +214,8 @@ namespace cdea
           << column(s, summary_column::volume_change) << " mm^3, level drop "
           << column(s, summary_column::level_drop) << " mm (tube " << p.reservoir.width_mm << " mm x "
           << p.reservoir.depth_mm << " mm)\n";
-        if (p.reservoir.water_load)
-          o << "  water: free surface "
-            << (p.reservoir.water_volume_ml * 1e-6 - volume_mm3 * 1e-9) / tube_area(p) * 1e3
-            << " mm above the frame plane\n";
+        for (const auto &term : make_load_terms(p.load_terms.values))
+          o << term->describe_state(s);
         std::cout << o.str();
         std::cout << "  s2/mu at the inner edge of each ring:";
         for (const double x : s.s2_ring_inner)

@@ -102,7 +102,7 @@ namespace cdea
                   << format_kV(settings.waveform.peak()) << " over "
                   << format_number(settings.waveform.end_time()) << " s, steps up to "
                   << format_number(settings.max_step) << " s (" << to_string(settings.scheme)
-                  << "), material " << to_string(p.viscous_material.model)
+                  << "), material " << p.material_law.model
                   << (settings.inertia ? ", disk inertia" : ", no inertia")
                   << (settings.water_density > 0. ? " and water column" : "") << '\n'
                   << "writing " << path << '\n';
@@ -179,11 +179,10 @@ namespace cdea
     TimeRunSetup run;
     run.settings = time_settings(p, scene);
     run.model    = make_fe_model(p, scene);
-    run.model->set_material_law(material_law(p, scene));
     run.stepper =
       std::make_unique<TimeStepper>(scene, *run.model, stepping_settings(p), run.settings);
     add_run_postprocessors(*run.stepper, p, scene);
-    run.root_attributes = {{"material_model", to_string(p.viscous_material.model)},
+    run.root_attributes = {{"material_model", p.material_law.model},
                            {"waveform", to_string(p.time.waveform)},
                            {"time_scheme", to_string(p.time.scheme)}};
     return run;

@@ -125,6 +125,20 @@ namespace cdea
       throw InputError(name + " must be positive, got " + format(value));
   }
 
+  void require_range(const double value, const double lo, const double hi, const std::string &name,
+                     const std::string &why, const bool zero_allowed)
+  {
+    if (zero_allowed && value == 0.)
+      return;
+    if (lo > 0. && value <= 0.)
+      throw InputError(name + (zero_allowed ? " must be zero or positive, got " :
+                                              " must be positive, got ") +
+                       format(value));
+    if (!(value >= lo && value <= hi))
+      throw InputError(name + " must be " + (zero_allowed ? "0 or " : "") + "between " +
+                       format(lo) + " and " + format(hi) + why + ", got " + format(value));
+  }
+
   std::vector<double> expand_value_list(const std::string &text, const std::string &name)
   {
     // Items: numbers, or the marker "..." (represented by NaN in `items`).

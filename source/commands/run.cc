@@ -5,6 +5,7 @@
 #include <cdea/analysis/run_setup.h>
 #include <cdea/analysis/time_run.h>
 #include <cdea/commands/command.h>
+#include <cdea/fe/load_term.h>
 
 #include <iostream>
 
@@ -30,10 +31,9 @@ namespace cdea
         std::cout << "FE model: " << model->n_elements() << " elements of degree "
                   << p.discretization.polynomial_degree << ", " << model->n_dofs()
                   << " unknowns\n";
-        if (p.reservoir.water_load)
-          std::cout << "Water load: " << p.reservoir.water_volume_ml << " ml of density "
-                    << p.reservoir.water_density << " kg/m^3 above the membrane, level tube "
-                    << p.reservoir.width_mm << " x " << p.reservoir.depth_mm << " mm\n";
+        for (const LoadTerm *term : model->load_terms())
+          if (const std::string line = term->describe(); !line.empty())
+            std::cout << line << '\n';
         return run_quasi_static(*model, input, RunMethod::finite_elements);
       }
 

@@ -4,6 +4,7 @@
 #include <cdea/base/file_reading.h>
 #include <cdea/base/format.h>
 #include <cdea/design/fit.h>
+#include <cdea/fe/load_term.h>
 #include <cdea/input/parameters.h>
 #include <cdea/input/solver_settings.h>
 #include <cdea/input/validation.h>
@@ -217,9 +218,11 @@ namespace cdea
                        "mass, pre-stretch)");
     s.max_iterations = p.calibration.max_iterations;
     s.tolerance      = p.calibration.tolerance;
-    if (p.wrinkling.model != WrinklingModel::check || p.reservoir.water_load)
-      throw InputError("cdea fit supports Wrinkling/Model = check and Reservoir/Water load = "
-                       "false only (the displacement of the actuator under its dead load)");
+    if (p.wrinkling.model != WrinklingModel::check)
+      throw InputError("cdea fit supports Wrinkling/Model = check only (the displacement of "
+                       "the actuator under its dead load)");
+    require_load_term_support(p, supports_sensitivities, "fit",
+                              "it fits the displacement of the actuator under its dead load");
     return s;
   }
 

@@ -2,6 +2,7 @@
 // the layouts' free variables.
 
 #include <cdea/design/optimize.h>
+#include <cdea/fe/load_term.h>
 #include <cdea/input/parameters.h>
 #include <cdea/input/validation.h>
 #include <cdea/base/format.h>
@@ -115,9 +116,8 @@ namespace cdea
         throw InputError("Wrinkling/Model = " + to_string(p.wrinkling.model) +
                          " is not supported by cdea optimize: the constraint is on the hoop "
                          "stress of the plain membrane law (use check)");
-      if (p.reservoir.water_load)
-        throw InputError("Reservoir/Water load = true is not supported by cdea optimize: the "
-                         "layouts are designed for the actuator under its dead load (use false)");
+      require_load_term_support(p, supports_sensitivities, "optimize",
+                                "the layouts are designed for the actuator under its dead load");
     }
 
     /// Fixed voltages (kV): one per ring, or one 'free' for all; in V.

@@ -2,8 +2,10 @@
 // into SweepSettings; the rows of each MPI rank.
 
 #include <cdea/design/sweep.h>
+#include <cdea/fe/load_term.h>
 #include <cdea/input/parameters.h>
 #include <cdea/input/solver_settings.h>
+#include <cdea/input/validation.h>
 
 #include <algorithm>
 #include <cmath>
@@ -38,12 +40,12 @@ namespace cdea
       throw InputError("Wrinkling/Model = " + to_string(p.wrinkling.model) +
                        " is not supported by cdea sweep: the red and blue lines are defined "
                        "by the hoop stress of the plain membrane law (use check)");
-    if (p.reservoir.water_load)
-      throw InputError("Reservoir/Water load = true is not supported by cdea sweep: the maps "
-                       "are of the actuator under its dead load alone (use false)");
+    require_load_term_support(p, supports_design_map, "sweep",
+                              "the maps are of the actuator under its dead load alone");
     if (p.time.enabled)
       throw InputError("Time/Enabled = true is not supported by cdea sweep: the maps are "
                        "quasi-static (use false)");
+    require_film_law(p, "sweep", "the maps are of the film's Gent law");
     SweepSettings s;
     const double  b_over_a = scene.frame_radius / scene.disk_radius;
 

@@ -1,5 +1,6 @@
 #include <cdea/fe/cell_kernel.h>
 
+#include <iterator>
 #include <limits>
 
 namespace cdea
@@ -47,6 +48,16 @@ namespace cdea
           return {1. - fraction_x0[c], -fraction_h[c]};
       }
     return {};
+  }
+
+  void CellKernel::replace_terms(const std::size_t first, const std::size_t count,
+                                 std::vector<std::unique_ptr<CellTerm>> replacement)
+  {
+    if (first + count > terms.size())
+      throw std::logic_error("CellKernel::replace_terms: no such terms");
+    terms.erase(terms.begin() + first, terms.begin() + first + count);
+    terms.insert(terms.begin() + first, std::make_move_iterator(replacement.begin()),
+                 std::make_move_iterator(replacement.end()));
   }
 
   void CellKernel::set_load(const LoadState &load)

@@ -23,10 +23,11 @@ namespace cdea
     , solver(make_tangent_solver(LinearSolver::banded_lu))
   {
     // The terms add into each cell in this order (fixed: it decides the last
-    // bits of every sum).
+    // bits of every sum): the model's own, the load terms (set_load_terms(),
+    // in the registry's order), inertia.
     kernel.add_term(std::make_unique<DeadLoadTerm>());
     kernel.add_term(std::make_unique<EnclosedVolumeTerm>());
-    kernel.add_term(std::make_unique<WaterTerm>());
+    load_term_slot = kernel.n_terms();
     kernel.add_term(std::make_unique<InertiaTerm>());
   }
 
@@ -258,20 +259,30 @@ namespace cdea
       }
   }
 
-  void MembraneModel::set_water_load(const WaterLoad &water)
+  void MembraneModel::set_load_terms(const ParameterValues &values)
   {
-    impl->kernel.term<WaterTerm>().set_water(water);
-    impl->tangent_is_current = false;
+    set_load_terms(make_load_terms(values));
   }
 
-  const WaterLoad &MembraneModel::water_load() const
+  void MembraneModel::set_load_terms(std::vector<std::unique_ptr<LoadTerm>> terms)
   {
-    return impl->kernel.term<WaterTerm>().water();
+    Impl                                  &m         = *impl;
+    const std::size_t                      n_before  = m.load_terms.size();
+    std::vector<std::unique_ptr<CellTerm>> cell_terms;
+    m.load_terms.clear();
+    for (auto &term : terms)
+      {
+        term->set_load(m.load);
+        m.load_terms.push_back(term.get());
+        cell_terms.push_back(std::move(term));
+      }
+    m.kernel.replace_terms(m.load_term_slot, n_before, std::move(cell_terms));
+    m.tangent_is_current = false;
   }
 
-  double MembraneModel::free_surface_height() const
+  std::vector<const LoadTerm *> MembraneModel::load_terms() const
   {
-    return impl->kernel.term<WaterTerm>().free_surface_height(enclosed_volume());
+    return {impl->load_terms.begin(), impl->load_terms.end()};
   }
 
   double MembraneModel::enclosed_volume() const

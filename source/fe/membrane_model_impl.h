@@ -4,10 +4,10 @@
 
 #include <cdea/fe/cell_kernel.h>
 #include <cdea/fe/inertia_term.h>
+#include <cdea/fe/load_term.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/fe/membrane_term.h>
 #include <cdea/fe/trilinos_solver.h>
-#include <cdea/fe/water_term.h>
 #include <cdea/material/tension_field.h>
 #include <cdea/numerics/band_eigenvalue.h>
 #include <cdea/numerics/sherman_morrison.h>
@@ -29,8 +29,12 @@ namespace cdea
 
     /// The terms, each registered once; the others than the membrane are
     /// reached through kernel.term<Type>() where a model method needs one.
-    CellKernel    kernel;
-    MembraneTerm &membrane;
+    /// The load terms sit from load_term_slot on, between the model's own
+    /// terms and inertia.
+    CellKernel              kernel;
+    MembraneTerm           &membrane;
+    std::size_t             load_term_slot = 0;
+    std::vector<LoadTerm *> load_terms;
 
     LoadState       load;
     Eigen::VectorXd solution;

@@ -170,4 +170,46 @@ namespace cdea
         }
     return true;
   }
+
+  // V = -pi int r^2 z' dR: dV = -pi int (2 r z' dr + r^2 dz'), and
+  // d2V = -pi int (2 z' dr Dr + 2 r (dr Dz' + Dr dz')).
+  bool EnclosedVolumeTerm::add_cell(const CellInput &in, const unsigned int flags,
+                                    CellScratch &s, CellContribution &out)
+  {
+    if (!(flags & assemble_volume))
+      return true;
+    const Discretization &mesh = *in.mesh;
+    const ShapeTable     &rule = mesh.volume_rule;
+    const unsigned int    n    = mesh.dofs_per_cell();
+    const auto           &comp = mesh.component;
+    for (unsigned int q = 0; q < rule.size(); ++q)
+      {
+        const PointKinematics p     = kinematics(mesh, rule, q, *in.cell, in.x);
+        const double          w     = M_PI * in.cell->h * rule.weights[q];
+        const double         *value = &rule.value[q * n];
+        out.volume -= w * p.r * p.r * p.dz;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            s.gradient[i] = rule.derivative[q * n + i] / in.cell->h;
+            out.volume_gradient[i] -=
+              w * (comp[i] == 0 ? 2. * p.r * p.dz * value[i] : p.r * p.r * s.gradient[i]);
+          }
+        if (flags & assemble_tangent)
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < n; ++j)
+              {
+                double d = 0.;
+                if (comp[i] == 0 && comp[j] == 0)
+                  d = 2. * p.dz * value[i] * value[j];
+                else if (comp[i] != comp[j])
+                  {
+                    const unsigned int a = comp[i] == 0 ? i : j; // the r dof
+                    const unsigned int b = comp[i] == 0 ? j : i; // the z dof
+                    d                    = 2. * p.r * value[a] * s.gradient[b];
+                  }
+                out.volume_hessian[i * n + j] -= w * d;
+              }
+      }
+    return true;
+  }
 } // namespace cdea

@@ -1,49 +1,62 @@
+#include <cdea/base/text.h>
 #include <cdea/fe/water_term.h>
+#include <cdea/model/output_fields.h>
+#include <cdea/model/records.h>
 
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace cdea
 {
-  // V = -pi int r^2 z' dR: dV = -pi int (2 r z' dr + r^2 dz'), and
-  // d2V = -pi int (2 z' dr Dr + 2 r (dr Dz' + Dr dz')).
-  bool EnclosedVolumeTerm::add_cell(const CellInput &in, const unsigned int flags,
-                                    CellScratch &s, CellContribution &out)
+  void WaterTerm::declare_parameters(ParameterDeclarations &prm)
   {
-    if (!(flags & assemble_volume))
-      return true;
-    const Discretization &mesh = *in.mesh;
-    const ShapeTable     &rule = mesh.volume_rule;
-    const unsigned int    n    = mesh.dofs_per_cell();
-    const auto           &comp = mesh.component;
-    for (unsigned int q = 0; q < rule.size(); ++q)
-      {
-        const PointKinematics p     = kinematics(mesh, rule, q, *in.cell, in.x);
-        const double          w     = M_PI * in.cell->h * rule.weights[q];
-        const double         *value = &rule.value[q * n];
-        out.volume -= w * p.r * p.r * p.dz;
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            s.gradient[i] = rule.derivative[q * n + i] / in.cell->h;
-            out.volume_gradient[i] -=
-              w * (comp[i] == 0 ? 2. * p.r * p.dz * value[i] : p.r * p.r * s.gradient[i]);
-          }
-        if (flags & assemble_tangent)
-          for (unsigned int i = 0; i < n; ++i)
-            for (unsigned int j = 0; j < n; ++j)
-              {
-                double d = 0.;
-                if (comp[i] == 0 && comp[j] == 0)
-                  d = 2. * p.dz * value[i] * value[j];
-                else if (comp[i] != comp[j])
-                  {
-                    const unsigned int a = comp[i] == 0 ? i : j; // the r dof
-                    const unsigned int b = comp[i] == 0 ? j : i; // the z dof
-                    d                    = 2. * p.r * value[a] * s.gradient[b];
-                  }
-                out.volume_hessian[i * n + j] -= w * d;
-              }
-      }
-    return true;
+    prm.declare_number("Reservoir", "Water volume (ml)", "150",
+                       "Water in the pump module (for the hydrostatic load).");
+    prm.declare_number("Reservoir", "Water density (kg/m^3)", "1000", "Density of the water.");
+    prm.declare_flag("Reservoir", "Water load", "false",
+                     "Apply the water's hydrostatic pressure to the membrane and the disk "
+                     "(a follower load). Off: the water only measures the volume change.");
+    prm.read_number("Reservoir", "Width (mm)");
+    prm.read_number("Reservoir", "Depth (mm)");
+    prm.read_number("Loading", "Gravity (m/s^2)");
+  }
+
+  void WaterTerm::parse_parameters(const ParameterValues &values)
+  {
+    const std::string volume_entry = "Reservoir/Water volume (ml)";
+    const std::string density_entry = "Reservoir/Water density (kg/m^3)";
+    volume_ml = values.number(volume_entry);
+    require_range(volume_ml, 1e-12, 1e12, volume_entry, " (in its unit)");
+    const double density = values.number(density_entry);
+    require_range(density, 1e-12, 1e12, density_entry, " (in its unit)");
+    width_mm = values.number("Reservoir/Width (mm)");
+    depth_mm = values.number("Reservoir/Depth (mm)");
+    WaterLoad w;
+    w.enabled      = values.flag("Reservoir/Water load");
+    w.density      = density;
+    w.gravity      = values.number("Loading/Gravity (m/s^2)");
+    w.water_volume = volume_ml * 1e-6;
+    w.tube_area    = width_mm * 1e-3 * depth_mm * 1e-3;
+    set_water(w);
+  }
+
+  std::string WaterTerm::describe() const
+  {
+    std::ostringstream o;
+    o << "Water load: " << volume_ml << " ml of density " << settings.density
+      << " kg/m^3 above the membrane, level tube " << width_mm << " x " << depth_mm << " mm";
+    return o.str();
+  }
+
+  std::string WaterTerm::describe_state(const StepSummary &summary) const
+  {
+    const double       volume_mm3 = summary.columns.in_file_units(summary_column::volume);
+    std::ostringstream o;
+    o << std::setprecision(7) << "  water: free surface "
+      << (settings.water_volume - volume_mm3 * 1e-9) / settings.tube_area * 1e3
+      << " mm above the frame plane\n";
+    return o.str();
   }
 
   void WaterTerm::set_water(const WaterLoad &water)
@@ -145,4 +158,7 @@ namespace cdea
         system.rank_one_coupling = c / A;
       }
   }
+
+  CDEA_REGISTER_LOAD_TERM(WaterTerm, "water",
+                          supports_time_runs | supports_arc_length | supports_stability)
 } // namespace cdea

@@ -249,12 +249,6 @@ namespace cdea
                         "Inner width of the pump's level tube (rectangular cross-section).");
       prm.declare_entry("Depth (mm)", "20", Double(),
                         "Inner depth of the level tube; level drop = volume change / (width depth).");
-      prm.declare_entry("Water volume (ml)", "150", Double(),
-                        "Water in the pump module (for the hydrostatic load).");
-      prm.declare_entry("Water density (kg/m^3)", "1000", Double(), "Density of the water.");
-      prm.declare_entry("Water load", "false", Bool(),
-                        "Apply the water's hydrostatic pressure to the membrane and the disk "
-                        "(a follower load). Off: the water only measures the volume change.");
       prm.leave_subsection();
     }
 
@@ -263,9 +257,6 @@ namespace cdea
       prm.enter_subsection("Reservoir");
       width_mm        = prm.get_double("Width (mm)");
       depth_mm        = prm.get_double("Depth (mm)");
-      water_volume_ml = prm.get_double("Water volume (ml)");
-      water_density   = prm.get_double("Water density (kg/m^3)");
-      water_load      = prm.get_bool("Water load");
       prm.leave_subsection();
     }
 
@@ -300,6 +291,12 @@ namespace cdea
 
   void Parameters::declare(ParameterHandler &prm)
   {
+    // deal.II numbers the patterns in the order of declaration, and the JSON
+    // form of print-parameters shows those numbers: the order is that of
+    // earlier versions, the load terms' entries of subsection Reservoir
+    // with the Reservoir's own, the laws' after Output (where Material/Model
+    // always was), and the load terms' other entries last.
+    const auto in_reservoir = [](const EntryDeclaration &e) { return e.subsection == "Reservoir"; };
     parameters::Geometry::declare(prm);
     parameters::Material::declare(prm);
     parameters::Loading::declare(prm);
@@ -310,11 +307,13 @@ namespace cdea
     parameters::Shooting::declare(prm);
     parameters::Sweep::declare(prm);
     parameters::Reservoir::declare(prm);
+    parameters::LoadTerms::declare(prm, in_reservoir);
     parameters::Optimization::declare(prm);
     parameters::Calibration::declare(prm);
     parameters::Output::declare(prm);
-    parameters::ViscousMaterial::declare(prm);
+    parameters::MaterialLaw::declare(prm);
     parameters::Time::declare(prm);
+    parameters::LoadTerms::declare(prm, [&](const EntryDeclaration &e) { return !in_reservoir(e); });
   }
 
   void Parameters::parse(ParameterHandler &prm)
@@ -332,8 +331,9 @@ namespace cdea
     optimization.parse(prm);
     calibration.parse(prm);
     output.parse(prm);
-    viscous_material.parse(prm);
+    material_law.parse(prm);
     time.parse(prm);
+    load_terms.parse(prm);
   }
 
   std::string to_string(const Continuation choice)

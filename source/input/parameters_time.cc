@@ -17,33 +17,6 @@ namespace cdea
 
   namespace parameters
   {
-    void ViscousMaterial::declare(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Material");
-      prm.declare_entry("Model", "elastic", Selection("elastic|viscoelastic"),
-                        "'elastic': the Gent law of Shear modulus and Jlim. 'viscoelastic': that "
-                        "law is network A (the long-time response), in parallel with network B, a "
-                        "Gent spring in series with a dashpot (two-network model of Hong 2011 and "
-                        "Zhao, Koh, Suo 2011); needs Time/Enabled = true.");
-      prm.declare_entry("Network B shear modulus (kPa)", "45", Double(),
-                        "Shear modulus mu_B of network B's spring (viscoelastic model).");
-      prm.declare_entry("Network B Jlim", "270", Double(), "Gent limit Jlim_B of network B's spring.");
-      prm.declare_entry("Relaxation time (s)", "2", Double(),
-                        "tau = eta / mu_B of network B (eta: the dashpot's viscosity).");
-      prm.leave_subsection();
-    }
-
-    void ViscousMaterial::parse(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Material");
-      model = prm.get("Model") == "viscoelastic" ? MaterialModel::viscoelastic :
-                                                   MaterialModel::elastic;
-      network_b_shear_modulus_kPa = prm.get_double("Network B shear modulus (kPa)");
-      network_b_jlim              = prm.get_double("Network B Jlim");
-      relaxation_time_s           = prm.get_double("Relaxation time (s)");
-      prm.leave_subsection();
-    }
-
     void Time::declare(ParameterHandler &prm)
     {
       prm.enter_subsection("Time");
@@ -141,11 +114,6 @@ namespace cdea
       return value;
     }
   } // namespace parameters
-
-  std::string to_string(const MaterialModel choice)
-  {
-    return choice == MaterialModel::viscoelastic ? "viscoelastic" : "elastic";
-  }
 
   std::string to_string(const WaveformKind choice)
   {

@@ -1,3 +1,4 @@
+#include <cdea/fe/water_term.h>
 #include <cdea/input/parameters.h>
 #include <cdea/input/solver_settings.h>
 #include <cdea/input/validation.h>
@@ -67,29 +68,10 @@ namespace cdea
     return p.reservoir.width_mm * 1e-3 * p.reservoir.depth_mm * 1e-3;
   }
 
-  WaterLoad water_load(const Parameters &p)
-  {
-    WaterLoad w;
-    w.enabled      = p.reservoir.water_load;
-    w.density      = p.reservoir.water_density;
-    w.gravity      = p.loading.gravity;
-    w.water_volume = p.reservoir.water_volume_ml * 1e-6;
-    w.tube_area    = tube_area(p);
-    return w;
-  }
-
   std::shared_ptr<const MembraneLaw> material_law(const Parameters &p, const Scene &scene)
   {
-    const auto &m = p.viscous_material;
-    LawSettings settings;
-    settings.model     = to_string(m.model);
-    settings.material  = scene.material;
-    settings.constants = {{"Network B shear modulus (kPa)", m.network_b_shear_modulus_kPa},
-                          {"Network B Jlim", m.network_b_jlim},
-                          {"Relaxation time (s)", m.relaxation_time_s}};
-    return make_membrane_law(settings);
+    return make_membrane_law(p.material_law.settings(scene.material));
   }
-
 
   TimeSettings time_settings(const Parameters &p, const Scene &scene)
   {
@@ -102,11 +84,15 @@ namespace cdea
     s.inertia      = t.inertia;
     s.rest_time    = t.rest_time();
     s.fields_interval = t.fields_interval_s;
-    if (t.inertia && t.water_inertia && p.reservoir.water_load)
+    // The water column's inertia (doc/time.md) is the time stepper's, with
+    // the water term's settings.
+    WaterTerm water;
+    water.parse_parameters(p.load_terms.values);
+    if (t.inertia && t.water_inertia && water.active())
       {
-        s.water_density = p.reservoir.water_density;
-        s.water_volume  = p.reservoir.water_volume_ml * 1e-6;
-        s.tube_area     = tube_area(p);
+        s.water_density = water.water().density;
+        s.water_volume  = water.water().water_volume;
+        s.tube_area     = water.water().tube_area;
       }
     const std::vector<double> peak = scene.path.voltages(scene.path.n_segments());
     switch (t.waveform)

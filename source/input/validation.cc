@@ -1,8 +1,10 @@
 #include <cdea/base/format.h>
 #include <cdea/base/text.h>
+#include <cdea/fe/load_term.h>
 #include <cdea/input/parameters.h>
 #include <cdea/input/validation.h>
 #include <cdea/input/voltage_table.h>
+#include <cdea/material/law_factory.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,22 +19,6 @@ namespace cdea
       std::ostringstream o;
       o << x;
       return o.str();
-    }
-
-    /// [lo, hi] in the entry's unit; with zero_allowed, 0 as well.
-    void require_range(const double value, const double lo, const double hi,
-                       const std::string &name, const std::string &why,
-                       const bool zero_allowed = false)
-    {
-      if (zero_allowed && value == 0.)
-        return;
-      if (lo > 0. && value <= 0.)
-        throw InputError(name + (zero_allowed ? " must be zero or positive, got " :
-                                                " must be positive, got ") +
-                         format(value));
-      if (!(value >= lo && value <= hi))
-        throw InputError(name + " must be " + (zero_allowed ? "0 or " : "") + "between " +
-                         format(lo) + " and " + format(hi) + why + ", got " + format(value));
     }
 
     constexpr double lo_dimensional = 1e-12, hi_dimensional = 1e12;
@@ -104,8 +90,32 @@ namespace cdea
       dim(p.loading.gravity, "Loading/Gravity (m/s^2)");
       dim(p.reservoir.width_mm, "Reservoir/Width (mm)");
       dim(p.reservoir.depth_mm, "Reservoir/Depth (mm)");
-      dim(p.reservoir.water_volume_ml, "Reservoir/Water volume (ml)");
-      dim(p.reservoir.water_density, "Reservoir/Water density (kg/m^3)");
+      // Every load term checks its entries as it reads them, on or off.
+      for (const LoadTermPlugin &plugin : load_term_plugins())
+        parse_load_term(plugin, p.load_terms.values);
+    }
+
+    /// The first load term that @p p switches on and that lacks @p support
+    /// (LoadTermSupport), or none.
+    std::unique_ptr<LoadTerm> unsupported_load_term(const Parameters &p, const unsigned int support)
+    {
+      for (const LoadTermPlugin &plugin : load_term_plugins())
+        if (!(plugin.supports & support))
+          if (auto term = parse_load_term(plugin, p.load_terms.values); term->active())
+            return term;
+      return nullptr;
+    }
+
+    /// "ENTRY = VALUE is not supported with OPTION (use OFF)" for a term
+    /// switched on that lacks @p support, when @p option_on.
+    void refuse_with_option(const Parameters &p, const bool option_on, const unsigned int support,
+                            const std::string &option)
+    {
+      if (!option_on)
+        return;
+      if (const auto term = unsupported_load_term(p, support))
+        throw InputError(term->switched_on() + " is not supported with " + option + " (use " +
+                         term->off_value() + ")");
     }
 
     /// Every voltage of the file below the film's @p ceiling (V), and the
@@ -195,34 +205,23 @@ namespace cdea
                            " characters, more than the file system allows (255)");
     }
 
-    /// Network B and its interplay with the rest of the file (viscoelastic law).
-    void check_viscous_material(const Parameters &p)
+    /// The law of Material/Model built from its entries (the law checks
+    /// their ranges) and its interplay with the rest of the file: a law with
+    /// internal variables evolves them in time and is no elastic law for the
+    /// tension-field relaxation.
+    void check_material_law(const Parameters &p)
     {
-      // Bounds the solver can meet: network B more than 1e4 times as stiff
-      // as network A leaves no equilibrium under the dead load (measured at
-      // 1e5), and relaxation times outside 1e-12..1e12 s are below the
-      // smallest time step or beyond any run's duration.
-      const auto  &m    = p.viscous_material;
-      const double mu_a = p.material.shear_modulus_kPa;
-      const double mu_b = m.network_b_shear_modulus_kPa;
-      if (!(mu_b >= 1e-6 * mu_a && mu_b <= 1e4 * mu_a))
-        throw InputError("Material/Network B shear modulus (kPa) must be between 1e-6 and 1e4 "
-                         "times Material/Shear modulus (kPa) (" + format_number(1e-6 * mu_a) +
-                         " to " + format_number(1e4 * mu_a) + " kPa), got " +
-                         format_number(mu_b));
-      if (!(m.network_b_jlim >= 1e-12 && m.network_b_jlim <= 1e12))
-        throw InputError("Material/Network B Jlim must be between 1e-12 and 1e12, got " +
-                         format_number(m.network_b_jlim));
-      if (!(m.relaxation_time_s >= 1e-12 && m.relaxation_time_s <= 1e12))
-        throw InputError("Material/Relaxation time (s) must be between 1e-12 and 1e12 s, got " +
-                         format_number(m.relaxation_time_s));
+      const auto law = make_membrane_law(p.material_law.settings(p.scene().material));
+      if (law->n_internal_variables() == 0)
+        return;
       if (!p.time.enabled)
-        throw InputError("Material/Model = viscoelastic needs Time/Enabled = true (a "
-                         "quasi-static run has no time for the dashpots; its long-time limit "
-                         "is Material/Model = elastic)");
+        throw InputError("Material/Model = " + p.material_law.model +
+                         " needs Time/Enabled = true (a quasi-static run has no time for the "
+                         "law's internal variables to evolve)");
       if (p.wrinkling.model == WrinklingModel::relaxed)
-        throw InputError("Wrinkling/Model = relaxed needs Material/Model = elastic (the "
-                         "tension-field relaxation wraps an elastic law)");
+        throw InputError("Wrinkling/Model = relaxed needs Material/Model = " +
+                         LawSettings().model +
+                         " (the tension-field relaxation wraps an elastic law)");
     }
 
     void check_time_steps(const Parameters &p)
@@ -302,8 +301,7 @@ namespace cdea
     // results held in memory below a gigabyte; more is most likely a mistyped
     // duration.
     constexpr double max_time_steps = 1e6;
-    if (p.viscous_material.model == MaterialModel::viscoelastic)
-      check_viscous_material(p);
+    check_material_law(p);
     if (!p.time.enabled)
       return;
     check_time_steps(p);
@@ -332,15 +330,30 @@ namespace cdea
     const auto &r = p.reservoir;
     require_positive(r.width_mm, "Reservoir/Width (mm)");
     require_positive(r.depth_mm, "Reservoir/Depth (mm)");
-    require_positive(r.water_volume_ml, "Reservoir/Water volume (ml)");
-    require_positive(r.water_density, "Reservoir/Water density (kg/m^3)");
+  }
+
+  void validate_load_terms(const Parameters &p)
+  {
+    refuse_with_option(p, p.time.enabled, supports_time_runs, "Time/Enabled = true");
+    refuse_with_option(p, p.solver.continuation == Continuation::arc_length, supports_arc_length,
+                       "Solver/Continuation = arc length");
+    refuse_with_option(p, p.solver.stability_check, supports_stability,
+                       "Solver/Stability check = true");
+  }
+
+  void require_load_term_support(const Parameters &p, const unsigned int support,
+                                 const std::string &command, const std::string &why)
+  {
+    if (const auto term = unsupported_load_term(p, support))
+      throw InputError(term->switched_on() + " is not supported by cdea " + command + ": " + why +
+                       " (use " + term->off_value() + ")");
   }
 
   void require_shooting_options(const Parameters &p, const std::string &command)
   {
-    if (p.reservoir.water_load)
-      throw InputError("Reservoir/Water load = true is implemented in the FE model only: use "
-                       "'cdea run', or set it to false for 'cdea " +
+    if (const auto term = unsupported_load_term(p, supports_shooting))
+      throw InputError(term->switched_on() + " is implemented in the FE model only: use "
+                       "'cdea run', or set it to " + term->off_value() + " for 'cdea " +
                        command + "'");
     if (p.wrinkling.model == WrinklingModel::relaxed)
       throw InputError("Wrinkling/Model = relaxed is implemented in the FE model only: use "
@@ -350,14 +363,24 @@ namespace cdea
       throw InputError("Time/Enabled = true is implemented for 'cdea run' only: set it to "
                        "false for 'cdea " +
                        command + "'");
+    if (p.material_law.model != LawSettings().model)
+      throw InputError("Material/Model = " + p.material_law.model +
+                       " is implemented in the FE model only: use 'cdea run', or set it to " +
+                       LawSettings().model + " for 'cdea " + command + "'");
+  }
+
+  void require_film_law(const Parameters &p, const std::string &command, const std::string &why)
+  {
+    const std::string film_law = LawSettings().model;
+    if (p.material_law.model != film_law)
+      throw InputError("Material/Model = " + p.material_law.model + " is not supported by cdea " +
+                       command + ": " + why + " (use " + film_law + ")");
   }
 
   void require_quasi_static_elastic(const Parameters &p, const std::string &command)
   {
-    if (p.viscous_material.model != MaterialModel::elastic)
-      throw InputError("Material/Model = " + to_string(p.viscous_material.model) +
-                       " is not supported by cdea " + command +
-                       ": its sensitivities are those of the elastic law (use elastic)");
+    require_film_law(p, command,
+                     "its sensitivities are those of the " + LawSettings().model + " law");
     if (p.time.enabled)
       throw InputError("Time/Enabled = true is not supported by cdea " + command +
                        ": it works on quasi-static equilibria (use false)");

@@ -80,15 +80,11 @@ namespace cdea
     const double d = b * b - 4. * q;
     return d > 0. ? std::sqrt(0.5 * (b + std::sqrt(d))) : 0.;
   }
-} // namespace cdea
 
-namespace
-{
-  /// Material/Model = elastic: the Gent law of Shear modulus and Jlim.
-  std::shared_ptr<const cdea::MembraneLaw> create_gent_law(const cdea::LawSettings &settings)
+  std::shared_ptr<const MembraneLaw> GentDielectricLaw::parse_parameters(const LawSettings &settings)
   {
-    return std::make_shared<cdea::GentDielectricLaw>(settings.material);
+    return std::make_shared<GentDielectricLaw>(settings.material);
   }
-} // namespace
 
-CDEA_REGISTER_MEMBRANE_LAW(GentDielectricLaw, "elastic", create_gent_law)
+  CDEA_REGISTER_MEMBRANE_LAW(GentDielectricLaw, "elastic", "the Gent law of Shear modulus and Jlim.")
+} // namespace cdea

@@ -6,11 +6,12 @@ namespace cdea
 {
   namespace
   {
-    /// The registry, made on first use (registrations run during static
-    /// initialisation, in an order the language leaves open).
-    std::map<std::string, LawCreator> &registry()
+    /// The registry by name, made on first use (registrations run during
+    /// static initialisation, in an order the language leaves open; the map
+    /// orders them by name).
+    std::map<std::string, LawPlugin> &registry()
     {
-      static std::map<std::string, LawCreator> laws;
+      static std::map<std::string, LawPlugin> laws;
       return laws;
     }
   } // namespace
@@ -23,10 +24,10 @@ namespace cdea
     return it->second;
   }
 
-  bool register_membrane_law(const std::string &name, const LawCreator create)
+  bool register_membrane_law(const LawPlugin &plugin)
   {
-    if (!registry().emplace(name, create).second)
-      throw std::logic_error("two material laws are registered as '" + name + "'");
+    if (!registry().emplace(plugin.name, plugin).second)
+      throw std::logic_error("two material laws are registered as '" + plugin.name + "'");
     return true;
   }
 
@@ -38,11 +39,31 @@ namespace cdea
     return names;
   }
 
+  std::string membrane_law_documentation()
+  {
+    std::string text;
+    for (const auto &entry : registry())
+      text += (text.empty() ? "'" : " '") + entry.first + "': " + entry.second.description;
+    return text;
+  }
+
+  ParameterDeclarations membrane_law_parameters()
+  {
+    ParameterDeclarations all;
+    for (const auto &entry : registry())
+      {
+        ParameterDeclarations own;
+        entry.second.declare_parameters(own);
+        all.append(own);
+      }
+    return all;
+  }
+
   std::shared_ptr<const MembraneLaw> make_membrane_law(const LawSettings &settings)
   {
     const auto it = registry().find(settings.model);
     if (it == registry().end())
       throw std::invalid_argument("no material law is registered as '" + settings.model + "'");
-    return it->second(settings);
+    return it->second.parse_parameters(settings);
   }
 } // namespace cdea

@@ -1,3 +1,5 @@
+#include <cdea/base/format.h>
+#include <cdea/base/text.h>
 #include <cdea/material/gent_law.h>
 #include <cdea/material/law_factory.h>
 #include <cdea/material/two_network_gent.h>
@@ -231,19 +233,46 @@ namespace cdea
                      std::log(step.current[1] / step.old[1]));
     return de.dot(mobility_inverse(b.shear_modulus * b.relaxation_time) * de) / step.dt;
   }
-} // namespace cdea
 
-namespace
-{
-  /// Material/Model = viscoelastic: network A is the film's Gent law;
-  /// network B's constants are entries of subsection Material.
-  std::shared_ptr<const cdea::MembraneLaw> create_two_network_law(const cdea::LawSettings &settings)
+  void TwoNetworkGentLaw::declare_parameters(ParameterDeclarations &prm)
   {
-    const cdea::ViscousNetwork b{settings.constant("Network B shear modulus (kPa)") * 1e3,
-                                 settings.constant("Network B Jlim"),
-                                 settings.constant("Relaxation time (s)")};
-    return std::make_shared<cdea::TwoNetworkGentLaw>(settings.material, b);
+    prm.declare_number("Material", "Network B shear modulus (kPa)", "45",
+                       "Shear modulus mu_B of network B's spring (viscoelastic model).");
+    prm.declare_number("Material", "Network B Jlim", "270",
+                       "Gent limit Jlim_B of network B's spring.");
+    prm.declare_number("Material", "Relaxation time (s)", "2",
+                       "tau = eta / mu_B of network B (eta: the dashpot's viscosity).");
   }
-} // namespace
 
-CDEA_REGISTER_MEMBRANE_LAW(TwoNetworkGentLaw, "viscoelastic", create_two_network_law)
+  std::shared_ptr<const MembraneLaw> TwoNetworkGentLaw::parse_parameters(const LawSettings &settings)
+  {
+    // Bounds the solver can meet: network B more than 1e4 times as stiff
+    // as network A leaves no equilibrium under the dead load (measured at
+    // 1e5), and relaxation times outside 1e-12..1e12 s are below the
+    // smallest time step or beyond any run's duration.
+    const double mu_a = settings.material.shear_modulus / 1e3; // kPa, as the file has it
+    const double mu_b = settings.constant("Network B shear modulus (kPa)");
+    const double jlim = settings.constant("Network B Jlim");
+    const double tau  = settings.constant("Relaxation time (s)");
+    if (!(mu_b >= 1e-6 * mu_a && mu_b <= 1e4 * mu_a))
+      throw InputError("Material/Network B shear modulus (kPa) must be between 1e-6 and 1e4 "
+                       "times Material/Shear modulus (kPa) (" + format_number(1e-6 * mu_a) +
+                       " to " + format_number(1e4 * mu_a) + " kPa), got " + format_number(mu_b));
+    if (!(jlim >= 1e-12 && jlim <= 1e12))
+      throw InputError("Material/Network B Jlim must be between 1e-12 and 1e12, got " +
+                       format_number(jlim));
+    if (!(tau >= 1e-12 && tau <= 1e12))
+      throw InputError("Material/Relaxation time (s) must be between 1e-12 and 1e12 s, got " +
+                       format_number(tau));
+    return std::make_shared<TwoNetworkGentLaw>(settings.material,
+                                               ViscousNetwork{mu_b * 1e3, jlim, tau});
+  }
+
+  // The elastic law's description comes just before this one in
+  // Material/Model's documentation (name order): "that law" is it.
+  CDEA_REGISTER_MEMBRANE_LAW(TwoNetworkGentLaw, "viscoelastic",
+                             "that law is network A (the long-time response), in parallel with "
+                             "network B, a Gent spring in series with a dashpot (two-network "
+                             "model of Hong 2011 and Zhao, Koh, Suo 2011); needs Time/Enabled = "
+                             "true.")
+} // namespace cdea

@@ -15,7 +15,8 @@
 namespace cdea
 {
   /// An FE model of @p scene set up as the parameters say (discretization,
-  /// Newton, linear solver, relaxed law, water load).
+  /// Newton, linear solver, the law of Material/Model, relaxed law, the load
+  /// terms the parameters switch on).
   std::unique_ptr<MembraneModel> make_fe_model(const Parameters &p, const Scene &scene);
 
   /// The model of a quasi-static run of @p method (finite elements or

@@ -30,6 +30,13 @@ namespace cdea
   /// An InputError "NAME must be positive, got VALUE" unless 0 < value < infinity.
   void require_positive(double value, const std::string &name);
 
+  /// An InputError naming @p name unless @p value lies in [lo, hi] (with
+  /// @p zero_allowed, or is 0): "must be positive" (or "zero or positive")
+  /// for a value <= 0 when lo > 0, else "must be [0 or ]between LO and HI" +
+  /// @p why + ", got VALUE".
+  void require_range(double value, double lo, double hi, const std::string &name,
+                     const std::string &why, bool zero_allowed = false);
+
   /// @p text cut at every @p separator, the pieces as they are (blanks kept).
   /// As std::getline() reads them: an empty @p text has no piece, and a
   /// separator at the very end closes the last piece without opening another

@@ -9,9 +9,10 @@
 // the energy and finite-difference checks, the stability eigenvalue.
 //
 // A term is a CellTerm registered once with the kernel (membrane_term.h: the
-// membrane energy and the dead load; water_term.h: the enclosed volume and the
-// water load). A term with a global coupling (the water's head depends on the
-// enclosed volume) finishes its part after the loop in finish().
+// membrane energy, the dead load and the enclosed volume; the load terms of
+// load_term.h, such as the water load of water_term.h). A term with a global
+// coupling (the water's head depends on the enclosed volume) finishes its part
+// after the loop in finish().
 
 #include <cdea/fe/discretization.h>
 #include <cdea/numerics/band_matrix.h>
@@ -159,6 +160,14 @@ namespace cdea
       terms.push_back(std::move(term));
       return t;
     }
+
+    /// The number of registered terms.
+    std::size_t n_terms() const { return terms.size(); }
+
+    /// Replace the @p count terms from position @p first on by @p replacement,
+    /// in its order (the load terms between the model's own).
+    void replace_terms(std::size_t first, std::size_t count,
+                       std::vector<std::unique_ptr<CellTerm>> replacement);
 
     /// The one loop over cells: every term on every cell at @p x, assembled
     /// into @p system as @p flags ask (plus what the terms require). Returns

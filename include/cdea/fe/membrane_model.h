@@ -5,11 +5,12 @@
 // two FE_Q of degree p, element boundaries on every ring edge, each element at
 // the voltage of its ring). The total potential
 //
-//   Pi[r, z] = 2 pi H int_A^B W(l1, l2; Phi) R dR  -  F z(A)  [+ E_w, see WaterLoad],
+//   Pi[r, z] = 2 pi H int_A^B W(l1, l2; Phi) R dR  -  F z(A)  [+ the load terms],
 //
 // is stationary at equilibrium; the cell kernel (cell_kernel.h) evaluates it,
-// its residual and its exact tangent from the registered terms (membrane
-// energy and dead load, enclosed volume and water load). Boundary conditions:
+// its residual and its exact tangent from its terms (membrane energy, dead
+// load and enclosed volume, then the load terms the parameters switch on,
+// such as the water load, see load_term.h, then inertia). Boundary conditions:
 // r(A) = s A and r(B) = s B with s the current pre-stretch (s = lam_pre after
 // stage 0), z(B) = 0; z(A) is free and carries the dead load.
 //
@@ -18,8 +19,8 @@
 // eigenvalue, the arc-length tangent and sensitivities without assembling
 // again.
 
+#include <cdea/fe/cell_kernel.h>
 #include <cdea/fe/discretization.h>
-#include <cdea/fe/water_term.h>
 #include <cdea/model/scene.h>
 #include <cdea/model/equilibrium_model.h>
 #include <cdea/numerics/newton.h>
@@ -27,10 +28,12 @@
 #include <cdea/model/transient_model.h>
 
 #include <memory>
+#include <vector>
 
 namespace cdea
 {
-  struct AssembledSystem;
+  class LoadTerm;
+  class ParameterValues;
 
   class MembraneModel : public TransientModel
   {
@@ -65,11 +68,14 @@ namespace cdea
     /// pi int_A^B r^2 (-z') dR by Gauss quadrature exact for the FE solution.
     double enclosed_volume() const override;
 
-    /// Switch the water load on or off (off by default); it applies from the next solve.
-    void             set_water_load(const WaterLoad &water);
-    const WaterLoad &water_load() const;
-    /// Free-surface height h above the frame plane at the current state (m).
-    double free_surface_height() const;
+    /// The registered load terms that @p values switch on (load_term.h), in
+    /// their order, in place of those set before (none by default); they
+    /// apply from the next solve.
+    void set_load_terms(const ParameterValues &values);
+    /// These load terms, in this order, in place of those set before.
+    void set_load_terms(std::vector<std::unique_ptr<LoadTerm>> terms);
+    /// The load terms of the model, in their order.
+    std::vector<const LoadTerm *> load_terms() const;
 
     unsigned int n_dofs() const;
     unsigned int n_elements() const;

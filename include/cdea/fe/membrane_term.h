@@ -93,4 +93,16 @@ namespace cdea
   private:
     double force = 0.;
   };
+
+  /// The enclosed volume V = pi int_A^B r^2 (-z') dR (between the frame plane
+  /// and the deformed membrane with the disk), with its gradient and Hessian,
+  /// at the 2p Gauss points of each cell (exact for the FE solution), when
+  /// assemble_volume asks for it: the postprocessors' volume and what the
+  /// water load and the water's inertia couple through.
+  class EnclosedVolumeTerm final : public CellTerm
+  {
+  public:
+    bool add_cell(const CellInput &cell, unsigned int flags, CellScratch &scratch,
+                  CellContribution &contribution) override;
+  };
 } // namespace cdea

@@ -1,9 +1,5 @@
 #pragma once
-// The enclosed volume and the pump's water load as cell terms.
-//
-// Enclosed volume V = pi int_A^B r^2 (-z') dR (between the frame plane and the
-// deformed membrane with the disk), with its gradient and Hessian, at the 2p
-// Gauss points of each cell (exact for the FE solution).
+// The pump's water load as a load term (load_term.h), registered as "water".
 //
 // Water load (doc/pump.md): the water fills the cone above the membrane and
 // the disk (z > 0 is down) and rises in a level tube of cross-section
@@ -17,9 +13,15 @@
 // in stage 1, full in stage 2). On each cell the term adds its part at h = 0;
 // finish() adds the head's part once V is known: residual -c h dV/dx, tangent
 // -c h d2V/dx2 and the dense rank-one (c / tube_area) dV/dx dV/dx^T, which the
-// linear solver handles by Sherman-Morrison.
+// linear solver handles by Sherman-Morrison. V is the enclosed volume
+// (EnclosedVolumeTerm, membrane_term.h).
+//
+// Its entries are those of subsection Reservoir: Water volume (ml), Water
+// density (kg/m^3) and Water load (on or off); it reads the level tube's
+// Width and Depth (mm), which the core declares for the level drop of every
+// run, and Loading/Gravity (m/s^2).
 
-#include <cdea/fe/cell_kernel.h>
+#include <cdea/fe/load_term.h>
 
 namespace cdea
 {
@@ -32,16 +34,21 @@ namespace cdea
     double tube_area    = 400e-6; ///< m^2, cross-section of the level tube
   };
 
-  class EnclosedVolumeTerm final : public CellTerm
+  class WaterTerm final : public LoadTerm
   {
   public:
-    bool add_cell(const CellInput &cell, unsigned int flags, CellScratch &scratch,
-                  CellContribution &contribution) override;
-  };
+    static void declare_parameters(ParameterDeclarations &prm);
+    /// The water load of the Reservoir's entries in SI units (checked: each
+    /// positive and at most 1e12 in its unit).
+    void        parse_parameters(const ParameterValues &values) override;
+    bool        active() const override { return settings.enabled; }
+    std::string switched_on() const override { return "Reservoir/Water load = true"; }
+    std::string off_value() const override { return "false"; }
+    /// "Water load: 150 ml of density 1000 kg/m^3 above the membrane, level tube 20 x 20 mm"
+    std::string describe() const override;
+    /// "  water: free surface ... mm above the frame plane"
+    std::string describe_state(const StepSummary &summary) const override;
 
-  class WaterTerm final : public CellTerm
-  {
-  public:
     void             set_water(const WaterLoad &water);
     const WaterLoad &water() const { return settings; }
     /// rho g times the load stage's share of gravity (0 without water).
@@ -64,6 +71,8 @@ namespace cdea
 
   private:
     WaterLoad settings;
+    /// The entries as the file gives them (ml, mm), for describe().
+    double volume_ml = 150., width_mm = 20., depth_mm = 20.;
     double    gravity_share = 0.;
     double    weight        = 0.;
   };

@@ -29,7 +29,7 @@ namespace cdea
   };
 
   /// Read and validate (Parameters::scene(), validate_ranges(),
-  /// validate_time()) the parameters of @p input. Throws InputError with a
+  /// validate_time(), validate_load_terms()) the parameters of @p input. Throws InputError with a
   /// message that names the file (or "parameter text"), the line or the
   /// parameter; an override that names no declared entry, or whose value the
   /// entry does not allow, is named by its key. Entries set twice become

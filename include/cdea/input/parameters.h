@@ -2,8 +2,11 @@
 // Run-time parameters, one struct per subsection of the .prm file (as in the
 // deal.II tutorial step-44). Each struct declares its entries, documented where
 // they are declared, and parses them; choices become enums. The subsections of
-// the model are here, those of time runs in parameters_time.h and those of the
-// design studies in parameters_design.h; Parameters holds them all.
+// the model are here, those of time runs in parameters_time.h, those of the
+// design studies in parameters_design.h and the entries of the registered
+// plugins (Material/Model and the laws' constants, the load terms' entries)
+// in parameters_plugins.h;
+// Parameters holds them all.
 // Parameters::scene() turns them into a Scene and rejects bad input with an
 // InputError that names the parameter. Reading a file (with overrides) is
 // parameter_input.h, the range checks validation.h, the solver settings made
@@ -11,6 +14,7 @@
 
 #include <cdea/base/text.h>
 #include <cdea/input/parameters_design.h>
+#include <cdea/input/parameters_plugins.h>
 #include <cdea/input/parameters_time.h>
 #include <cdea/model/scene.h>
 #include <cdea/numerics/tangent_solver.h>
@@ -129,14 +133,12 @@ namespace cdea
       void         parse(dealii::ParameterHandler &prm);
     };
 
-    /// The pump module's water reservoir above the actuator.
+    /// The pump module's level tube, for the level drop of every run (the
+    /// water load's entries are the water term's, fe/water_term.h).
     struct Reservoir
     {
       double      width_mm;
       double      depth_mm;
-      double      water_volume_ml;
-      double      water_density;
-      bool        water_load;
       static void declare(dealii::ParameterHandler &prm);
       void        parse(dealii::ParameterHandler &prm);
     };
@@ -167,8 +169,9 @@ namespace cdea
     parameters::Optimization   optimization;
     parameters::Calibration    calibration;
     parameters::Output         output;
-    parameters::ViscousMaterial viscous_material; ///< parameters_time.h
-    parameters::Time            time;             ///< parameters_time.h
+    parameters::MaterialLaw    material_law; ///< parameters_plugins.h
+    parameters::Time           time;         ///< parameters_time.h
+    parameters::LoadTerms      load_terms;   ///< parameters_plugins.h
 
     static void declare(dealii::ParameterHandler &prm);
     void        parse(dealii::ParameterHandler &prm);

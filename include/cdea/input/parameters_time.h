@@ -1,9 +1,9 @@
 #pragma once
-// Parameters of time-dependent runs (doc/time.md): the material model's
-// viscous network (entries of subsection Material) and subsection Time. One
-// struct each with declare/parse, as in parameters.h; choices are enums. Their
-// checks are validate_time() (validation.h), the stepper's settings
-// time_settings() (solver_settings.h).
+// Parameters of time-dependent runs (doc/time.md): subsection Time, one
+// struct with declare/parse as in parameters.h; choices are enums. Its checks
+// are validate_time() (validation.h), the stepper's settings time_settings()
+// (solver_settings.h). The law with internal variables is Material/Model
+// (parameters_plugins.h).
 
 #include <cdea/material/membrane_law.h> // TimeScheme
 #include <cdea/model/waveform.h>        // WaveformKind
@@ -17,26 +17,8 @@ namespace dealii
 
 namespace cdea
 {
-  /// Material/Model.
-  enum class MaterialModel
-  {
-    elastic,
-    viscoelastic
-  };
-
   namespace parameters
   {
-    /// Material/Model and network B (entries of subsection Material).
-    struct ViscousMaterial
-    {
-      MaterialModel model;
-      double        network_b_shear_modulus_kPa;
-      double        network_b_jlim;
-      double        relaxation_time_s;
-      static void   declare(dealii::ParameterHandler &prm);
-      void          parse(dealii::ParameterHandler &prm);
-    };
-
     struct Time
     {
       bool         enabled;
@@ -63,7 +45,6 @@ namespace cdea
     };
   } // namespace parameters
 
-  std::string to_string(MaterialModel choice);
   std::string to_string(WaveformKind choice);
   std::string to_string(TimeScheme choice);
 } // namespace cdea

@@ -5,7 +5,6 @@
 // (design/), the Python module, tests and benchmarks alike.
 
 #include <cdea/fe/discretization.h>
-#include <cdea/fe/water_term.h>
 #include <cdea/material/membrane_law.h>
 #include <cdea/numerics/newton.h>
 #include <cdea/shooting/options.h>
@@ -40,11 +39,8 @@ namespace cdea
   /// Cross-section width x depth of the pump's level tube (m^2).
   double tube_area(const Parameters &p);
 
-  /// The water load of the Reservoir subsection in SI units (gravity from
-  /// Loading); enabled if Reservoir/Water load is true.
-  WaterLoad water_load(const Parameters &p);
-
-  /// The material law of the FE model: Gent (elastic) or the two-network law.
+  /// The material law of the FE model: the registered law Material/Model
+  /// names, network A the film of @p scene.
   std::shared_ptr<const MembraneLaw> material_law(const Parameters &p, const Scene &scene);
 
   /// The time stepper's settings (waveform from the last waypoint or the table).

@@ -2,8 +2,9 @@
 // Checks of the input beyond what deal.II's patterns check: the range of every
 // numeric input at parse time (validate_ranges(), the allowed ranges of
 // doc/usage.md), the entries of time runs (validate_time()), the Reservoir,
-// and what a command or study cannot do (the FE-only options for the shooting
-// model, time runs and the viscoelastic law for the design studies). Every
+// the load terms' options (validate_load_terms()), and what a command or study
+// cannot do (the FE-only options for the shooting model, time runs, load terms
+// and laws other than the film's for the design studies). Every
 // message names the parameter and is one short line.
 
 #include <string>
@@ -26,18 +27,38 @@ namespace cdea
   /// @p scene is p.scene().
   void validate_ranges(const Parameters &p, const Scene &scene);
 
-  /// Checks the Material/Model and Time entries (reads the table file);
+  /// Checks the Material/Model and Time entries (reads the table file): the
+  /// law of Material/Model is built from its entries, which the law checks;
   /// throws InputError naming the parameter.
   void validate_time(const Parameters &p);
 
   /// Rejects bad Reservoir entries with an InputError that names the
-  /// parameter, e.g. "Reservoir/Width (mm) must be positive, got -3".
+  /// parameter, e.g. "Reservoir/Width (mm) must be positive, got -3" (the
+  /// water's are the water term's, checked with the others' by validate_ranges()).
   void validate_reservoir(const Parameters &p);
 
-  /// Refuses the options only the FE model has (water load, relaxed law)
-  /// and time runs for the command @p command ("shoot", "compare"): throws
-  /// InputError.
+  /// Refuses a load term switched on (fe/load_term.h) with an option it does
+  /// not support (LoadTermSupport): Time/Enabled = true, Solver/Continuation =
+  /// arc length, Solver/Stability check = true. InputError "ENTRY = VALUE is
+  /// not supported with OPTION (use OFF)".
+  void validate_load_terms(const Parameters &p);
+
+  /// Refuses a load term switched on that lacks @p support (LoadTermSupport)
+  /// for the command @p command ("sweep"): InputError "ENTRY = VALUE is not
+  /// supported by cdea COMMAND: WHY (use OFF)".
+  void require_load_term_support(const Parameters &p, unsigned int support,
+                                 const std::string &command, const std::string &why);
+
+  /// Refuses the options only the FE model has (load terms without
+  /// supports_shooting, such as the water load; the relaxed law; a
+  /// Material/Model other than the film's Gent law) and time runs for the
+  /// command @p command ("shoot", "compare"): throws InputError.
   void require_shooting_options(const Parameters &p, const std::string &command);
+
+  /// The design studies build their models with the film's Gent law (the
+  /// default Material/Model): throws InputError "Material/Model = NAME is not
+  /// supported by cdea COMMAND: WHY (use elastic)" for any other law.
+  void require_film_law(const Parameters &p, const std::string &command, const std::string &why);
 
   /// The design commands (@p command: "optimize", "fit") work on the
   /// quasi-static elastic model, whose sensitivities they use: throws

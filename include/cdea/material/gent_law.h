@@ -1,17 +1,26 @@
 #pragma once
 // The ideal-dielectric Gent law (GentDielectric) as a MembraneLaw: the
-// elastic law of the paper, evaluated at every quadrature point.
+// elastic law of the paper, evaluated at every quadrature point; registered
+// as Material/Model = elastic (law_factory.h), the default.
 
 #include <cdea/material/gent_dielectric.h>
 #include <cdea/material/membrane_law.h>
 
+#include <memory>
+
 namespace cdea
 {
+  struct LawSettings;
+
   /// The ideal-dielectric Gent law of GentDielectric as a MembraneLaw.
   class GentDielectricLaw final : public MembraneLaw
   {
   public:
     explicit GentDielectricLaw(const MaterialConstants &constants);
+
+    /// The Gent law of the film (Shear modulus, Jlim, Permittivity); no
+    /// entries of its own.
+    static std::shared_ptr<const MembraneLaw> parse_parameters(const LawSettings &settings);
 
     bool   evaluate(const LawInput &input, const InternalStep &step, unsigned int request,
                     LawResponse &response) const override;

@@ -1,15 +1,26 @@
 #pragma once
-// The material laws by the names Material/Model gives them ("elastic",
-// "viscoelastic"), in the manner of ASPECT's material models: each law
-// registers itself in its own source file with one line,
+// The material laws as plugins of Material/Model, in the manner of ASPECT's
+// material models: each law registers itself at the end of its own source
+// file, inside namespace cdea, with one line,
 //
-//   CDEA_REGISTER_MEMBRANE_LAW(TwoNetworkGentLaw, "viscoelastic", create_function)
+//   CDEA_REGISTER_MEMBRANE_LAW(TwoNetworkGentLaw, "viscoelastic", "description")
 //
-// and make_membrane_law() builds the one the settings name. The settings are
-// plain data (no deal.II): input/ fills them from the parameter file. The law
-// files are linked whole into every program (an object library in
-// CMakeLists.txt), so that no registration is dropped by the linker.
+// and the core lists no law by hand. The class gives two static functions:
+//
+//   static void declare_parameters(ParameterDeclarations &prm);
+//     its entries of subsection Material (MembraneLaw's default: none);
+//   static std::shared_ptr<const MembraneLaw> parse_parameters(const LawSettings &);
+//     its constants taken from the settings and checked (InputError naming
+//     the entry and what is allowed), the law built.
+//
+// Material/Model's selection is the registered names, its documentation the
+// laws' descriptions ("'NAME': description", in name order); input/ declares
+// and reads the entries (parameters_plugins.h), so a law with constants of its
+// own touches no file outside its own. The settings are plain data (no
+// deal.II). The law files are linked whole into every program (an object
+// library in CMakeLists.txt), so that no registration is dropped by the linker.
 
+#include <cdea/base/parameter_declarations.h>
 #include <cdea/material/gent_dielectric.h>
 #include <cdea/material/membrane_law.h>
 
@@ -23,10 +34,12 @@ namespace cdea
   /// What a law is built from.
   struct LawSettings
   {
-    std::string       model = "elastic"; ///< Material/Model: the name a law is registered under
-    MaterialConstants material{};        ///< the film's Gent law and dielectric (SI): network A
-    /// Further entries of subsection Material by their names in the
-    /// parameter file, in its units (e.g. "Relaxation time (s)").
+    /// Material/Model: the name a law is registered under; the default is the
+    /// law of the FE model, the shooting model and the design studies.
+    std::string       model = "elastic";
+    MaterialConstants material{}; ///< the film's Gent law and dielectric (SI): network A
+    /// The entries the laws declare in subsection Material, by name, in the
+    /// parameter file's units (e.g. "Relaxation time (s)").
     std::map<std::string, double> constants;
 
     /// The entry @p name of constants; throws std::invalid_argument naming
@@ -37,23 +50,41 @@ namespace cdea
   /// Builds a law from its settings.
   using LawCreator = std::shared_ptr<const MembraneLaw> (*)(const LawSettings &);
 
-  /// Registers @p create under @p name (what CDEA_REGISTER_MEMBRANE_LAW
-  /// does); true. Throws std::logic_error if the name is taken.
-  bool register_membrane_law(const std::string &name, LawCreator create);
+  /// A law as CDEA_REGISTER_MEMBRANE_LAW registers it.
+  struct LawPlugin
+  {
+    std::string name;        ///< its Material/Model value
+    std::string description; ///< what Material/Model's documentation says of it
+    void (*declare_parameters)(ParameterDeclarations &prm);
+    LawCreator parse_parameters;
+  };
+
+  /// Registers @p plugin; true. Throws std::logic_error if the name is taken.
+  bool register_membrane_law(const LawPlugin &plugin);
 
   /// The registered names, sorted.
   std::vector<std::string> membrane_law_names();
 
+  /// The registered laws' descriptions as the documentation of
+  /// Material/Model: "'NAME': description" joined by blanks, in name order.
+  std::string membrane_law_documentation();
+
+  /// Every registered law's entries (subsection Material), law by law in
+  /// name order, each in the order it declares them.
+  ParameterDeclarations membrane_law_parameters();
+
   /// The law settings.model names, built from @p settings. Throws
-  /// std::invalid_argument if no law is registered under that name.
+  /// std::invalid_argument if no law is registered under that name or a
+  /// constant is missing, InputError if a constant is outside its range.
   std::shared_ptr<const MembraneLaw> make_membrane_law(const LawSettings &settings);
 } // namespace cdea
 
-/// Registers @p create (a LawCreator) as the law @p name of Material/Model;
-/// one line in the law's source file, outside any namespace.
-#define CDEA_REGISTER_MEMBRANE_LAW(classname, name, create)                            \
+/// Registers the law @p classname as the value @p name of Material/Model,
+/// with @p description for its documentation; one line at the end of the
+/// law's source file, inside namespace cdea.
+#define CDEA_REGISTER_MEMBRANE_LAW(classname, name, description)                        \
   namespace                                                                             \
   {                                                                                     \
-    [[maybe_unused]] const bool classname##_registered =                                \
-      ::cdea::register_membrane_law(name, create);                                      \
+    [[maybe_unused]] const bool classname##_registered = ::cdea::register_membrane_law( \
+      {name, description, &classname::declare_parameters, &classname::parse_parameters}); \
   }

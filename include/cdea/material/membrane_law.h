@@ -24,6 +24,8 @@
 
 namespace cdea
 {
+  class ParameterDeclarations;
+
   /// Where the tension-field relaxation finds a material point.
   enum class TensionState : int
   {
@@ -116,6 +118,10 @@ namespace cdea
       : internal(std::move(internal_variables))
     {}
     virtual ~MembraneLaw() = default;
+
+    /// A registered law's entries of subsection Material (law_factory.h):
+    /// none, unless the law declares its own constants.
+    static void declare_parameters(ParameterDeclarations &prm) { (void)prm; }
 
     /// The internal variables per material point, in their stored order.
     const std::vector<InternalVariable> &internal_variables() const { return internal; }

@@ -37,11 +37,19 @@
 // Internal variables per point (declared in the constructor): xi1, xi2 (the
 // results hold them) and q1, q2 with q = de/dt at the end of the step (1/s),
 // which the trapezoidal rule needs.
+//
+// Registered as Material/Model = viscoelastic (law_factory.h): network A is
+// the film's Gent law, network B's constants are entries of subsection
+// Material that the law declares itself.
 
 #include <cdea/material/membrane_law.h>
 
+#include <memory>
+
 namespace cdea
 {
+  struct LawSettings;
+
   /// Spring B and the dashpot.
   struct ViscousNetwork
   {
@@ -55,6 +63,13 @@ namespace cdea
   public:
     /// @p network_a: mu_A, Jlim_A and the dielectric (permittivity, thickness).
     TwoNetworkGentLaw(const MaterialConstants &network_a, const ViscousNetwork &network_b);
+
+    /// Network B's entries of subsection Material: "Network B shear modulus
+    /// (kPa)", "Network B Jlim", "Relaxation time (s)".
+    static void declare_parameters(ParameterDeclarations &prm);
+    /// Network B from those entries (checked: InputError naming the entry
+    /// and its range), network A the film's Gent law.
+    static std::shared_ptr<const MembraneLaw> parse_parameters(const LawSettings &settings);
 
     /// Energy is the incremental potential Psi of the step (W itself for
     /// dt = 0); false outside either Gent limit or if the local update fails.
