@@ -3,7 +3,9 @@
 # configure (Release) and build into ./build. Safe to run again: it installs
 # nothing that is already there and rebuilds only what changed.
 #
-#   bash scripts/setup.sh            # packages + configure + build
+#   bash scripts/setup.sh            # packages + configure + the cdea program
+#   bash scripts/setup.sh --all      # the same, and the Python module, the
+#                                    # tests and the benchmarks (for ctest)
 #
 # Environment: BUILD_DIR (default: build), JOBS (default: number of cores).
 set -euo pipefail
@@ -11,6 +13,16 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir="${BUILD_DIR:-build}"
 jobs="${JOBS:-$(nproc)}"
+# The program alone is what a first run needs; the test suite needs every
+# target.
+targets=(--target cdea)
+what="$build_dir/cdea"
+case "${1:-}" in
+  "") ;;
+  --all) targets=(); what="$build_dir/cdea, the Python module in $build_dir/python, the tests and benchmarks" ;;
+  *) echo "setup: unknown option '$1' (allowed: none, or --all to build the tests, benchmarks and Python module too)" >&2
+     exit 1 ;;
+esac
 
 # python3-pytest and python3-vtk9: the Python tests, which read the ParaView
 # output back with VTK's XML reader. libnlopt-cxx-dev: the layout optimizer
@@ -43,5 +55,5 @@ cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release > "$log" 2>&1 || {
   echo "setup: configuring failed (log above)" >&2
   exit 1
 }
-cmake --build "$build_dir" -j "$jobs"
-echo "setup: built $build_dir/cdea and the Python module in $build_dir/python"
+cmake --build "$build_dir" -j "$jobs" "${targets[@]}"
+echo "setup: built $what"

@@ -226,12 +226,14 @@ def functions(text):
 
 def classify(head):
     """What the brace after @p head (the text since the last statement) opens."""
-    h = " ".join(head.split())
-    if not h or h.endswith(("=", ",", "return")) or h.startswith("#"):
+    # Preprocessor lines (includes before the first function) are not part
+    # of the declaration.
+    lines = [line for line in head.split("\n") if not line.lstrip().startswith("#")]
+    h = " ".join(" ".join(lines).split())
+    if not h or h.endswith(("=", ",", "return")):
         return "other"
-    # Access specifiers and preprocessor lines before a declaration.
+    # Access specifiers before a declaration.
     h = re.sub(r'^((public|private|protected)\s*:\s*)+', '', h)
-    h = re.sub(r'^(#[^\n]*\n)+', '', h)
     if re.search(r'\)\s*:', h) and "(" in h:
         # A constructor with its initializer list: name(...) : a(x), b{y}
         pass

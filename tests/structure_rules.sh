@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# The structure of the code as doc/architecture.md states it ("Folder order"):
+# tests/structure_check.py finds no include against the folder order, no
+# include cycle between files and no function above 80 lines in the repository;
+# and, so that the check itself cannot pass by finding nothing, it fails on a
+# scratch tree with one of each and names every one of them.
+source "$(dirname "$0")/script_helpers.bash"
+check="$src/tests/structure_check.py"
+
+if out=$("$PYTHON" "$check" "$src" 2>&1); then
+  ok "the repository: ${out##*: }"
+else
+  fail "the repository has structure problems:"; echo "$out"
+fi
+
+# A scratch tree: folders a -> b, a file of a that includes b (upward), two
+# files of b that include each other, and a function of 93 lines.
+mkdir -p tree/doc tree/include/cdea/a tree/include/cdea/b tree/source/a tree/source/b
+printf '# x\n## Folder order\n\n    a -> b\n' > tree/doc/architecture.md
+printf '#pragma once\n#include <cdea/b/two.h>\n' > tree/include/cdea/a/up.h
+printf '#pragma once\n#include <cdea/b/two.h>\n' > tree/include/cdea/b/one.h
+printf '#pragma once\n#include <cdea/b/one.h>\n' > tree/include/cdea/b/two.h
+{
+  printf '#include <cdea/a/up.h>\nint long_function()\n{\n'
+  for i in $(seq 1 90); do printf '  int x%d = %d;\n' "$i" "$i"; done
+  printf '}\n'
+} > tree/source/a/up.cc
+
+if out=$("$PYTHON" "$check" tree 2>&1); then
+  fail "structure_check passed a tree with three problems"; echo "$out"
+else
+  ok "structure_check fails on the scratch tree"
+  for expected in "a/up.h" "b/one -> b/two" "long_function"; do
+    if grep -q "$expected" <<< "$out"; then ok "names $expected"
+    else fail "does not name $expected:"; echo "$out"; fi
+  done
+fi
+finish
