@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Old against new, in one invocation on one machine:
 #  1. speed: the benchmarks bench_default (prm/default.prm, in-process runs and
-#     whole `cdea run` processes) and bench_sweep (prm/sweep-inner5.prm, the
-#     full figure-8 map in-process) of revision REV and of this tree, run
+#     whole `cdea run` processes), bench_sweep (prm/sweep-inner5.prm, the
+#     full figure-8 map in-process), bench_optimize (optimize two and eight
+#     rings, fit; whole processes) and bench_time (the pump's time run,
+#     prm/pump-time.prm, in-process) of revision REV and of this tree, run
 #     alternately ROUNDS times (old first in odd rounds, new first in even
 #     ones); printed: the median over the rounds of each invocation's median,
 #     the range over the rounds and the ratio new / old;
@@ -33,10 +35,10 @@ old_dir="$repo/build-$rev"
 new_build=${NEW_BUILD_DIR:-$repo/build}
 python=/usr/bin/python3
 scenes="$repo/benchmarks/validation_scenes.py"
-targets=(--target cdea bench_default bench_sweep)
+targets=(--target cdea bench_default bench_sweep bench_optimize bench_time)
 
 # --- builds -------------------------------------------------------------------
-if [ ! -x "$old_dir/build/benchmarks/bench_sweep" ] || [ ! -x "$old_dir/build/cdea" ]; then
+if [ ! -x "$old_dir/build/benchmarks/bench_time" ] || [ ! -x "$old_dir/build/cdea" ]; then
   echo "building $rev in $old_dir (once; delete the folder to rebuild)"
   rm -rf "$old_dir"
   mkdir -p "$old_dir/src"
@@ -86,9 +88,20 @@ round() { # round old|new
   record "$1" map_ms ".*median wall time of a map, in-process, 1 core:$number"
   record "$1" map_cpu_ms ".*median CPU time of a map, in-process:$number"
   record "$1" map_work '^\(equilibrium solves per map: [0-9]*, Newton iterations: [0-9]*\).*'
+  bench "$1" bench_optimize 3 8 8
+  record "$1" optimize2_s '^optimize: 2 rings[^,]*, [0-9]* starts *\([0-9.]*\).*'
+  record "$1" optimize8_s '^optimize: 8 rings[^,]*, [0-9]* starts *\([0-9.]*\).*'
+  record "$1" fit_s '^fit: [^0-9]*20 points *\([0-9.]*\).*'
+  # CPU time of the process (user + system): less sensitive to other jobs.
+  record "$1" optimize8_cpu_s '^optimize: 8 rings[^,]*, [0-9]* starts *[0-9.]* *[0-9.]* *\([0-9.]*\).*'
+  record "$1" fit_cpu_s '^fit: [^0-9]*20 points *[0-9.]* *[0-9.]* *\([0-9.]*\).*'
+  bench "$1" bench_time "$repo/prm/pump-time.prm" 0 3 1
+  record "$1" time_ms ".*median time per run (no output):$number"
+  record "$1" time_cpu_ms ".*median time per run (no output):[^(]*(CPU$number"
 }
 echo
-echo "speed: $rounds rounds of bench_default ${default_prm#$repo/} 31 3 and bench_sweep ${sweep_prm#$repo/} 3 0"
+echo "speed: $rounds rounds of bench_default ${default_prm#$repo/} 31 3, bench_sweep ${sweep_prm#$repo/} 3 0,"
+echo "       bench_optimize 3 8 8 and bench_time prm/pump-time.prm 0 3 1"
 for ((k = 1; k <= rounds; ++k)); do
   if ((k % 2)); then round old; round new; else round new; round old; fi
   echo "  round $k of $rounds done (load average $(cut -d' ' -f1 /proc/loadavg))"
@@ -102,7 +115,14 @@ for line in open(sys.argv[1]):
 labels = [("default_ms", "default case in-process, ms per run"),
           ("process_ms", "default case, whole `cdea run`, ms"),
           ("map_ms", "figure-8 map in-process, ms (wall)"),
-          ("map_cpu_ms", "figure-8 map in-process, ms (CPU)")]
+          ("map_cpu_ms", "figure-8 map in-process, ms (CPU)"),
+          ("optimize2_s", "optimize 2 rings, process, s"),
+          ("optimize8_s", "optimize 8 rings, process, s"),
+          ("optimize8_cpu_s", "optimize 8 rings, process, s (CPU)"),
+          ("fit_s", "fit mu and Jlim, process, s"),
+          ("fit_cpu_s", "fit mu and Jlim, process, s (CPU)"),
+          ("time_ms", "pump time run in-process, ms"),
+          ("time_cpu_ms", "pump time run in-process, ms (CPU)")]
 print(f"{'quantity (median over rounds of the medians)':<46}{'old':>9}{'new':>9}{'new/old':>9}"
       "   range over the rounds: old; new")
 for key, label in labels:

@@ -34,11 +34,27 @@ printf 'subsection Output\n  set Base name = run#2\nend\n' > u5.prm
 expect "'#' in Base name" 1 "'#' starts a comment in a parameter file, so the value would be cut to 'run'" \
   "$exe" run u5.prm
 expect "'#' in an override" 1 "'#' starts a comment" "$exe" run prm/default.prm --set 'Output/Base name=a#b'
+# Time runs: a sine sampled too coarsely is refused with the step it needs.
+expect "a 1 Hz sine in 1 s steps" 1 "Time/Time step (s) = 1 is too coarse for the sine of Time/Frequency (Hz) = 1: it needs at least 10 steps per period, a time step of at most 0.1 s" \
+  "$exe" run prm/response.prm --set 'Time/Time step (s)=1'
 [ ! -e results ] && ok "nothing written for bad input" || fail "bad input wrote $(ls results)"
 mkfifo fifo.prm
 expect "a FIFO as parameter file" 1 "it is not a regular file (a FIFO)" "$exe" run fifo.prm
 printf 'include /dev/zero\n' > inc.prm
 expect "include of a device" 1 "cannot include '/dev/zero': it is not a regular file (a device)" "$exe" run inc.prm
+
+# A time run whose rings stay at 0 V says so (and still completes).
+"$exe" run prm/response.prm --set 'Electrodes/Voltage path (kV)=0' --set 'Time/Cycles=1' \
+  --set 'Time/Time step (s)=0.1' --set 'Time/Inertia=false' --set 'Output/Base name=no-drive' \
+  > out.txt 2> err.txt
+rc=$?
+[ $rc -eq 0 ] && grep -q "warning: the drive never rose: every ring was at 0 V at every time step" err.txt \
+  && [ -s results/no-drive.h5 ] && ok "a drive at 0 V: exit 0 with the warning" \
+  || fail "a drive at 0 V: exit $rc, $(head -c 400 err.txt)"
+"$exe" run prm/response.prm --set 'Time/Cycles=1' --set 'Time/Time step (s)=0.1' \
+  --set 'Time/Inertia=false' --set 'Output/Base name=drive' > out.txt 2> err.txt
+! grep -q "never rose" err.txt && ok "a drive that rises: no warning" || fail "a rising drive warned: $(cat err.txt)"
+rm -rf results
 
 # Write errors on stdout: exit 2 with a line; the work itself is done.
 for command in "print-parameters" "--help" "--version" "print-parameters --json"; do

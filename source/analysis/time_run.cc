@@ -6,6 +6,7 @@
 #include <cdea/input/solver_settings.h>
 #include <cdea/output/results_file.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iomanip>
@@ -67,6 +68,7 @@ namespace cdea
         const double    seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         print_final_state(result, seconds);
+        report_a_drive_that_never_rose();
         return output->finish(result);
       }
 
@@ -78,6 +80,8 @@ namespace cdea
       const std::string          path;
       std::unique_ptr<RunOutput> output;
       StepSummary                last;
+      /// The largest |V| of any ring at any time step (V).
+      double highest_voltage = 0.;
       unsigned int               newton_iterations_of_steps = 0;
       /// The disk's natural frequency at the first state in time (NaN before).
       double frequency_start = std::numeric_limits<double>::quiet_NaN();
@@ -149,6 +153,21 @@ namespace cdea
                   << cell(s.s2_min / scene.material.shear_modulus, 4, 11) << ' ' << std::setw(4)
                   << s.newton_iterations << '\n';
         newton_iterations_of_steps += s.newton_iterations;
+        if (s.stage == Stage::voltage)
+          for (const double x : s.voltages)
+            highest_voltage = std::max(highest_voltage, std::abs(x));
+      }
+
+      /// A run whose rings stayed at 0 V at every time step has shown nothing
+      /// of the drive: say so rather than end with a stroke of 0 as if the
+      /// film had not moved under it.
+      void report_a_drive_that_never_rose() const
+      {
+        if (highest_voltage > 0. || stepper.time() <= 0.)
+          return;
+        std::cerr << "cdea: warning: the drive never rose: every ring was at 0 V at every time "
+                     "step (waveform peak "
+                  << format_kV(run.settings.waveform.peak()) << ")\n";
       }
 
       void print_final_state(const RunResult &result, const double seconds) const

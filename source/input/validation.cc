@@ -239,6 +239,24 @@ namespace cdea
                          format_number(t.fields_interval_s));
     }
 
+    /// A sine is sampled at the time steps only (a square, a ramp and a
+    /// table put a step on each of their knots), so a step of a period or
+    /// more samples it at the same phase every time: a 1 Hz sine with 1 s
+    /// steps stays at 0 V. Ten steps per period are the least that show its
+    /// shape (the documented frequency sweeps use 14 or more).
+    void check_sine_resolved(const parameters::Time &t)
+    {
+      constexpr double min_steps_per_period = 10.;
+      const double     period               = 1. / t.frequency_Hz;
+      if (t.time_step_s * min_steps_per_period > period * (1. + 1e-12))
+        throw InputError("Time/Time step (s) = " + format_number(t.time_step_s) +
+                         " is too coarse for the sine of Time/Frequency (Hz) = " +
+                         format_number(t.frequency_Hz) + ": it needs at least " +
+                         format_number(min_steps_per_period) +
+                         " steps per period, a time step of at most " +
+                         format_number(period / min_steps_per_period) + " s");
+    }
+
     /// How long the waveform lasts (s), its entries checked; @p entries
     /// receives the entries the duration comes from, for messages.
     double waveform_duration(const Parameters &p, std::string &entries)
@@ -267,6 +285,7 @@ namespace cdea
             return t.cycles / t.frequency_Hz;
           case WaveformKind::sine:
             require_positive(t.frequency_Hz, "Time/Frequency (Hz)");
+            check_sine_resolved(t);
             entries = "Time/Cycles / Time/Frequency (Hz)";
             return t.cycles / t.frequency_Hz;
           case WaveformKind::table:
