@@ -101,7 +101,8 @@ namespace
 int main()
 {
   check(membrane_law_names() ==
-          std::vector<std::string>{"elastic", "stiffened test", "viscoelastic"},
+          std::vector<std::string>{"elastic", "gent-gent", "mooney-rivlin", "neo-hooke", "ogden",
+                                   "stiffened test", "viscoelastic"},
         "the test program's law is registered beside the library's");
 
   std::cout << "Every law from its defaults\n";
@@ -138,7 +139,8 @@ int main()
   const std::string json = default_parameter_file(ParameterFormat::json);
   check(json.find("'stiffened test': the test program's Gent law") != std::string::npos,
         "Material/Model's documentation describes it");
-  check(json.find("[Selection elastic|stiffened test|viscoelastic ]") != std::string::npos,
+  check(json.find("[Selection elastic|gent-gent|mooney-rivlin|neo-hooke|ogden|stiffened test|"
+                  "viscoelastic ]") != std::string::npos,
         "Material/Model's selection lists it");
 
   std::cout << "Its range check, the FE model and the refusals\n";
