@@ -78,11 +78,6 @@ namespace cdea
     return w;
   }
 
-  std::shared_ptr<const MembraneLaw> material_law(const Parameters &p, const Scene &scene)
-  {
-    return make_membrane_law(p.material_law.settings(scene.material));
-  }
-
   TimeSettings time_settings(const Parameters &p, const Scene &scene)
   {
     const auto  &t = p.time;

@@ -44,10 +44,6 @@ namespace cdea
   /// Loading); enabled if Reservoir/Water load is true.
   WaterLoad water_load(const Parameters &p);
 
-  /// The material law of the FE model: the registered law Material/Model
-  /// names, network A the film of @p scene.
-  std::shared_ptr<const MembraneLaw> material_law(const Parameters &p, const Scene &scene);
-
   /// The time stepper's settings (waveform from the last waypoint or the table).
   TimeSettings time_settings(const Parameters &p, const Scene &scene);
 } // namespace cdea
