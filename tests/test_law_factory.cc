@@ -59,7 +59,8 @@ namespace
 
 int main()
 {
-  check(membrane_law_names() == std::vector<std::string>{"elastic", "viscoelastic"},
+  check(membrane_law_names() == std::vector<std::string>{"elastic", "gent-gent", "mooney-rivlin",
+                                                         "neo-hooke", "ogden", "viscoelastic"},
         "the laws registered under the names of Material/Model");
 
   const auto elastic = make_membrane_law(settings("elastic"));

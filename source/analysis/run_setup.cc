@@ -10,7 +10,6 @@ namespace cdea
   {
     auto model = std::make_unique<MembraneModel>(scene, fe_discretization(p), newton_settings(p));
     model->set_linear_solver(p.solver.linear_solver);
-    model->set_material_law(material_law(p, scene));
     model->set_relaxed(p.wrinkling.model == WrinklingModel::relaxed);
     model->set_load_terms(p.load_terms.values);
     return model;

@@ -32,6 +32,12 @@ namespace cdea
       }
   }
 
+  void CellKernel::set_law_constants(const unsigned int n)
+  {
+    layout.n_law_constants = n;
+    local.parameter_residual.resize(layout.size() * mesh.dofs_per_cell());
+  }
+
   CellMotion CellKernel::cell_motion(const unsigned int c, const unsigned int parameter) const
   {
     const MeshCell &cell = mesh.cells[c];

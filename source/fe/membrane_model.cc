@@ -1,6 +1,5 @@
 #include "membrane_model_impl.h"
 
-#include <cdea/material/gent_law.h>
 #include <cdea/numerics/arc_length.h>
 
 #include <algorithm>
@@ -15,8 +14,10 @@ namespace cdea
     : scene(scene_in)
     , newton_settings(newton)
     , mesh(scene_in, disc)
-    , plain_law(std::make_shared<GentDielectricLaw>(scene_in.material))
-    , relaxed_law(std::make_shared<TensionField>(plain_law))
+    , plain_law(scene_in.law())
+    , relaxed_law(plain_law->n_internal_variables() == 0 ?
+                    std::make_shared<TensionField>(plain_law) :
+                    nullptr)
     , kernel(mesh, scene_in.n_rings())
     , membrane(kernel.add_term(std::make_unique<MembraneTerm>(scene_in, mesh, plain_law)))
     , solution(Eigen::VectorXd::Zero(mesh.n_dofs()))
@@ -29,6 +30,7 @@ namespace cdea
     kernel.add_term(std::make_unique<EnclosedVolumeTerm>());
     load_term_slot = kernel.n_terms();
     kernel.add_term(std::make_unique<InertiaTerm>());
+    kernel.set_law_constants(plain_law->own_constants().size());
   }
 
   void MembraneModel::Impl::set_load(const LoadState &new_load)
@@ -117,6 +119,7 @@ namespace cdea
     : impl(std::make_unique<Impl>(scene, discretization, newton))
   {
     set_reference_state();
+    relax_internal_variables();
   }
 
   unsigned int MembraneModel::n_dofs() const { return impl->mesh.n_dofs(); }

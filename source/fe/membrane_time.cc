@@ -38,8 +38,8 @@ namespace cdea
       throw std::invalid_argument("MembraneModel::set_material_law: the relaxed (tension-field) "
                                   "membrane needs an elastic law");
     impl->plain_law = law;
-    if (elastic)
-      impl->relaxed_law = std::make_shared<TensionField>(law);
+    impl->relaxed_law = elastic ? std::make_shared<TensionField>(law) : nullptr;
+    impl->kernel.set_law_constants(law->own_constants().size());
     impl->membrane.set_law(impl->relaxed ? impl->relaxed_law : impl->plain_law);
     relax_internal_variables();
     impl->tangent_is_current = false;

@@ -29,6 +29,8 @@ namespace cdea
           return "pre-stretch";
         case ParameterKind::ring_edge:
           return "ring edge " + std::to_string(index) + " (r/a)";
+        case ParameterKind::law_constant:
+          return entry;
       }
     return "unknown";
   }
@@ -65,6 +67,13 @@ namespace cdea
           return scene.prestretch;
         case ParameterKind::ring_edge:
           return scene.ring_edges_over_a.at(p.index);
+        case ParameterKind::law_constant:
+          {
+            const auto it = scene.law_constants.find(p.entry);
+            if (it == scene.law_constants.end())
+              throw std::invalid_argument("the scene's law has no constant '" + p.entry + "'");
+            return it->second;
+          }
       }
     return 0.;
   }
@@ -99,6 +108,9 @@ namespace cdea
         case ParameterKind::ring_edge:
           s.ring_edges_over_a.at(p.index) = value;
           break;
+        case ParameterKind::law_constant:
+          s.law_constants[p.entry] = value;
+          break;
       }
     return s;
   }
@@ -111,7 +123,7 @@ namespace cdea
     /// -1/lam at s = 1); an edge r_v/a sits at R_k = (r_v/a) a / lam_pre.
     std::pair<unsigned int, double> kernel_column(const SceneParameter &p,
                                                   const ParameterLayout &layout,
-                                                  const Scene &scene)
+                                                  const Scene &scene, const MembraneLaw &law)
     {
       switch (p.kind)
         {
@@ -132,6 +144,15 @@ namespace cdea
               throw std::invalid_argument("StateSensitivity: " + p.name() +
                                           " is not an interior edge of this scene");
             return {layout.ring_edge(p.index), scene.disk_radius / scene.prestretch};
+          case ParameterKind::law_constant:
+            {
+              const auto own = law.own_constants();
+              for (unsigned int k = 0; k < own.size(); ++k)
+                if (own[k].entry == p.entry)
+                  return {layout.law_constant(k), 1.};
+              throw std::invalid_argument("StateSensitivity: '" + p.entry +
+                                          "' is not a constant of the scene's law");
+            }
         }
       return {0, 0.};
     }
@@ -172,7 +193,8 @@ namespace cdea
     Eigen::VectorXd column(N), u(N);
     for (unsigned int j = 0; j < P; ++j)
       {
-        const auto [k, factor] = kernel_column(parameters_[j], m.kernel.parameters(), m.scene);
+        const auto [k, factor] =
+          kernel_column(parameters_[j], m.kernel.parameters(), m.scene, *m.plain_law);
         column                 = factor * s.parameter_residual[k];
         for (const unsigned int i : m.mesh.constrained)
           column[i] = 0.;
@@ -362,7 +384,7 @@ namespace cdea
     // Each scene parameter as its kernel column.
     std::vector<std::pair<unsigned int, double>> columns;
     for (const auto &p : parameters_)
-      columns.push_back(kernel_column(p, m.kernel.parameters(), m.scene));
+      columns.push_back(kernel_column(p, m.kernel.parameters(), m.scene, *m.plain_law));
     PointDerivatives at(mesh, m.kernel, m.membrane, *m.plain_law, m.load.voltages,
                         m.scene.material.thickness, dx_dp, std::move(columns));
 

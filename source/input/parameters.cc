@@ -472,6 +472,8 @@ namespace cdea
     scene.prestretch   = geometry.prestretch;
     scene.material     = {material.shear_modulus_kPa * 1e3, material.jlim,
                           material.permittivity, geometry.film_thickness_mm * 1e-3};
+    scene.material_model = material_law.model;
+    scene.law_constants  = material_law.constants;
     scene.mass         = loading.mass_g * 1e-3;
     scene.gravity      = loading.gravity;
     scene.ring_edges_over_a =

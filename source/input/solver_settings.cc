@@ -68,11 +68,6 @@ namespace cdea
     return p.reservoir.width_mm * 1e-3 * p.reservoir.depth_mm * 1e-3;
   }
 
-  std::shared_ptr<const MembraneLaw> material_law(const Parameters &p, const Scene &scene)
-  {
-    return make_membrane_law(p.material_law.settings(scene.material));
-  }
-
   TimeSettings time_settings(const Parameters &p, const Scene &scene)
   {
     const auto  &t = p.time;

@@ -382,16 +382,21 @@ namespace cdea
       throw InputError("Time/Enabled = true is implemented for 'cdea run' only: set it to "
                        "false for 'cdea " +
                        command + "'");
-    if (p.material_law.model != LawSettings().model)
+    if (!serves_every_model(p))
       throw InputError("Material/Model = " + p.material_law.model +
                        " is implemented in the FE model only: use 'cdea run', or set it to " +
                        LawSettings().model + " for 'cdea " + command + "'");
   }
 
+  bool serves_every_model(const Parameters &p)
+  {
+    return p.scene().law()->serves_every_model();
+  }
+
   void require_film_law(const Parameters &p, const std::string &command, const std::string &why)
   {
     const std::string film_law = LawSettings().model;
-    if (p.material_law.model != film_law)
+    if (!serves_every_model(p))
       throw InputError("Material/Model = " + p.material_law.model + " is not supported by cdea " +
                        command + ": " + why + " (use " + film_law + ")");
   }

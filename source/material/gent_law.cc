@@ -81,6 +81,27 @@ namespace cdea
     return d > 0. ? std::sqrt(0.5 * (b + std::sqrt(d))) : 0.;
   }
 
+  double GentDielectricLaw::range_margin(const double l1, const double l2) const
+  {
+    return GentDielectric(c, 0.).gent_margin(l1, l2);
+  }
+
+  // At fixed l2, g > 0 means I < 3 + Jlim, i.e. with u = l1^2
+  //   u^2 - p u + 1/l2^2 < 0,  p = 3 + Jlim - l2^2,
+  // so u lies between the roots u- u+ = 1/l2^2, u- + u+ = p.
+  std::pair<double, double> GentDielectricLaw::meridian_stretch_range(const double jlim,
+                                                                      const double l2)
+  {
+    const double q    = 1. / (l2 * l2);
+    const double p    = 3. + jlim - l2 * l2;
+    const double disc = p * p - 4. * q;
+    if (!(p > 0.) || !(disc > 0.))
+      return {0., 0.};
+    const double u_plus  = 0.5 * (p + std::sqrt(disc));
+    const double u_minus = q / u_plus;
+    return {std::sqrt(u_minus), std::sqrt(u_plus)};
+  }
+
   std::shared_ptr<const MembraneLaw> GentDielectricLaw::parse_parameters(const LawSettings &settings)
   {
     return std::make_shared<GentDielectricLaw>(settings.material);

@@ -40,7 +40,10 @@ namespace cdea
                p.stress.s2 :
                std::numeric_limits<double>::quiet_NaN();
     };
-    const double w_max = law->max_hoop_stretch(in.l1);
+    // A law without a limit (max_hoop_stretch infinite) is searched up to a
+    // thousand times the hoop stretch: far beyond any film, and the search
+    // ends where s2 stays negative (the voltage term outgrows the law).
+    const double w_max = std::min(law->max_hoop_stretch(in.l1), 1e3 * std::max(1., in.l2));
     double       lo = in.l2, f_lo = r.stress.s2, hi = in.l2, f_hi = r.stress.s2;
     double       step = 1e-3 * in.l2;
     while (!(f_hi >= 0.))

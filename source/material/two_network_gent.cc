@@ -268,10 +268,9 @@ namespace cdea
                                                ViscousNetwork{mu_b * 1e3, jlim, tau});
   }
 
-  // The elastic law's description comes just before this one in
-  // Material/Model's documentation (name order): "that law" is it.
   CDEA_REGISTER_MEMBRANE_LAW(TwoNetworkGentLaw, "viscoelastic",
-                             "that law is network A (the long-time response), in parallel with "
+                             "the 'elastic' law is network A (the long-time response), in "
+                             "parallel with "
                              "network B, a Gent spring in series with a dashpot (two-network "
                              "model of Hong 2011 and Zhao, Koh, Suo 2011); needs Time/Enabled = "
                              "true.")

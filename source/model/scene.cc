@@ -13,6 +13,20 @@ namespace cdea
     return edges;
   }
 
+  LawSettings Scene::law_settings() const
+  {
+    LawSettings s;
+    s.model     = material_model;
+    s.material  = material;
+    s.constants = law_constants;
+    return s;
+  }
+
+  std::shared_ptr<const MembraneLaw> Scene::law() const
+  {
+    return make_membrane_law(law_settings());
+  }
+
   unsigned int Scene::ring_of(const double R) const
   {
     const auto   edges = reference_ring_edges();

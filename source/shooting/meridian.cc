@@ -56,21 +56,24 @@ namespace cdea::shooting
       unsigned int                    ring   = 0;
       std::string                     fail;
       double                          fail_x = 0.;
+      std::string                     outside; ///< the message of a state outside the law's range
 
-      /// The reason a state at x is refused ("" if it is not), and there
-      /// the stresses and tangent of the ring's law.
+      /// The reason a state at x is refused (nullptr if it is not), and
+      /// there the stresses and tangent of the ring's law.
       const char *refusal(const double x, const State &y, NominalStress &s, StressTangent &t)
       {
         const double th = y[2], l1 = y[3];
         const double l2 = y[0] / x;
         if (!(l1 > 0.) || !(l2 > 0.))
           return "a stretch became non-positive";
-        if (!(law[ring].gent_margin(l1, l2) > 0.))
-          return "the Gent limit was reached (g <= 0)";
+        if (!law[ring].respond(l1, l2, s, t))
+          {
+            outside = law[ring].range_margin(l1, l2) > 0. ? "the law cannot be evaluated" :
+                                                            law[ring].limit_reached();
+            return outside.c_str();
+          }
         if (cone && !(th > 0. && th < pi))
           return "theta left (0, pi)";
-        s = law[ring].stress(l1, l2);
-        t = law[ring].tangent(l1, l2);
         if (!(t.s11 > 0.))
           return "ds1/dlambda1 <= 0 (loss of monotonicity, pull-in)";
         if (cone && !(s.s1 > 0.))
@@ -164,8 +167,8 @@ namespace cdea::shooting
           {
             const double l1 = (*at)[3], l2 = (*at)[0] / fail_x;
             o << " (l1 = " << l1 << ", l2 = " << l2 << ", theta = " << (*at)[2]
-              << ", g = " << law[ring].gent_margin(l1, l2)
-              << ", ds1/dl1 / mu = " << law[ring].tangent(l1, l2).s11 / mu << ")";
+              << law[ring].margin_text(l1, l2)
+              << ", ds1/dl1 / mu = " << law[ring].s11(l1, l2) / mu << ")";
           }
         p.message = o.str();
         return false;
@@ -188,10 +191,10 @@ namespace cdea::shooting
               return failed("ring edge: " + why);
             y[3] = *l1;
           }
-        if (!(law[ring].gent_margin(y[3], y[0] / x0) > 0.))
+        if (!(law[ring].range_margin(y[3], y[0] / x0) > 0.))
           {
             equations.fail_x = x0;
-            return failed("the Gent limit was reached (g <= 0)");
+            return failed(law[ring].limit_reached());
           }
         const double s2_in = law[ring].plain_stress(y[3], y[0] / x0).s2;
         p.s2_ring_inner.push_back(s2_in);
@@ -254,26 +257,87 @@ namespace cdea::shooting
     };
   } // namespace
 
-  // At fixed l2, g > 0 means I < 3 + Jlim, i.e. with u = l1^2
-  //   u^2 - p u + 1/l2^2 < 0,  p = 3 + Jlim - l2^2,
-  // so u lies between the roots u- u+ = 1/l2^2, u- + u+ = p.
+  ShootingLaw::ShootingLaw(std::shared_ptr<const MembraneLaw> plain_law,
+                           const MaterialConstants &film, const double voltage,
+                           const bool relaxed)
+    : plain(std::move(plain_law))
+    , relaxation(relaxed ? std::make_shared<const TensionField>(plain) : nullptr)
+    , H(film.thickness)
+    , mu(film.shear_modulus)
+    , phi(voltage)
+  {}
+
+  bool ShootingLaw::respond(const double l1, const double l2, NominalStress &s,
+                            StressTangent &t) const
+  {
+    // The relaxed law inside the plain law's range, as relaxed: also where
+    // no natural width exists (TensionState::failed; the wrinkled zone's
+    // own checks find that).
+    LawResponse r;
+    if (relaxation)
+      {
+        if (!(plain->range_margin(l1, l2) > 0.))
+          return false;
+        r = relaxation->relax({l1, l2, phi});
+      }
+    else if (!plain->evaluate({l1, l2, phi}, {}, law_stress | law_tangent, r))
+      return false;
+    s = r.stress;
+    t = r.tangent;
+    return true;
+  }
+
+  NominalStress ShootingLaw::stress(const double l1, const double l2) const
+  {
+    if (relaxation)
+      return relaxation->relax({l1, l2, phi}).stress;
+    return plain_stress(l1, l2);
+  }
+
+  double ShootingLaw::s11(const double l1, const double l2) const
+  {
+    NominalStress s{0., 0.};
+    StressTangent t{0., 0., 0.};
+    return respond(l1, l2, s, t) ? t.s11 : std::numeric_limits<double>::quiet_NaN();
+  }
+
+  NominalStress ShootingLaw::plain_stress(const double l1, const double l2) const
+  {
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    LawResponse      r;
+    return plain->evaluate({l1, l2, phi}, {}, law_stress, r) ? r.stress : NominalStress{nan, nan};
+  }
+
+  std::string ShootingLaw::limit_reached() const
+  {
+    const LawLimit limit = plain->limit();
+    return limit.name.empty() ? "the law's range was left" :
+                                limit.name + " was reached (" + limit.margin + " <= 0)";
+  }
+
+  std::string ShootingLaw::margin_text(const double l1, const double l2) const
+  {
+    const LawLimit limit = plain->limit();
+    if (limit.margin.empty())
+      return {};
+    std::ostringstream o;
+    o << ", " << limit.margin << " = " << plain->range_margin(l1, l2);
+    return o.str();
+  }
+
   std::pair<double, double> gent_lambda1_range(const double jlim, const double lambda2)
   {
-    const double q    = 1. / (lambda2 * lambda2);
-    const double p    = 3. + jlim - lambda2 * lambda2;
-    const double disc = p * p - 4. * q;
-    if (!(p > 0.) || !(disc > 0.))
-      return {0., 0.};
-    const double u_plus  = 0.5 * (p + std::sqrt(disc));
-    const double u_minus = q / u_plus;
-    return {std::sqrt(u_minus), std::sqrt(u_plus)};
+    return GentDielectricLaw::meridian_stretch_range(jlim, lambda2);
   }
 
   std::optional<double> solve_lambda1(const GentDielectric &law, const double l2,
                                       const double target, const double guess,
                                       std::string *why)
   {
-    return solve_lambda1(ShootingLaw(law, false), l2, target, guess, why);
+    return solve_lambda1(
+      ShootingLaw(std::make_shared<GentDielectricLaw>(law.constants()), law.constants(),
+                  law.voltage(), false),
+      l2, target, guess, why);
   }
 
   namespace
@@ -335,7 +399,7 @@ namespace cdea::shooting
       for (unsigned int i = 0; i <= n_check; ++i)
         {
           const double l1 = guess + (x - guess) * i / n_check;
-          if (!(law.tangent(l1, l2).s11 > 0.))
+          if (!(law.s11(l1, l2) > 0.))
             {
               std::ostringstream o;
               o << "ds1/dlambda1 <= 0 at lambda1 = " << l1 << " between the start " << guess
@@ -351,25 +415,26 @@ namespace cdea::shooting
   std::optional<double> solve_lambda1(const ShootingLaw &law, const double l2,
                                       const double target, double guess, std::string *why)
   {
-    const auto [l_lo, l_hi] = gent_lambda1_range(law.constants().jlim, l2);
-    if (!(l_lo > 0.) || !(l_hi > l_lo))
+    const auto [l_lo, l_hi] = law.meridian_stretch_range(l2);
+    if (!(l_lo >= 0.) || !(l_hi > l_lo))
       {
-        set(why, "hoop stretch beyond the Gent limit");
+        const std::string limit = law.limit().name;
+        set(why, "hoop stretch beyond " + (limit.empty() ? "the law's range" : limit));
         return std::nullopt;
       }
     if (!std::isfinite(guess) || guess <= l_lo || guess >= l_hi)
-      guess = std::sqrt(l_lo * l_hi);
+      guess = std::isfinite(l_hi) && l_lo > 0. ? std::sqrt(l_lo * l_hi) : l2;
     const auto f = [&](const double l1) { return law.stress(l1, l2).s1 - target; };
     double     lo = 0., flo = 0., hi = 0., fhi = 0.;
     if (!grow_bracket(f, guess, l_lo, l_hi, lo, flo, hi, fhi, why))
       return std::nullopt;
     // The toolbox's safeguarded Newton to rounding level (the derivative is
     // cheap here; TOMS 748 without it made shooting runs up to 10 % slower).
-    const auto df = [&](const double l1) { return law.tangent(l1, l2).s11; };
+    const auto df = [&](const double l1) { return law.s11(l1, l2); };
     BracketedRootSettings settings;
     settings.max_evaluations = 200;
     const BracketedRoot root  = find_bracketed_root_newton(f, df, lo, flo, hi, fhi, settings);
-    const double        scale = std::abs(target) + law.constants().shear_modulus;
+    const double        scale = std::abs(target) + law.shear_modulus();
     if (!(std::abs(root.f) <= 1e-9 * scale))
       {
         set(why, "the s1 equation for lambda1 did not converge");
@@ -384,8 +449,12 @@ namespace cdea::shooting
                                          const ShootingOptions &options)
     : sc(scene)
     , opts(options)
+    , plain_law(scene.law())
     , A(scene.inner_reference_radius())
   {
+    if (!plain_law->serves_every_model())
+      throw std::invalid_argument("the shooting model needs an elastic law that states its "
+                                  "range (Material/Model = " + scene.material_model + ")");
     for (const double e : scene.reference_ring_edges())
       edges.push_back(e / A);
     edges.front() = 1.;
@@ -395,8 +464,8 @@ namespace cdea::shooting
   {
     std::vector<ShootingLaw> result;
     for (unsigned int k = 0; k < sc.n_rings(); ++k)
-      result.emplace_back(
-        GentDielectric(sc.material, load.voltages.empty() ? 0. : load.voltages[k]), opts.relaxed);
+      result.emplace_back(plain_law, sc.material, load.voltages.empty() ? 0. : load.voltages[k],
+                          opts.relaxed);
     return result;
   }
 
@@ -415,7 +484,7 @@ namespace cdea::shooting
   double MeridianIntegrator::equibiaxial_stress(const double stretch,
                                                 const double voltage) const
   {
-    return GentDielectric(sc.material, voltage).stress(stretch, stretch).s1;
+    return ShootingLaw(plain_law, sc.material, voltage, false).stress(stretch, stretch).s1;
   }
 
   std::optional<double>
@@ -436,8 +505,7 @@ namespace cdea::shooting
     // 2 pi A H s1 sin(theta0) = F.
     const double target =
       load.force / (2. * pi * A * sc.material.thickness * std::sin(theta0));
-    const ShootingLaw law(GentDielectric(sc.material,
-                                         load.voltages.empty() ? 0. : load.voltages[0]),
+    const ShootingLaw law(plain_law, sc.material, load.voltages.empty() ? 0. : load.voltages[0],
                           opts.relaxed);
     std::string       reason;
     const auto l1 = solve_lambda1(law, load.stretch, target,
@@ -521,9 +589,10 @@ namespace cdea::shooting
           return p;
         }
     const double lam = load.stretch;
-    if (!(law.front().gent_margin(lam, lam) > 0.))
+    if (!(law.front().range_margin(lam, lam) > 0.))
       {
-        p.message = "the pre-stretch is beyond the Gent limit";
+        const std::string limit = plain_law->limit().name;
+        p.message = "the pre-stretch is beyond " + (limit.empty() ? "the law's range" : limit);
         return p;
       }
     const double s = law.front().stress(lam, lam).s1;

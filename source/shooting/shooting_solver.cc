@@ -105,8 +105,7 @@ namespace cdea::shooting
         return sol;
       }
     const ShootingOptions &o     = integrator.options();
-    const auto             range = gent_lambda1_range(integrator.scene().material.jlim,
-                                                      load.stretch);
+    const auto             range = integrator.law().meridian_stretch_range(load.stretch);
     const double guess = lambda1_guess > 0. ? lambda1_guess : load.stretch;
     RootOptions  ro;
     ro.residual_tolerance = o.root_tolerance;

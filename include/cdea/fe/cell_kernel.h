@@ -39,20 +39,23 @@ namespace cdea
 
   /// The parameters of dR/dp (assemble_parameter_derivatives), in this
   /// order: the voltage of each ring (V), shear modulus (Pa), Jlim,
-  /// permittivity (F/m), the dead load F (N), then the shape parameters: a
-  /// scale s of every reference radius (taken at s = 1) and the reference
-  /// radius R_k (m) of each interior ring edge k = 1 .. n_rings - 1.
+  /// permittivity (F/m), the law's own constants (MembraneLaw::own_constants(),
+  /// in their entries' units), the dead load F (N), then the shape
+  /// parameters: a scale s of every reference radius (taken at s = 1) and
+  /// the reference radius R_k (m) of each interior ring edge k = 1 .. n_rings - 1.
   struct ParameterLayout
   {
-    unsigned int n_rings = 1;
-    unsigned int size() const { return 2 * n_rings + 4; }
+    unsigned int n_rings         = 1;
+    unsigned int n_law_constants = 0; ///< the law's own constants
+    unsigned int size() const { return 2 * n_rings + 4 + n_law_constants; }
     unsigned int voltage(unsigned int ring) const { return ring; }
     unsigned int shear_modulus() const { return n_rings; }
     unsigned int jlim() const { return n_rings + 1; }
     unsigned int permittivity() const { return n_rings + 2; }
-    unsigned int dead_load() const { return n_rings + 3; }
-    unsigned int mesh_scale() const { return n_rings + 4; }
-    unsigned int ring_edge(unsigned int edge) const { return n_rings + 4 + edge; }
+    unsigned int law_constant(unsigned int k) const { return n_rings + 3 + k; }
+    unsigned int dead_load() const { return n_rings + 3 + n_law_constants; }
+    unsigned int mesh_scale() const { return n_rings + 4 + n_law_constants; }
+    unsigned int ring_edge(unsigned int edge) const { return mesh_scale() + edge; }
     /// The first shape parameter: those from here on move the cells.
     unsigned int first_shape_parameter() const { return mesh_scale(); }
   };
@@ -191,6 +194,8 @@ namespace cdea
     std::string reject_state(const AssembledSystem &system) const;
 
     const ParameterLayout &parameters() const { return layout; }
+    /// The number of the law's own constants among the parameters.
+    void set_law_constants(unsigned int n);
 
     /// How cell @p cell moves with parameter @p parameter of the layout
     /// (zero for the non-shape parameters). The cells of a ring keep their

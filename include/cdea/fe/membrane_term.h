@@ -15,21 +15,25 @@
 #include <cdea/fe/cell_kernel.h>
 #include <cdea/material/membrane_law.h>
 
-#include <array>
 #include <memory>
 #include <utility>
 #include <vector>
 
 namespace cdea
 {
-  /// The law's parameters at a point of @p ring and their columns in @p layout.
-  inline std::array<std::pair<LawParameter, unsigned int>, 4>
+  /// The law's parameters at a point of @p ring and their columns in @p
+  /// layout: the voltage, the film's constants, then the law's own.
+  inline std::vector<std::pair<LawParameter, unsigned int>>
   law_parameter_columns(const ParameterLayout &layout, const unsigned int ring)
   {
-    return {{{LawParameter::voltage, layout.voltage(ring)},
-             {LawParameter::shear_modulus, layout.shear_modulus()},
-             {LawParameter::jlim, layout.jlim()},
-             {LawParameter::permittivity, layout.permittivity()}}};
+    std::vector<std::pair<LawParameter, unsigned int>> columns{
+      {LawParameter::voltage, layout.voltage(ring)},
+      {LawParameter::shear_modulus, layout.shear_modulus()},
+      {LawParameter::jlim, layout.jlim()},
+      {LawParameter::permittivity, layout.permittivity()}};
+    for (unsigned int k = 0; k < layout.n_law_constants; ++k)
+      columns.emplace_back(own_constant(k), layout.law_constant(k));
+    return columns;
   }
 
   class MembraneTerm final : public CellTerm

@@ -10,10 +10,12 @@
 // voltages, the material constants and the dead load directly, the ring edges
 // and the pre-stretch as shape derivatives (the cells move with the edges,
 // the nodal values stay). The parameters are those of the Scene, in its units:
-// voltages in V, mu in Pa, Jlim, eps in F/m, mass in kg, lam_pre, and an
+// voltages in V, mu in Pa, Jlim, eps in F/m, mass in kg, lam_pre, an
 // interior ring edge k as r_v/a on the pre-stretched flat film, R_k =
-// (r_v/a) a / lam_pre. Changing lam_pre moves every reference radius
-// (A = a/lam_pre, B = b/lam_pre, R_k), while r(A) = a and r(B) = b stay.
+// (r_v/a) a / lam_pre, and a constant of the scene's law's own
+// (MembraneLaw::own_constants()) by its entry, in the entry's units.
+// Changing lam_pre moves every reference radius (A = a/lam_pre, B = b/lam_pre,
+// R_k), while r(A) = a and r(B) = b stay.
 //
 // Outputs: the displacement, the enclosed volume, and at every quadrature
 // point and at each ring's inner edge (that ring's side) the hoop stress s2
@@ -27,6 +29,7 @@
 #include <Eigen/Core>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cdea
@@ -41,15 +44,26 @@ namespace cdea
     permittivity,
     mass,
     prestretch,
-    ring_edge
+    ring_edge,
+    law_constant ///< one of the law's own constants, by its entry
   };
 
   /// One parameter of a scene.
   struct SceneParameter
   {
+    SceneParameter() = default;
+    SceneParameter(ParameterKind kind, unsigned int index = 0, std::string entry = {})
+      : kind(kind)
+      , index(index)
+      , entry(std::move(entry))
+    {}
+
     ParameterKind kind  = ParameterKind::voltage;
     unsigned int  index = 0; ///< the ring of a voltage (from 0), the edge k (from 1) of a ring edge
-    /// "voltage of ring 1 (V)", "shear modulus (Pa)", "ring edge 1 (r/a)", ...
+    /// A law constant's entry of subsection Material ("Mooney-Rivlin C2 (kPa)").
+    std::string entry;
+    /// "voltage of ring 1 (V)", "shear modulus (Pa)", "ring edge 1 (r/a)",
+    /// a law constant's entry, ...
     std::string name() const;
   };
 

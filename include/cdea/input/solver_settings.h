@@ -39,9 +39,6 @@ namespace cdea
   /// Cross-section width x depth of the pump's level tube (m^2).
   double tube_area(const Parameters &p);
 
-  /// The material law of the FE model: the registered law Material/Model
-  /// names, network A the film of @p scene.
-  std::shared_ptr<const MembraneLaw> material_law(const Parameters &p, const Scene &scene);
 
   /// The time stepper's settings (waveform from the last waypoint or the table).
   TimeSettings time_settings(const Parameters &p, const Scene &scene);

@@ -49,15 +49,20 @@ namespace cdea
   void require_load_term_support(const Parameters &p, unsigned int support,
                                  const std::string &command, const std::string &why);
 
+  /// Whether the law of Material/Model serves the shooting model and the
+  /// design studies (MembraneLaw::serves_every_model(): the elastic laws of
+  /// the library, not the viscoelastic one).
+  bool serves_every_model(const Parameters &p);
+
   /// Refuses the options only the FE model has (load terms without
   /// supports_shooting, such as the water load; the relaxed law; a
-  /// Material/Model other than the film's Gent law) and time runs for the
+  /// Material/Model that does not serve every model) and time runs for the
   /// command @p command ("shoot", "compare"): throws InputError.
   void require_shooting_options(const Parameters &p, const std::string &command);
 
-  /// The design studies build their models with the film's Gent law (the
-  /// default Material/Model): throws InputError "Material/Model = NAME is not
-  /// supported by cdea COMMAND: WHY (use elastic)" for any other law.
+  /// The design studies build their models with an elastic law that serves
+  /// every model: throws InputError "Material/Model = NAME is not supported
+  /// by cdea COMMAND: WHY (use elastic)" for any other law.
   void require_film_law(const Parameters &p, const std::string &command, const std::string &why);
 
   /// The design commands (@p command: "optimize", "fit") work on the

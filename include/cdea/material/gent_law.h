@@ -29,6 +29,18 @@ namespace cdea
                                 NominalStress &d_stress) const override;
     double max_hoop_stretch(double l1) const override;
 
+    bool   serves_every_model() const override { return true; }
+    double range_margin(double l1, double l2) const override;
+    std::pair<double, double> meridian_stretch_range(double l2) const override
+    {
+      return meridian_stretch_range(c.jlim, l2);
+    }
+    LawLimit limit() const override { return {"the Gent limit", "g"}; }
+
+    /// The open interval of l1 inside the Gent limit I1 - 3 < @p jlim at
+    /// hoop stretch @p l2 (first <= 0 if there is none).
+    static std::pair<double, double> meridian_stretch_range(double jlim, double l2);
+
     const MaterialConstants &constants() const { return c; }
 
   private:

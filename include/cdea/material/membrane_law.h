@@ -18,8 +18,10 @@
 
 #include <cdea/material/gent_dielectric.h>
 
+#include <limits>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cdea
@@ -78,13 +80,47 @@ namespace cdea
     bool          loses_ellipticity = false;
   };
 
-  /// The material constants a law depends on, for parameter derivatives.
+  /// The material constants a law depends on, for parameter derivatives:
+  /// the film's (Material/Shear modulus, Jlim, Permittivity, SI units), the
+  /// voltage, and after them the law's own constants (own_constant(k), in the
+  /// units of their entries).
   enum class LawParameter : int
   {
     shear_modulus = 0,
     jlim          = 1,
     permittivity  = 2,
     voltage       = 3
+  };
+
+  /// The law's own constant k (MembraneLaw::own_constants()[k]) as a parameter.
+  constexpr LawParameter own_constant(const unsigned int k)
+  {
+    return static_cast<LawParameter>(int(LawParameter::voltage) + 1 + int(k));
+  }
+
+  /// Whether @p p is one of a law's own constants, and which (-1: none).
+  constexpr int own_constant_index(const LawParameter p)
+  {
+    return int(p) > int(LawParameter::voltage) ? int(p) - int(LawParameter::voltage) - 1 : -1;
+  }
+
+  /// One of a law's own constants (beyond the film's shear modulus, Jlim and
+  /// permittivity): its entry of subsection Material and the interval, in the
+  /// entry's units, that a fit keeps it in (the law's own checks, run when it
+  /// is built, may ask more: Ogden's mu_p alpha_p > 0).
+  struct LawConstant
+  {
+    std::string entry; ///< "Mooney-Rivlin C2 (kPa)"
+    double      lower = -std::numeric_limits<double>::infinity();
+    double      upper = std::numeric_limits<double>::infinity();
+  };
+
+  /// The limit of a law's range as messages name it ("the Gent limit") and
+  /// the symbol of its margin ("g"); empty for a law without one.
+  struct LawLimit
+  {
+    std::string name;
+    std::string margin;
   };
 
   /// The value an internal variable has at a point held long enough at its
@@ -159,8 +195,48 @@ namespace cdea
     }
 
     /// Largest hoop stretch inside the law's range at meridian stretch l1
-    /// (a relaxation searches the natural width below it).
+    /// (a relaxation searches the natural width below it; infinity for a
+    /// law without a limit).
     virtual double max_hoop_stretch(double l1) const = 0;
+
+    /// Whether the shooting model and the design studies (sweep, optimize,
+    /// fit) can use the law: it is elastic, states its range below and gives
+    /// parameter_derivative() for every constant it depends on. A law that
+    /// gives only evaluate() and max_hoop_stretch() serves the FE model's
+    /// runs, and the others refuse it by name.
+    virtual bool serves_every_model() const { return false; }
+
+    /// How far (l1, l2) lies inside the law's range: positive inside, <= 0
+    /// outside (the Gent law: g = 1 - (I1 - 3) / Jlim); 1 without a limit.
+    virtual double range_margin(double l1, double l2) const
+    {
+      (void)l1;
+      (void)l2;
+      return 1.;
+    }
+
+    /// The open interval of l1 where range_margin(l1, l2) > 0 at hoop
+    /// stretch @p l2 ((0, infinity) without a limit; first >= second if none).
+    virtual std::pair<double, double> meridian_stretch_range(double l2) const
+    {
+      (void)l2;
+      return {0., std::numeric_limits<double>::infinity()};
+    }
+
+    /// The limit of the range as messages name it (empty: none).
+    virtual LawLimit limit() const { return {}; }
+
+    /// The law's own constants, in the order of own_constant(k): what
+    /// parameter_derivative() differentiates beyond the film's constants.
+    virtual std::vector<LawConstant> own_constants() const { return {}; }
+
+    /// Whether the law depends on the film's constant @p p (the Gent limit
+    /// Jlim only matters to Gent-type laws).
+    virtual bool depends_on(LawParameter p) const
+    {
+      (void)p;
+      return true;
+    }
 
     /// Energy dissipated per reference volume over @p step (old to current
     /// internal variables in dt), for energy budgets; 0 for an elastic law.

@@ -47,6 +47,16 @@ namespace cdea
 
     double max_hoop_stretch(double l1) const override { return law->max_hoop_stretch(l1); }
 
+    // The base law's range and constants.
+    double range_margin(double l1, double l2) const override { return law->range_margin(l1, l2); }
+    std::pair<double, double> meridian_stretch_range(double l2) const override
+    {
+      return law->meridian_stretch_range(l2);
+    }
+    LawLimit                 limit() const override { return law->limit(); }
+    std::vector<LawConstant> own_constants() const override { return law->own_constants(); }
+    bool depends_on(LawParameter p) const override { return law->depends_on(p); }
+
     /// The relaxed response at (l1, l2) with every quantity (energy, stress,
     /// tangent, state, natural width), whatever the outcome.
     LawResponse relax(const LawInput &input) const;

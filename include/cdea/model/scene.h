@@ -7,8 +7,11 @@
 // in the undeformed film, and ring edge r_v sits at R_v = r_v/lam_pre.
 
 #include <cdea/material/gent_dielectric.h>
+#include <cdea/material/law_factory.h>
 #include <cdea/model/voltage_path.h>
 
+#include <map>
+#include <string>
 #include <vector>
 
 namespace cdea
@@ -19,6 +22,13 @@ namespace cdea
     double            frame_radius = 42e-3; ///< b (m)
     double            prestretch   = 2.5;   ///< lam_pre (-)
     MaterialConstants material{25.1e3, 270., 3.98e-11, 1e-3};
+    /// The law of Material/Model (law_factory.h): its registered name and
+    /// the entries the laws declare in subsection Material, in the parameter
+    /// file's units (the one exception to SI here); `material` holds the
+    /// film's constants. Every model of the scene (FE, shooting, the
+    /// studies' models) builds this law.
+    std::string                   material_model = LawSettings().model;
+    std::map<std::string, double> law_constants;
     double            mass    = 0.28; ///< kg
     double            gravity = 9.81; ///< m/s^2
     /// n+1 increasing ring edges r/a for n rings; first 1, last b/a.
@@ -34,6 +44,11 @@ namespace cdea
     /// Index of the ring that holds reference radius R (edges belong to the
     /// ring outside them, the last edge to the last ring).
     unsigned int ring_of(double R) const;
+    /// The settings of the scene's law (material_model, material, law_constants).
+    LawSettings law_settings() const;
+    /// The scene's law, built from law_settings() (InputError if a constant
+    /// is outside the law's range).
+    std::shared_ptr<const MembraneLaw> law() const;
   };
 
   /// The paper's actuator (the defaults above) with the given ring edges

@@ -18,6 +18,13 @@
 // Without a dead load (F = 0) the film stays flat: theta = 0, z = 0, and the
 // unknown at R = A is l1 itself (in-plane problem). Internally the radii are
 // scaled by A, so the error control sees numbers of order one.
+//
+// The law is the scene's (any elastic MembraneLaw that serves every model,
+// Scene::law()); the integration asks it for the stresses and the tangent at
+// once, refuses states outside its range (MembraneLaw::range_margin, named by
+// its limit()) and where ds1/dl1 <= 0 (loss of ellipticity of the membrane
+// in the meridian direction, pull-in), and solves for l1 inside the range of
+// l1 that the law states at the hoop stretch (meridian_stretch_range()).
 
 #include <cdea/material/gent_law.h>
 #include <cdea/material/gent_dielectric.h>
@@ -65,58 +72,55 @@ namespace cdea::shooting
     StepFields samples;
   };
 
-  /// Solve s1(l1, l2) = target for l1 under @p law, starting from @p guess:
-  /// a bracket is grown around the guess inside the Gent domain (where s1 runs
-  /// from -inf to +inf), then safeguarded Newton. The root must have
-  /// ds1/dl1 > 0; otherwise, or without a bracket, nullopt and @p why is set.
-  /// The law the integrator uses at a point: the plain Gent dielectric, or its
-  /// tension-field relaxation. The plain hoop stress stays available: it
-  /// defines the loss of tension in both cases.
+  /// The law the integrator uses at a point of a ring: the scene's elastic
+  /// law at the ring's voltage, plain or relaxed (its tension field). The
+  /// plain hoop stress stays available: it defines the loss of tension in
+  /// both cases.
   class ShootingLaw
   {
   public:
-    ShootingLaw(const GentDielectric &law, const bool relaxed)
-      : plain(law)
-      , relaxed(relaxed)
+    /// @p plain elastic; @p film: the film's thickness (the field) and
+    /// shear modulus (the scale of the stresses).
+    ShootingLaw(std::shared_ptr<const MembraneLaw> plain, const MaterialConstants &film,
+                double voltage, bool relaxed);
+
+    /// Stresses and tangent of the law (relaxed if asked) at once; false
+    /// outside its range.
+    bool respond(double l1, double l2, NominalStress &s, StressTangent &t) const;
+    /// The stresses (NaN outside the range).
+    NominalStress stress(double l1, double l2) const;
+    /// ds1/dl1 (NaN outside the range).
+    double        s11(double l1, double l2) const;
+    NominalStress plain_stress(double l1, double l2) const;
+    double        range_margin(double l1, double l2) const
     {
-      if (relaxed)
-        relaxation = std::make_shared<const TensionField>(
-          std::make_shared<const GentDielectricLaw>(law.constants()));
+      return plain->range_margin(l1, l2);
     }
-    NominalStress stress(const double l1, const double l2) const
+    /// The open interval of l1 inside the law's range at hoop stretch l2.
+    std::pair<double, double> meridian_stretch_range(double l2) const
     {
-      return relaxed ? relax(l1, l2).stress : plain.stress(l1, l2);
+      return plain->meridian_stretch_range(l2);
     }
-    StressTangent tangent(const double l1, const double l2) const
-    {
-      return relaxed ? relax(l1, l2).tangent : plain.tangent(l1, l2);
-    }
-    NominalStress plain_stress(const double l1, const double l2) const
-    {
-      return plain.stress(l1, l2);
-    }
-    double gent_margin(const double l1, const double l2) const
-    {
-      return plain.gent_margin(l1, l2);
-    }
-    double electric_field(const double l1, const double l2) const
-    {
-      return plain.electric_field(l1, l2);
-    }
-    double                   voltage() const { return plain.voltage(); }
-    const MaterialConstants &constants() const { return plain.constants(); }
+    LawLimit limit() const { return plain->limit(); }
+    /// "the Gent limit was reached (g <= 0)", or the like for the law.
+    std::string limit_reached() const;
+    /// What the diagnostics print of the margin: ", g = 0.93" (empty without a limit).
+    std::string margin_text(double l1, double l2) const;
+    double      electric_field(double l1, double l2) const { return phi * l1 * l2 / H; }
+    double      voltage() const { return phi; }
+    double      shear_modulus() const { return mu; }
 
   private:
-    GentDielectric                      plain;
-    std::shared_ptr<const TensionField> relaxation;
-    bool                                relaxed;
-
-    LawResponse relax(const double l1, const double l2) const
-    {
-      return relaxation->relax({l1, l2, plain.voltage()});
-    }
+    std::shared_ptr<const MembraneLaw>  plain;
+    std::shared_ptr<const TensionField> relaxation; ///< null: plain
+    double                              H, mu, phi;
   };
 
+  /// Solve s1(l1, l2) = target for l1 under @p law, starting from @p guess:
+  /// a bracket is grown around the guess inside the law's range of l1 (where
+  /// s1 runs from -inf to +inf for the Gent law), then safeguarded Newton.
+  /// The root must have ds1/dl1 > 0 on the way from the guess; otherwise,
+  /// or without a bracket, nullopt and @p why is set.
   std::optional<double> solve_lambda1(const ShootingLaw &law, double lambda2, double target,
                                       double guess, std::string *why = nullptr);
 
@@ -156,10 +160,13 @@ namespace cdea::shooting
 
     const Scene           &scene() const { return sc; }
     const ShootingOptions &options() const { return opts; }
+    /// The scene's law (plain).
+    const MembraneLaw &law() const { return *plain_law; }
 
   private:
-    Scene               sc;
-    ShootingOptions     opts;
+    Scene                              sc;
+    ShootingOptions                    opts;
+    std::shared_ptr<const MembraneLaw> plain_law;
     double              A;     ///< inner reference radius (m): the length unit
     std::vector<double> edges; ///< ring edges R_v / A, n+1 values from 1 to B/A
 
