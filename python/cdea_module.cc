@@ -239,6 +239,11 @@ namespace
            run_attributes(run, record.result.onset, record.result.limit_points,
                           record.result.breakdown, record.n_rings))
         attributes[a.name.c_str()] = attribute_value(a);
+      if (record.time_run && !record.steps.empty() && !std::isnan(record.result.error_estimate))
+        for (const SummaryAttribute &a : time_integration_attributes(record.result.time_steps,
+                                                                     record.result.rejected_steps,
+                                                                     record.result.error_estimate))
+          attributes[a.name.c_str()] = attribute_value(a);
       return attributes;
     }
 

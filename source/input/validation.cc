@@ -238,6 +238,15 @@ namespace cdea
       if (!(t.fields_interval_s >= 0.))
         throw InputError("Time/Fields interval (s) must be zero or positive, got " +
                          format_number(t.fields_interval_s));
+      if (!(t.relative_tolerance >= 1e-14 && t.relative_tolerance <= 0.1))
+        throw InputError("Time/Relative tolerance must be between 1e-14 and 0.1, got " +
+                         format_number(t.relative_tolerance));
+      if (!(t.absolute_tolerance_mm >= 0. && t.absolute_tolerance_mm <= 1e3))
+        throw InputError("Time/Absolute tolerance (mm) must be between 0 and 1000, got " +
+                         format_number(t.absolute_tolerance_mm));
+      if (!(t.internal_tolerance >= 0. && t.internal_tolerance <= 1.))
+        throw InputError("Time/Internal variable tolerance must be between 0 and 1, got " +
+                         format_number(t.internal_tolerance));
     }
 
     /// How long the waveform lasts (s), its entries checked; @p entries

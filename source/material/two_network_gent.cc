@@ -231,6 +231,25 @@ namespace cdea
                      std::log(step.current[1] / step.old[1]));
     return de.dot(mobility_inverse(b.shear_modulus * b.relaxation_time) * de) / step.dt;
   }
+  void TwoNetworkGentLaw::evolving_state(const double *stored, double *y, double *rate) const
+  {
+    y[0]    = std::log(stored[0]);
+    y[1]    = std::log(stored[1]);
+    rate[0] = stored[2];
+    rate[1] = stored[3];
+  }
+
+  void TwoNetworkGentLaw::set_evolving_state(const double *y, double *stored) const
+  {
+    stored[0] = std::exp(y[0]);
+    stored[1] = std::exp(y[1]);
+  }
+
+  double TwoNetworkGentLaw::dissipation_rate(const double *stored) const
+  {
+    const Vector2 q(stored[2], stored[3]);
+    return q.dot(mobility_inverse(b.shear_modulus * b.relaxation_time) * q);
+  }
 } // namespace cdea
 
 namespace

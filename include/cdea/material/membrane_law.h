@@ -164,6 +164,36 @@ namespace cdea
       return 0.;
     }
 
+    // The evolving internal variables, for Runge-Kutta stages and their
+    // error estimates. A law whose
+    // internal variables follow a rate equation dy/dt = f(l, y) names y (say,
+    // the log viscous stretches) and keeps the rate of the last evaluate()
+    // among its stored numbers; evaluate() with InternalStep{old, current, dt,
+    // backward_euler} then solves y = y_old + dt f(l, y) (any stage of a
+    // diagonally implicit method is such a step from a shifted start).
+
+    /// Evolving variables per point (0: none, as for an elastic law).
+    virtual unsigned int n_evolving() const { return 0; }
+    /// y and its rate dy/dt from the @p stored numbers of a point.
+    virtual void evolving_state(const double *stored, double *y, double *rate) const
+    {
+      (void)stored;
+      (void)y;
+      (void)rate;
+    }
+    /// The stored numbers of a point with y replaced by @p y (the rest kept).
+    virtual void set_evolving_state(const double *y, double *stored) const
+    {
+      (void)y;
+      (void)stored;
+    }
+    /// Dissipation rate per reference volume (W/m^3) of a point's stored state.
+    virtual double dissipation_rate(const double *stored) const
+    {
+      (void)stored;
+      return 0.;
+    }
+
   private:
     std::vector<InternalVariable> internal;
   };
