@@ -134,6 +134,7 @@ namespace cdea
       }
     validate_ranges(parameters, parameters.scene()); // now, before anything is written
     validate_time(parameters);
+    validate_dynamics(parameters);
     parameters.input_warnings = duplicate_warnings(input);
     if (text)
       {

@@ -315,6 +315,7 @@ namespace cdea
     parameters::Output::declare(prm);
     parameters::ViscousMaterial::declare(prm);
     parameters::Time::declare(prm);
+    parameters::Response::declare(prm);
   }
 
   void Parameters::parse(ParameterHandler &prm)
@@ -334,6 +335,7 @@ namespace cdea
     output.parse(prm);
     viscous_material.parse(prm);
     time.parse(prm);
+    response.parse(prm);
   }
 
   std::string to_string(const Continuation choice)

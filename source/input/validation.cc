@@ -336,6 +336,19 @@ namespace cdea
                        "; shorten the run or raise the time step");
   }
 
+  void validate_dynamics(const Parameters &p)
+  {
+    const auto &r = p.response;
+    require_positive(r.lowest_frequency_Hz, "Response/Lowest frequency (Hz)");
+    if (!(r.highest_frequency_Hz > r.lowest_frequency_Hz && r.highest_frequency_Hz <= 1e9))
+      throw InputError("Response/Highest frequency (Hz) must be above Response/Lowest frequency "
+                       "(Hz) (" + format_number(r.lowest_frequency_Hz) + ") and at most 1e9, got " +
+                       format_number(r.highest_frequency_Hz));
+    if (!(r.membrane_density >= 0. && r.membrane_density <= 1e5))
+      throw InputError("Response/Membrane density (kg/m^3) must be between 0 and 1e5, got " +
+                       format_number(r.membrane_density));
+  }
+
   void validate_reservoir(const Parameters &p)
   {
     const auto &r = p.reservoir;

@@ -128,6 +128,7 @@ namespace cdea
   private:
     /// Sensitivities use the tangent of the converged state (fe/sensitivities.h).
     friend class StateSensitivity;
+    friend class LinearizedDynamics;
     class Impl;
     class Continuation;
     std::unique_ptr<Impl>                impl;

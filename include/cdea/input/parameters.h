@@ -11,6 +11,7 @@
 
 #include <cdea/base/text.h>
 #include <cdea/input/parameters_design.h>
+#include <cdea/input/parameters_dynamics.h>
 #include <cdea/input/parameters_time.h>
 #include <cdea/model/scene.h>
 #include <cdea/numerics/tangent_solver.h>
@@ -169,6 +170,7 @@ namespace cdea
     parameters::Output         output;
     parameters::ViscousMaterial viscous_material; ///< parameters_time.h
     parameters::Time            time;             ///< parameters_time.h
+    parameters::Response        response;         ///< parameters_dynamics.h
 
     static void declare(dealii::ParameterHandler &prm);
     void        parse(dealii::ParameterHandler &prm);

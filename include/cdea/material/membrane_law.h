@@ -107,6 +107,18 @@ namespace cdea
     bool         written = true; ///< a /steps field (false: state only, e.g. a rate)
   };
 
+  /// The law linearized at a point whose evolving internal variables y
+  /// (n_evolving() of them, MembraneLaw::evolving_state()) are held:
+  ///   ds = instantaneous dl + stress_y dy,   d(rate) = rate_y dy + rate_l dl,
+  /// with the rate dy/dt of the law's evolution equation. Matrices are row
+  /// major: stress_y 2 x n, rate_y n x n, rate_l n x 2.
+  struct InternalLinearization
+  {
+    StressTangent       instantaneous{0., 0., 0.}; ///< d(stress)/d(stretches), y held
+    unsigned int        n = 0;                     ///< evolving variables
+    std::vector<double> stress_y, rate_y, rate_l;
+  };
+
   class MembraneLaw
   {
   public:
@@ -164,8 +176,8 @@ namespace cdea
       return 0.;
     }
 
-    // The evolving internal variables, for Runge-Kutta stages and their
-    // error estimates. A law whose
+    // The evolving internal variables, for Runge-Kutta stages, error
+    // estimates and the small-signal response. A law whose
     // internal variables follow a rate equation dy/dt = f(l, y) names y (say,
     // the log viscous stretches) and keeps the rate of the last evaluate()
     // among its stored numbers; evaluate() with InternalStep{old, current, dt,
@@ -193,6 +205,11 @@ namespace cdea
       (void)stored;
       return 0.;
     }
+    /// The linearization at @p input with the @p stored internal variables held
+    /// (InternalLinearization); false outside the law's range. The default:
+    /// the tangent with the internal variables held, no evolving variables.
+    virtual bool linearize(const LawInput &input, const double *stored,
+                           InternalLinearization &out) const;
 
   private:
     std::vector<InternalVariable> internal;
