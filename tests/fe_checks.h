@@ -2,6 +2,7 @@
 // Finite-difference checks of the FE model shared by the test programs.
 
 #include <cdea/fe/membrane_model.h>
+#include <cdea/numerics/esdirk.h>
 
 #include "check.h"
 
@@ -12,6 +13,14 @@
 
 namespace cdea_test
 {
+  /// The fixed-step scheme of earlier versions whose dashpots use @p scheme
+  /// (tests that pin a time run to those steps select it explicitly).
+  inline cdea::TimeMethod legacy_method(const cdea::TimeScheme scheme)
+  {
+    return scheme == cdea::TimeScheme::trapezoidal ? cdea::TimeMethod::trapezoidal :
+                                                     cdea::TimeMethod::backward_euler;
+  }
+
   inline cdea::FeDiscretization discretization(const unsigned int degree,
                                                const unsigned int elements,
                                                const unsigned int refinements = 0,

@@ -30,6 +30,7 @@
 using namespace cdea;
 using cdea_test::check;
 using cdea_test::check_close;
+using cdea_test::legacy_method;
 
 namespace
 {
@@ -54,7 +55,7 @@ namespace
     TimeSettings s;
     s.waveform = Waveform::sine(scene.path.voltages(1.), 0.5, 2);
     s.max_step = dt;
-    s.scheme   = scheme;
+    s.method   = legacy_method(scheme);
     TimeStepper stepper(scene, model, SteppingSettings(), s);
     EnergyRun   e;
     double      previous = 0.;
@@ -120,6 +121,7 @@ int main()
     TimeSettings  s;
     s.waveform = Waveform::ramp_hold(scene.path.voltages(1.), 2., 3.);
     s.max_step = 1e-3;
+    s.method   = TimeMethod::backward_euler; // the fixed steps of earlier versions
     TimeStepper         stepper(scene, model, SteppingSettings(), s);
     std::vector<double> crossings;
     double              t0 = 0., u0 = 0., amplitude = 0.;

@@ -38,6 +38,7 @@
 using namespace cdea;
 using cdea_test::check;
 using cdea_test::check_close;
+using cdea_test::legacy_method;
 
 namespace
 {
@@ -64,7 +65,7 @@ namespace
     TimeSettings s;
     s.waveform  = Waveform::ramp_hold(scene.path.voltages(1.), ramp, hold);
     s.max_step  = dt;
-    s.scheme    = scheme;
+    s.method    = legacy_method(scheme);
     s.inertia   = inertia;
     s.rest_time = rest_time;
     TimeStepper     stepper(scene, *model, SteppingSettings(), s);
@@ -113,6 +114,7 @@ int main()
     TimeSettings s;
     s.waveform = Waveform::ramp_hold(scene.path.voltages(1.), 1., 300.);
     s.max_step = 0.2;
+    s.method   = TimeMethod::backward_euler; // the fixed steps of earlier versions
     s.inertia  = false;
     TimeStepper stepper(scene, *relaxed_model, SteppingSettings(), s);
     check(stepper.run().completed, "long hold completes");
@@ -147,6 +149,7 @@ int main()
     TimeSettings s;
     s.waveform = Waveform::ramp_hold(scene.path.voltages(1.), 1., 1.);
     s.max_step = 0.05;
+    s.method   = TimeMethod::backward_euler; // the fixed steps of earlier versions
     s.inertia  = false;
     TimeStepper stepper(scene, *model, SteppingSettings(), s);
     StepSummary last;

@@ -2,6 +2,7 @@
 #include <cdea/output/results_file.h>
 
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -62,6 +63,10 @@ namespace cdea
       write_summary_attributes(file,
                                limit_point_attributes(record.result.limit_points, record.n_rings));
     write_summary_attributes(file, breakdown_attributes(record.result.breakdown));
+    if (record.time_run && !record.steps.empty() && !std::isnan(record.result.error_estimate))
+      write_summary_attributes(file, time_integration_attributes(record.result.time_steps,
+                                                                 record.result.rejected_steps,
+                                                                 record.result.error_estimate));
     const ResultsFile::Finish done = file.finish(run_status(record.result, record.steps.size()));
     if (!done.written || done.steps_written != record.steps.size())
       {

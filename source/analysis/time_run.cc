@@ -18,6 +18,24 @@ namespace cdea
 {
   namespace
   {
+    /// How the steps were sized: the fixed-step schemes take fixed steps.
+    TimeStepControl step_control_of(const TimeSettings &settings)
+    {
+      return esdirk_tableau(settings.method) ? settings.control : TimeStepControl::fixed;
+    }
+
+    /// "ESDIRK3, error control at relative 1e-06", "ESDIRK4, fixed steps" or
+    /// the fixed-step scheme's name as before ("backward Euler").
+    std::string scheme_description(const TimeSettings &settings)
+    {
+      std::string d = to_string(settings.method);
+      if (!esdirk_tableau(settings.method))
+        return d;
+      if (step_control_of(settings) == TimeStepControl::fixed)
+        return d + ", fixed steps";
+      return d + ", error control at relative " + format_number(settings.relative_tolerance, 3);
+    }
+
     /// A postprocessor's column of @p s in the file's unit (NaN if absent).
     double column(const StepSummary &s, const OutputField &c) { return s.columns.in_file_units(c); }
 
@@ -69,6 +87,10 @@ namespace cdea
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         print_final_state(result, seconds);
         report_a_drive_that_never_rose();
+        if (output->file().n_steps() > 0 && !std::isnan(result.error_estimate))
+          write_summary_attributes(output->file(),
+                                   time_integration_attributes(result.time_steps, result.rejected_steps,
+                                                               result.error_estimate));
         return output->finish(result);
       }
 
@@ -105,8 +127,9 @@ namespace cdea
                   << "Time: " << to_string(p.time.waveform) << " waveform, peak "
                   << format_kV(settings.waveform.peak()) << " over "
                   << format_number(settings.waveform.end_time()) << " s, steps up to "
-                  << format_number(settings.max_step) << " s (" << to_string(settings.scheme)
-                  << "), material " << p.material_law.model
+                  << format_number(TimeStepper::largest_step(settings)) << " s ("
+                  << scheme_description(settings) << "), material "
+                  << p.material_law.model
                   << (settings.inertia ? ", disk inertia" : ", no inertia")
                   << (settings.water_density > 0. ? " and water column" : "") << '\n'
                   << "writing " << path << '\n';
@@ -185,10 +208,29 @@ namespace cdea
                   << "  disk's natural frequency sqrt(k/m) / 2 pi: "
                   << number_or_dash(frequency_start, 4) << " Hz at the start, "
                   << number_or_dash(frequency(), 4) << " Hz at the end\n"
-                  << result.steps << " steps, "
+                  << time_integration_line(result) << result.steps << " steps, "
                   << (result.completed ? result.newton_iterations : newton_iterations_of_steps)
                   << " Newton iterations, " << std::setprecision(3) << seconds << " s"
                   << std::endl;
+        if (!result.warning.empty())
+          std::cerr << "cdea: warning: " << result.warning << '\n';
+      }
+
+      /// The time integration's steps, rejections and error estimate (ESDIRK
+      /// runs; the fixed-step schemes print as before).
+      std::string time_integration_line(const RunResult &result) const
+      {
+        std::ostringstream line;
+        if (std::isnan(result.error_estimate))
+          return "";
+        line << "  time integration: " << result.time_steps << " steps, "
+             << result.rejected_steps << " rejected";
+        line << ", estimated error of the disk's position "
+               << format_number(result.error_estimate * 1e3, 3) << " mm (sum of the local "
+               << "estimates, " << format_number(result.error_estimate / std::max(std::abs(last.displacement), 1e-300), 3)
+               << " of the displacement)";
+        line << '\n';
+        return line.str();
       }
     };
   } // namespace
@@ -204,6 +246,9 @@ namespace cdea
     run.root_attributes = {{"material_model", p.material_law.model},
                            {"waveform", to_string(p.time.waveform)},
                            {"time_scheme", to_string(p.time.scheme)}};
+    if (esdirk_tableau(run.settings.method))
+      run.root_attributes.push_back(
+        {"time_step_control", to_string(step_control_of(run.settings))});
     return run;
   }
 

@@ -12,6 +12,7 @@ namespace cdea
   std::unique_ptr<CommandJob> shoot_job();            // commands/shoot.cc
   std::unique_ptr<CommandJob> compare_job();          // commands/compare.cc
   std::unique_ptr<CommandJob> sweep_job();            // commands/sweep.cc
+  std::unique_ptr<CommandJob> response_job();         // commands/response.cc
   std::unique_ptr<CommandJob> recover_job();          // commands/recover.cc
   std::unique_ptr<CommandJob> optimize_job();         // commands/optimize.cc
   std::unique_ptr<CommandJob> fit_job();              // commands/fit.cc
@@ -40,6 +41,12 @@ namespace cdea
         "mpirun -np N as well"},
        reads_parameters | stops_on_signals | in_python, Ranks::all, Output::claimed_first,
        sweep_job},
+      {"response", {"FILE.prm"},
+       {"small-signal frequency response about the equilibrium\n"
+        "at the end of the voltage path: transfer functions,\n"
+        "natural frequencies, <Base name>_response.h5"},
+       reads_parameters | time_runs | in_python, Ranks::one, Output::claimed_first,
+       response_job},
       {"recover", {"FILE.h5"},
        {"rebuild the results of a killed run from its\n"
         "journal FILE.h5.journal"},

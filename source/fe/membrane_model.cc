@@ -51,8 +51,10 @@ namespace cdea
 
   double MembraneModel::Impl::residual_scale() const
   {
-    return std::max(load.force, 2. * M_PI * scene.material.thickness *
-                                  scene.material.shear_modulus * scene.disk_radius);
+    return std::max({load.force,
+                     2. * M_PI * scene.material.thickness * scene.material.shear_modulus *
+                       scene.disk_radius,
+                     kernel.term<InertiaTerm>().step().residual_scale});
   }
 
   bool MembraneModel::Impl::assemble_constrained(const Eigen::VectorXd &x, const unsigned int flags)

@@ -14,6 +14,17 @@
 
 namespace cdea
 {
+  /// One point of the energy rule with the first variations of its stretches
+  /// (as MembraneTerm forms them) and its weight 2 pi H R dR.
+  struct VariationPoint
+  {
+    unsigned int        cell = 0, q = 0;
+    const unsigned int *dofs = nullptr; ///< the cell's global dofs
+    double              w    = 0.;
+    std::vector<double> dl1, dl2;       ///< d l1, d l2 per local dof
+    LawInput            input;          ///< the law's input there
+    const double       *stored = nullptr; ///< its current internal variables
+  };
   class MembraneModel::Impl : public NonlinearProblem
   {
   public:
@@ -73,5 +84,50 @@ namespace cdea
 
     /// Residual scale of Newton and the corrector (N).
     double residual_scale() const;
+
+    /// Calls f(point) (a VariationPoint) at every point of the energy rule
+    /// of the current state.
+    template <typename F>
+    void for_each_variation_point(F &&f) const;
   };
+
+
+
+  template <typename F>
+  void MembraneModel::Impl::for_each_variation_point(F &&f) const
+  {
+    const Impl         &m    = *this;
+    const ShapeTable   &rule = m.mesh.energy_rule;
+    const unsigned int  nc = m.mesh.dofs_per_cell(), ni = m.membrane.n_internal();
+    const double        two_pi_H = 2. * M_PI * m.scene.material.thickness;
+    std::vector<double> local(nc);
+    VariationPoint      p;
+    p.dl1.assign(nc, 0.);
+    p.dl2.assign(nc, 0.);
+    for (unsigned int c = 0; c < m.mesh.n_cells(); ++c)
+      {
+        const MeshCell &cell = m.mesh.cells[c];
+        p.cell               = c;
+        p.dofs               = m.mesh.dofs_of(c);
+        for (unsigned int i = 0; i < nc; ++i)
+          local[i] = m.solution[p.dofs[i]];
+        for (unsigned int q = 0; q < rule.size(); ++q)
+          {
+            const PointKinematics k = kinematics(m.mesh, rule, q, cell, local.data());
+            p.q                     = q;
+            p.w                     = two_pi_H * k.R * cell.h * rule.weights[q];
+            for (unsigned int i = 0; i < nc; ++i)
+              {
+                const double gradient = rule.derivative[q * nc + i] / cell.h;
+                p.dl1[i] = (m.mesh.component[i] == 0 ? k.dr : k.dz) * gradient / k.l1;
+                p.dl2[i] = m.mesh.component[i] == 0 ? rule.value[q * nc + i] / k.R : 0.;
+              }
+            p.input  = m.membrane.law_input(k, cell.ring);
+            p.stored = ni ? m.membrane.internal_current.data() +
+                              (std::size_t(c) * rule.size() + q) * ni :
+                            nullptr;
+            f(p);
+          }
+      }
+  }
 } // namespace cdea

@@ -100,15 +100,13 @@ namespace cdea
 
   double MembraneModel::disk_position() const { return impl->solution[impl->mesh.z_inner]; }
 
-  EnergyBudget MembraneModel::energy_budget() const
+  // Q_k = -int dW/dPhi dV over ring k (the ideal dielectric's W is
+  // quadratic in Phi, so (1/2) Phi Q is its electrostatic energy).
+  std::vector<double> MembraneModel::charges() const
   {
-    Impl        &m = *impl;
-    EnergyBudget budget;
-    budget.charge.assign(m.scene.n_rings(), 0.);
-
-    // Q_k = -int dW/dPhi dV over ring k (the ideal dielectric's W is
-    // quadratic in Phi, so (1/2) Phi Q is its electrostatic energy).
-    MembraneTerm &membrane = m.membrane;
+    Impl               &m = *impl;
+    std::vector<double> charge(m.scene.n_rings(), 0.);
+    MembraneTerm       &membrane = m.membrane;
     for_each_weighted_point(m.mesh, m.solution, m.scene.material.thickness,
                    [&](const unsigned int c, const unsigned int q, const PointKinematics &p,
                        const double w) {
@@ -118,8 +116,17 @@ namespace cdea
                      if (membrane.law().parameter_derivative(membrane.law_input(p, ring),
                                                              membrane.internal_step(c, q),
                                                              LawParameter::voltage, dW, ds))
-                       budget.charge[ring] -= w * dW;
+                       charge[ring] -= w * dW;
                    });
+    return charge;
+  }
+
+  EnergyBudget MembraneModel::energy_budget() const
+  {
+    Impl        &m = *impl;
+    EnergyBudget budget;
+    budget.charge          = charges();
+    MembraneTerm &membrane = m.membrane;
     for (unsigned int k = 0; k < budget.charge.size(); ++k)
       budget.electrostatic += 0.5 * m.load.voltages[k] * budget.charge[k];
 
@@ -176,5 +183,122 @@ namespace cdea
           Kff(i, j) = K[others[i]][others[j]];
       }
     return K[z][z] - Kfz.dot(Kff.ldlt().solve(Kfz));
+  }
+
+  std::vector<double> MembraneModel::internal_now() const { return impl->membrane.internal_current; }
+
+  namespace
+  {
+    /// Calls f(k) with the offset k of every point's stored internal
+    /// variables in a vector of @p law's layout with @p size numbers.
+    template <typename F>
+    void for_each_stored_point(const MembraneLaw &law, const std::size_t size, F &&f)
+    {
+      const unsigned int n = law.n_internal_variables();
+      if (n == 0 || law.n_evolving() == 0)
+        return;
+      for (std::size_t k = 0; k + n <= size; k += n)
+        f(k);
+    }
+  } // namespace
+
+  void MembraneModel::set_internal_start(const std::vector<double>                  &start,
+                                         const std::vector<const std::vector<double> *> &stages,
+                                         const std::vector<double> &weights, const double h)
+  {
+    MembraneTerm      &m   = impl->membrane;
+    const MembraneLaw &law = m.law();
+    std::vector<double> out = start;
+    const unsigned int  ne  = law.n_evolving();
+    std::vector<double> y(ne), y_j(ne), rate(ne);
+    for_each_stored_point(law, out.size(), [&](const std::size_t k) {
+      law.evolving_state(start.data() + k, y.data(), rate.data());
+      for (std::size_t j = 0; j < stages.size(); ++j)
+        if (weights[j] != 0.)
+          {
+            law.evolving_state(stages[j]->data() + k, y_j.data(), rate.data());
+            for (unsigned int i = 0; i < ne; ++i)
+              y[i] += h * weights[j] * rate[i];
+          }
+      law.set_evolving_state(y.data(), out.data() + k);
+    });
+    m.internal_old           = out;
+    m.internal_current       = std::move(out);
+    impl->tangent_is_current = false;
+  }
+
+  double MembraneModel::internal_error(const std::vector<const std::vector<double> *> &stages,
+                                       const std::vector<double> &d, const double h,
+                                       const std::vector<double> &end, const double absolute,
+                                       const double relative, std::vector<double> *shifted) const
+  {
+    const MembraneLaw &law = impl->membrane.law();
+    const unsigned int ne  = law.n_evolving();
+    std::vector<double> y(ne), y_j(ne), rate(ne), estimate(ne);
+    double              worst = 0.;
+    if (shifted)
+      *shifted = end;
+    for_each_stored_point(law, end.size(), [&](const std::size_t k) {
+      std::fill(estimate.begin(), estimate.end(), 0.);
+      for (std::size_t j = 0; j < stages.size(); ++j)
+        {
+          law.evolving_state(stages[j]->data() + k, y_j.data(), rate.data());
+          for (unsigned int i = 0; i < ne; ++i)
+            estimate[i] += h * d[j] * rate[i];
+        }
+      law.evolving_state(end.data() + k, y.data(), rate.data());
+      for (unsigned int i = 0; i < ne; ++i)
+        {
+          worst = std::max(worst, std::abs(estimate[i]) / (absolute + relative * std::abs(y[i])));
+          y[i] += estimate[i];
+        }
+      if (shifted)
+        law.set_evolving_state(y.data(), shifted->data() + k);
+    });
+    return worst;
+  }
+
+  // dx = -K^-1 (R(x; internal) - R(x; current)), both residuals with the
+  // internal variables held (dt = 0) and K the tangent of the last solve.
+  double MembraneModel::disk_position_change(const std::vector<double> &internal)
+  {
+    Impl         &m = *impl;
+    MembraneTerm &membrane = m.membrane;
+    if (!m.tangent_is_current || !m.factorize())
+      return std::numeric_limits<double>::quiet_NaN();
+    const double           dt = membrane.time_step();
+    const TimeScheme       scheme = membrane.time_scheme();
+    const std::vector<double> old = membrane.internal_old, current = membrane.internal_current;
+    Eigen::VectorXd residual[2];
+    membrane.set_time_step(0., scheme);
+    for (unsigned int k = 0; k < 2; ++k)
+      {
+        membrane.internal_old     = k == 0 ? current : internal;
+        membrane.internal_current = membrane.internal_old;
+        m.kernel.assemble(m.solution, assemble_residual, m.query);
+        residual[k] = m.query.residual;
+      }
+    membrane.set_time_step(dt, scheme);
+    membrane.internal_old     = old;
+    membrane.internal_current = current;
+    Eigen::VectorXd change;
+    m.solve_tangent(residual[0] - residual[1], change);
+    return change[m.mesh.z_inner];
+  }
+
+  double MembraneModel::dissipation_rate() const
+  {
+    MembraneTerm &m = impl->membrane;
+    double        D = 0.;
+    if (m.n_internal() == 0)
+      return D;
+    const unsigned int n = m.n_internal(), per_cell = impl->mesh.energy_rule.size();
+    for_each_weighted_point(impl->mesh, impl->solution, impl->scene.material.thickness,
+                   [&](const unsigned int c, const unsigned int q, const PointKinematics &,
+                       const double w) {
+                     D += w * m.law().dissipation_rate(m.internal_current.data() +
+                                                       (std::size_t(c) * per_cell + q) * n);
+                   });
+    return D;
   }
 } // namespace cdea

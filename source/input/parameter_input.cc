@@ -129,6 +129,7 @@ namespace cdea
     validate_ranges(parameters, parameters.scene()); // now, before anything is written
     validate_time(parameters);
     validate_load_terms(parameters);
+    validate_dynamics(parameters);
     parameters.input_warnings =
       duplicate_entry_warnings(content, input.is_text ? "parameter text" : input.source);
     if (text)

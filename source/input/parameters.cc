@@ -314,6 +314,7 @@ namespace cdea
     parameters::MaterialLaw::declare(prm);
     parameters::Time::declare(prm);
     parameters::LoadTerms::declare(prm, [&](const EntryDeclaration &e) { return !in_reservoir(e); });
+    parameters::Response::declare(prm);
   }
 
   void Parameters::parse(ParameterHandler &prm)
@@ -334,6 +335,7 @@ namespace cdea
     material_law.parse(prm);
     time.parse(prm);
     load_terms.parse(prm);
+    response.parse(prm);
   }
 
   std::string to_string(const Continuation choice)

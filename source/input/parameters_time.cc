@@ -41,14 +41,35 @@ namespace cdea
                         "are linear between rows and start from 0 V at t = 0 when the first row "
                         "is later.");
       prm.declare_entry("Time step (s)", "0.01", Double(),
-                        "Largest time step; steps are halved where Newton needs it and land on "
-                        "every ramp end and square edge.");
+                        "Largest time step (ESDIRK schemes: for a sine at most 1/16 of its "
+                        "period); steps land on every ramp end, square edge and table row and "
+                        "are halved where Newton needs it. backward Euler, trapezoidal and "
+                        "Step control = fixed: the step itself.");
       prm.declare_entry("Min time step (s)", "1e-8", Double(),
                         "A step cut below this ends the run (exit code 2).");
-      prm.declare_entry("Scheme", "backward Euler", Selection("backward Euler|trapezoidal"),
-                        "Time integration of the dashpots' stretches: backward Euler (first order, "
-                        "L-stable) or the trapezoidal rule (second order). The disk's inertia "
-                        "always uses Newmark's average acceleration (second order).");
+      prm.declare_entry("Scheme", "backward Euler",
+                        Selection("ESDIRK3|ESDIRK4|backward Euler|trapezoidal"),
+                        "backward Euler (the default), trapezoidal: the fixed-step schemes for the "
+                        "dashpots (first and second order), the inertia by Newmark's average "
+                        "acceleration; they take steps of Time step (s) (Step control does not "
+                        "apply). ESDIRK3, ESDIRK4: L-stable diagonally implicit Runge-Kutta methods of "
+                        "order 3 (3 implicit stages) and 4 (5 stages) for the film's internal "
+                        "variables, the disk's and the water's inertia alike, with an error "
+                        "estimate (Step control).");
+      prm.declare_entry("Step control", "error", Selection("error|fixed"),
+                        "ESDIRK schemes: error: each step's local error estimate against the "
+                        "tolerances sizes the next step (up to Time step (s)); fixed: steps of "
+                        "Time step (s).");
+      prm.declare_entry("Relative tolerance", "1e-6", Double(),
+                        "Error control: the local error of the disk's position, its velocity "
+                        "(over its natural angular frequency), the water level and the film's "
+                        "internal variables, relative to their values.");
+      prm.declare_entry("Absolute tolerance (mm)", "1e-6", Double(),
+                        "Error control: the absolute part for the disk's position and the "
+                        "water level in the tube.");
+      prm.declare_entry("Internal variable tolerance", "1e-9", Double(),
+                        "Error control: the absolute part for the film's internal variables "
+                        "(log viscous stretches).");
       prm.declare_entry("Inertia", "true", Bool(),
                         "The disk's mass (Loading/Mass) in m z'' on the disk (Newmark); the "
                         "membrane's own mass is neglected. false: quasi-static in time.");
@@ -84,8 +105,16 @@ namespace cdea
       table_file            = prm.get("Table file");
       time_step_s           = prm.get_double("Time step (s)");
       min_time_step_s       = prm.get_double("Min time step (s)");
-      scheme                = prm.get("Scheme") == "trapezoidal" ? TimeScheme::trapezoidal :
-                                                                   TimeScheme::backward_euler;
+      const std::string m   = prm.get("Scheme");
+      scheme                = m == "ESDIRK4"        ? TimeMethod::esdirk4 :
+                              m == "backward Euler" ? TimeMethod::backward_euler :
+                              m == "trapezoidal"    ? TimeMethod::trapezoidal :
+                                                      TimeMethod::esdirk3;
+      step_control          = prm.get("Step control") == "fixed" ? TimeStepControl::fixed :
+                                                                   TimeStepControl::error;
+      relative_tolerance    = prm.get_double("Relative tolerance");
+      absolute_tolerance_mm = prm.get_double("Absolute tolerance (mm)");
+      internal_tolerance    = prm.get_double("Internal variable tolerance");
       inertia               = prm.get_bool("Inertia");
       water_inertia         = prm.get_bool("Water inertia");
       rest_time_text        = prm.get("Rest time before voltage (s)");
@@ -131,8 +160,24 @@ namespace cdea
     return "ramp-hold";
   }
 
-  std::string to_string(const TimeScheme choice)
+  std::string to_string(const TimeMethod choice)
   {
-    return choice == TimeScheme::trapezoidal ? "trapezoidal" : "backward Euler";
+    switch (choice)
+      {
+        case TimeMethod::backward_euler:
+          return "backward Euler";
+        case TimeMethod::trapezoidal:
+          return "trapezoidal";
+        case TimeMethod::esdirk4:
+          return "ESDIRK4";
+        case TimeMethod::esdirk3:
+          break;
+      }
+    return "ESDIRK3";
+  }
+
+  std::string to_string(const TimeStepControl choice)
+  {
+    return choice == TimeStepControl::fixed ? "fixed" : "error";
   }
 } // namespace cdea

@@ -75,7 +75,11 @@ namespace cdea
     s.max_step     = t.time_step_s;
     s.min_step     = t.min_time_step_s;
     s.max_cutbacks = p.solver.max_cutbacks;
-    s.scheme       = t.scheme;
+    s.method       = t.scheme;
+    s.control      = t.step_control;
+    s.relative_tolerance     = t.relative_tolerance;
+    s.displacement_tolerance = t.absolute_tolerance_mm * 1e-3;
+    s.internal_tolerance     = t.internal_tolerance;
     s.inertia      = t.inertia;
     s.rest_time    = t.rest_time();
     s.fields_interval = t.fields_interval_s;

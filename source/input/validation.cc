@@ -237,6 +237,15 @@ namespace cdea
       if (!(t.fields_interval_s >= 0.))
         throw InputError("Time/Fields interval (s) must be zero or positive, got " +
                          format_number(t.fields_interval_s));
+      if (!(t.relative_tolerance >= 1e-14 && t.relative_tolerance <= 0.1))
+        throw InputError("Time/Relative tolerance must be between 1e-14 and 0.1, got " +
+                         format_number(t.relative_tolerance));
+      if (!(t.absolute_tolerance_mm >= 0. && t.absolute_tolerance_mm <= 1e3))
+        throw InputError("Time/Absolute tolerance (mm) must be between 0 and 1000, got " +
+                         format_number(t.absolute_tolerance_mm));
+      if (!(t.internal_tolerance >= 0. && t.internal_tolerance <= 1.))
+        throw InputError("Time/Internal variable tolerance must be between 0 and 1, got " +
+                         format_number(t.internal_tolerance));
     }
 
     /// A sine is sampled at the time steps only (a square, a ramp and a
@@ -342,6 +351,19 @@ namespace cdea
                        ": its duration " + format_number(duration) + " s (" + duration_entries +
                        ") over Time/Time step (s) = " + format_number(step) +
                        "; shorten the run or raise the time step");
+  }
+
+  void validate_dynamics(const Parameters &p)
+  {
+    const auto &r = p.response;
+    require_positive(r.lowest_frequency_Hz, "Response/Lowest frequency (Hz)");
+    if (!(r.highest_frequency_Hz > r.lowest_frequency_Hz && r.highest_frequency_Hz <= 1e9))
+      throw InputError("Response/Highest frequency (Hz) must be above Response/Lowest frequency "
+                       "(Hz) (" + format_number(r.lowest_frequency_Hz) + ") and at most 1e9, got " +
+                       format_number(r.highest_frequency_Hz));
+    if (!(r.membrane_density >= 0. && r.membrane_density <= 1e5))
+      throw InputError("Response/Membrane density (kg/m^3) must be between 0 and 1e5, got " +
+                       format_number(r.membrane_density));
   }
 
   void validate_reservoir(const Parameters &p)

@@ -233,6 +233,47 @@ namespace cdea
                      std::log(step.current[1] / step.old[1]));
     return de.dot(mobility_inverse(b.shear_modulus * b.relaxation_time) * de) / step.dt;
   }
+  void TwoNetworkGentLaw::evolving_state(const double *stored, double *y, double *rate) const
+  {
+    y[0]    = std::log(stored[0]);
+    y[1]    = std::log(stored[1]);
+    rate[0] = stored[2];
+    rate[1] = stored[3];
+  }
+
+  void TwoNetworkGentLaw::set_evolving_state(const double *y, double *stored) const
+  {
+    stored[0] = std::exp(y[0]);
+    stored[1] = std::exp(y[1]);
+  }
+
+  double TwoNetworkGentLaw::dissipation_rate(const double *stored) const
+  {
+    const Vector2 q(stored[2], stored[3]);
+    return q.dot(mobility_inverse(b.shear_modulus * b.relaxation_time) * q);
+  }
+
+  bool TwoNetworkGentLaw::linearize(const LawInput &in, const double *stored,
+                                    InternalLinearization &out) const
+  {
+    const GentDielectric law_a(a, in.voltage);
+    if (!(in.l1 > 0.) || !(in.l2 > 0.) || !(law_a.gent_margin(in.l1, in.l2) > 0.))
+      return false;
+    SpringB w;
+    if (!w.evaluate(GentDielectric(spring_b, 0.), in.l1, in.l2,
+                    Vector2(std::log(stored[0]), std::log(stored[1])), false))
+      return false;
+    const StressTangent ta = law_a.tangent(in.l1, in.l2);
+    out.instantaneous      = {ta.s11 + w.W_ll(0, 0), ta.s12 + 0.5 * (w.W_ll(0, 1) + w.W_ll(1, 0)),
+                              ta.s22 + w.W_ll(1, 1)};
+    const Matrix2 M      = mobility(b.shear_modulus * b.relaxation_time);
+    const Matrix2 rate_y = -M * w.W_ee, rate_l = -M * w.W_le.transpose();
+    out.n                = 2;
+    out.stress_y         = {w.W_le(0, 0), w.W_le(0, 1), w.W_le(1, 0), w.W_le(1, 1)};
+    out.rate_y           = {rate_y(0, 0), rate_y(0, 1), rate_y(1, 0), rate_y(1, 1)};
+    out.rate_l           = {rate_l(0, 0), rate_l(0, 1), rate_l(1, 0), rate_l(1, 1)};
+    return true;
+  }
 
   void TwoNetworkGentLaw::declare_parameters(ParameterDeclarations &prm)
   {

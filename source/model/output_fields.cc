@@ -99,6 +99,16 @@ namespace cdea
             {breakdown_radius.name, {breakdown_radius.in_file_units(breakdown.radius)}}};
   }
 
+  std::vector<SummaryAttribute> time_integration_attributes(const unsigned int steps,
+                                                            const unsigned int rejected,
+                                                            const double       error_estimate)
+  {
+    using namespace summary_attribute;
+    return {{time_steps.name, {double(steps)}},
+            {time_steps_rejected.name, {double(rejected)}},
+            {time_error_estimate.name, {time_error_estimate.in_file_units(error_estimate)}}};
+  }
+
   std::vector<SummaryAttribute> run_attributes(const unsigned int run, const OnsetRecord &onset,
                                                const std::vector<LimitPoint> &limits,
                                                const OnsetRecord             &breakdown,

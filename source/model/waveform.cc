@@ -119,4 +119,46 @@ namespace cdea
     const auto k = std::upper_bound(knot_times.begin(), knot_times.end(), t);
     return k == knot_times.end() ? end : *k;
   }
+
+  namespace
+  {
+    /// The knot k with knot_times[k] <= inside < knot_times[k + 1], clamped
+    /// to a piece that exists.
+    std::size_t piece_of(const std::vector<double> &knot_times, const double inside)
+    {
+      const std::size_t k =
+        std::upper_bound(knot_times.begin(), knot_times.end(), inside) - knot_times.begin();
+      return std::min(k == 0 ? 0 : k - 1, knot_times.size() - 2);
+    }
+  } // namespace
+
+  std::vector<double> Waveform::voltages_on_piece(const double t, const double inside) const
+  {
+    if (kind_ == WaveformKind::sine || knot_times.size() < 2)
+      return voltages(t);
+    const std::size_t k = piece_of(knot_times, inside);
+    const double      s = (t - knot_times[k]) / (knot_times[k + 1] - knot_times[k]);
+    std::vector<double> v(knot_voltages[k].size());
+    for (std::size_t i = 0; i < v.size(); ++i)
+      v[i] = (1. - s) * knot_voltages[k][i] + s * knot_voltages[k + 1][i];
+    return v;
+  }
+
+  std::vector<double> Waveform::rates_on_piece(const double t, const double inside) const
+  {
+    std::vector<double> v(peak_.size(), 0.);
+    if (kind_ == WaveformKind::sine)
+      {
+        const double s = M_PI * frequency_ * std::sin(2. * M_PI * frequency_ * t);
+        for (std::size_t i = 0; i < v.size(); ++i)
+          v[i] = peak_[i] * s;
+        return v;
+      }
+    if (knot_times.size() < 2)
+      return v;
+    const std::size_t k = piece_of(knot_times, inside);
+    for (std::size_t i = 0; i < v.size(); ++i)
+      v[i] = (knot_voltages[k + 1][i] - knot_voltages[k][i]) / (knot_times[k + 1] - knot_times[k]);
+    return v;
+  }
 } // namespace cdea

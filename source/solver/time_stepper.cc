@@ -13,7 +13,15 @@ namespace cdea
   namespace
   {
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-  }
+
+    /// The dashpots' scheme of a fixed-step method (the ESDIRK stages are
+    /// backward Euler steps from shifted starts).
+    TimeScheme dashpot_scheme(const TimeMethod method)
+    {
+      return method == TimeMethod::trapezoidal ? TimeScheme::trapezoidal :
+                                                 TimeScheme::backward_euler;
+    }
+  } // namespace
 
   /// Time, disk velocity and the energy budget since the start of the time
   /// integration: electrical work sum (Phi0 + Phi1)/2 (Q1 - Q0) in, change of
@@ -71,6 +79,30 @@ namespace cdea
     return l;
   }
 
+  LoadState TimeStepper::load_on_piece(const double t, const double inside) const
+  {
+    LoadState l = full_load(scene,
+                            inside < 0. ? std::vector<double>(scene.n_rings(), 0.) :
+                                          settings.waveform.voltages_on_piece(t, inside),
+                            t);
+    l.time = t;
+    return l;
+  }
+
+  std::vector<double> TimeStepper::voltage_rates(const double t, const double inside) const
+  {
+    return inside < 0. ? std::vector<double>(scene.n_rings(), 0.) :
+                         settings.waveform.rates_on_piece(t, inside);
+  }
+
+  double TimeStepper::largest_step(const TimeSettings &settings)
+  {
+    const Waveform &w = settings.waveform;
+    return esdirk_tableau(settings.method) && w.kind() == WaveformKind::sine ?
+             std::min(settings.max_step, 1. / (16. * w.frequency())) :
+             settings.max_step;
+  }
+
   // Stages 0 and 1 by the quasi-static driver, on the scene with a zero
   // voltage path (its one zero-voltage step is not reported).
   bool TimeStepper::run_quasi_static()
@@ -82,7 +114,7 @@ namespace cdea
       stepper.add_postprocessor(make());
     const bool relaxed = std::isinf(settings.rest_time);
     model.set_inertia(InertiaStep());
-    model.set_time_step(std::numeric_limits<double>::infinity(), settings.scheme);
+    model.set_time_step(std::numeric_limits<double>::infinity(), dashpot_scheme(settings.method));
     stepper.on_step = [&](const StepSummary &s) {
       if (s.stage == Stage::voltage)
         return;
@@ -90,7 +122,7 @@ namespace cdea
         {
           // The pre-stretched film has relaxed; the weight is hung quickly.
           model.relax_internal_variables();
-          model.set_time_step(0., settings.scheme);
+          model.set_time_step(0., dashpot_scheme(settings.method));
         }
       ++result.steps;
       if (on_step)
@@ -115,7 +147,7 @@ namespace cdea
     // integration starts from: relaxed, or held since the weight was hung.
     if (relaxed)
       model.relax_internal_variables();
-    model.set_time_step(0., settings.scheme);
+    model.set_time_step(0., dashpot_scheme(settings.method));
     if (!model.solve(model.load()).converged)
       {
         result.message = "the state at the end of the dead-load stage is no equilibrium";
@@ -141,7 +173,7 @@ namespace cdea
             inertia.volume_target = m.V + dt * m.V_dot + dt * dt * (0.5 - beta) * m.V_ddot;
           }
       }
-    model.set_time_step(dt, settings.scheme);
+    model.set_time_step(dt, dashpot_scheme(settings.method));
     model.set_inertia(inertia);
     SolveReport report = model.solve(load_at(t + dt));
     ++result.solves;
@@ -287,7 +319,7 @@ namespace cdea
   {
     const double step_dissipation = model.step_dissipation();
     model.accept_time_step();
-    model.set_time_step(0., settings.scheme);
+    model.set_time_step(0., dashpot_scheme(settings.method));
     model.set_inertia(InertiaStep());
     const EnergyBudget budget1 = model.energy_budget();
     const auto         phi0 = voltages_at(t_now), phi1 = voltages_at(t_next);
@@ -302,19 +334,15 @@ namespace cdea
   // root in the fraction of the step, each trial a step from the start,
   // reported as a step of its own. Leaves the model at the best trial.
   void TimeStepper::locate_onset(const StepEnds &ends, const double h, const double s2_start,
-                                 const double s2_end)
+                                 const double s2_end,
+                                 const std::function<bool(double)> &step_from_start)
   {
     double       best_f = s2_end, best_theta = 1.;
     ModelState   best_state  = ends.state1;
     InertiaState best_motion = ends.motion1;
     const auto   s2          = [&](const double theta) {
-      model.set_state(ends.state0);
-      motion = ends.motion0;
-      if (!advance(t_now, theta * h, motion).converged)
+      if (!step_from_start(theta))
         return nan;
-      model.accept_time_step();
-      model.set_time_step(0., settings.scheme);
-      model.set_inertia(InertiaStep());
       const double f = model.hoop_stresses().s2_min;
       if (std::abs(f) < std::abs(best_f))
         {
@@ -387,32 +415,56 @@ namespace cdea
 
     const double volume_mass = settings.inertia ? water_column_mass(ends.motion0) : 0.;
     accept_step(t_next);
+    const auto step_from_start = [&](const double theta) {
+      model.set_state(ends.state0);
+      motion = ends.motion0;
+      if (!advance(t_now, theta * h, motion).converged)
+        return false;
+      model.accept_time_step();
+      model.set_time_step(0., dashpot_scheme(settings.method));
+      model.set_inertia(InertiaStep());
+      return true;
+    };
+    history.oldest    = std::move(history.older);
+    history.dt_oldest = history.dt_older;
+    history.older     = ends.state0;
+    history.dt_older  = h;
+    finish_step(ends, h, t_next, breakpoint, volume_mass, solved.iterations, step_from_start,
+                previous);
+    control.accept(h, solved.iterations);
+    return true;
+  }
+
+  // The accepted step's end: its row (after the onset's, if the hoop stress
+  // turned negative inside it), the fields wanted, t_now moved on.
+  void TimeStepper::finish_step(StepEnds &ends, const double h, const double t_next,
+                                const double breakpoint, const double volume_mass,
+                                const unsigned int                 iterations,
+                                const std::function<bool(double)> &step_from_start,
+                                StepSummary                       &previous)
+  {
     ends.state1  = model.state();
     ends.motion1 = motion;
     set_columns(t_next, volume_mass);
     StepSummary current = evaluate(t_next);
     if (!result.onset.found && previous.s2_min >= 0. && current.s2_min < 0.)
       {
-        locate_onset(ends, h, previous.s2_min, current.s2_min);
+        locate_onset(ends, h, previous.s2_min, current.s2_min, step_from_start);
         model.set_state(ends.state1);
         motion = ends.motion1;
         set_columns(t_next, volume_mass);
         current = evaluate(t_next);
       }
-
-    history.oldest    = std::move(history.older);
-    history.dt_oldest = history.dt_older;
-    history.older     = std::move(ends.state0);
-    history.dt_older  = h;
-    t_now             = t_next;
-    wants_fields      = t_now == breakpoint || t_now >= next_fields_time - 1e-9 * h;
+    for (const double v : voltages_at(t_next))
+      largest_voltage = std::max(largest_voltage, std::abs(v));
+    ++result.time_steps;
+    t_now        = t_next;
+    wants_fields = t_now == breakpoint || t_now >= next_fields_time - 1e-9 * h;
     if (wants_fields && settings.fields_interval > 0.)
       next_fields_time = settings.fields_interval *
                          (std::floor(t_now / settings.fields_interval + 1e-9) + 1.);
-    report(current, solved.iterations);
+    report(current, iterations);
     previous = current;
-    control.accept(h, solved.iterations);
-    return true;
   }
 
   // Steps of at most Time/Max step, cut back to half the step that failed
@@ -420,7 +472,7 @@ namespace cdea
   StepControlSettings TimeStepper::step_control() const
   {
     StepControlSettings s;
-    s.max_step     = settings.max_step;
+    s.max_step     = largest_step(settings);
     s.min_step     = settings.min_step;
     s.max_cutbacks = settings.max_cutbacks;
     s.after_reject = StepBase::attempted;
@@ -428,24 +480,52 @@ namespace cdea
     return s;
   }
 
+  // Fixed steps start at the largest step; the error control a tenth of it,
+  // growing by at most five per step.
+  double TimeStepper::initial_step() const
+  {
+    return esdirk && settings.control == TimeStepControl::error ? 0.1 * largest_step(settings) :
+                                                                    largest_step(settings);
+  }
+
   RunResult TimeStepper::run()
   {
     result = RunResult();
     if (!run_quasi_static())
       return result;
-    StepSummary    previous = start_time_stage();
-    const double   t_end    = settings.waveform.end_time();
-    StepController control(step_control(), settings.max_step);
+    StepSummary previous = start_time_stage();
+    if (esdirk_tableau(settings.method))
+      start_esdirk();
+    const double   t_end = settings.waveform.end_time();
+    StepController control(step_control(), initial_step());
     while (t_now < t_end * (1. - 1e-14) - 1e-14)
       {
         // Land on the next breakpoint of the waveform.
         const double breakpoint =
           std::min(t_now < 0. ? 0. : settings.waveform.next_breakpoint(t_now), t_end);
-        if (!take_step(control, breakpoint, previous))
-          return result;
+        if (!(esdirk ? take_esdirk_step(control, breakpoint, previous) :
+                       take_step(control, breakpoint, previous)))
+          {
+            finish_run();
+            return result;
+          }
       }
     result.completed = true;
+    finish_run();
     return result;
+  }
+
+  // An ESDIRK run whose voltages stayed at zero in every step (steps too
+  // coarse for the drive, say) is worth a warning: the run would look complete.
+  void TimeStepper::finish_run()
+  {
+    double peak = 0.;
+    for (const double v : settings.waveform.peak())
+      peak = std::max(peak, std::abs(v));
+    if (esdirk && peak > 0. && result.completed && largest_voltage < 1e-3 * peak)
+      result.warning = "the drive never rose: the largest ring voltage in any time step was " +
+                       format_number(largest_voltage * 1e-3, 4) + " kV of the waveform's peak " +
+                       format_number(peak * 1e-3, 4) + " kV";
   }
 
   void TimeStepper::report(const StepSummary &state, const unsigned int iterations)
@@ -458,5 +538,150 @@ namespace cdea
       on_step(summary);
     reported_fields.reset();
     wants_fields = false;
+  }
+
+  // The ESDIRK step, the state it starts from and the weight of velocity
+  // errors: the disk's angular frequency sqrt(k/m) at the start (1 rad/s
+  // without inertia).
+  void TimeStepper::start_esdirk()
+  {
+    EsdirkStepSettings e;
+    e.tableau   = esdirk_tableau(settings.method);
+    e.disk_mass = settings.inertia ? scene.mass : 0.;
+    if (settings.inertia && settings.water_density > 0.)
+      {
+        e.water_mass_per_volume =
+          settings.water_density / (settings.tube_area * settings.tube_area);
+        e.water_volume = settings.water_volume;
+        e.tube_area    = settings.tube_area;
+      }
+    e.relative_tolerance     = settings.relative_tolerance;
+    e.displacement_tolerance = settings.displacement_tolerance;
+    e.internal_tolerance     = settings.internal_tolerance;
+    if (e.disk_mass > 0.)
+      e.angular_frequency = std::sqrt(std::max(model.disk_stiffness(), 0.) / e.disk_mass);
+    if (!(e.angular_frequency > 0.))
+      e.angular_frequency = 1.;
+    esdirk = std::make_unique<EsdirkStep>(
+      model, e, [this](const double t, const double inside) { return load_on_piece(t, inside); },
+      [this](const double t, const double inside) { return voltage_rates(t, inside); });
+    point                  = TimePoint();
+    point.t                = t_now;
+    point.state            = model.state();
+    point.motion           = motion;
+    point.dissipation_rate = model.dissipation_rate();
+    point.charges          = energy.last.charge;
+    result.error_estimate  = 0.;
+    last_ratio             = 1.;
+    after_rejection        = false;
+  }
+
+  // The PI controller's factor for the next step after an accepted one
+  // (Gustafsson's: 0.9 r_n^(-0.7/k) r_(n-1)^(0.4/k), k = embedded order + 1),
+  // in [0.2, 5], at most 1 right after a rejection.
+  double TimeStepper::next_step_factor(const double ratio)
+  {
+    const double k = esdirk_tableau(settings.method)->embedded_order + 1.;
+    const double r = std::max(ratio, 1e-10);
+    double       factor =
+      0.9 * std::pow(r, -0.7 / k) * std::pow(std::max(last_ratio, 1e-10), 0.4 / k);
+    factor = std::clamp(factor, 0.2, after_rejection ? 1. : 5.);
+    last_ratio      = r;
+    after_rejection = false;
+    return factor;
+  }
+
+  bool TimeStepper::reject_esdirk_step(StepController &control, const double h,
+                                       const SolveReport &solved)
+  {
+    model.set_state(point.state);
+    motion = point.motion;
+    ++result.rejected_steps;
+    after_rejection = true;
+    const bool error_control = settings.control == TimeStepControl::error;
+    double     factor        = 0.25;
+    if (solved.converged)
+      factor = std::clamp(0.9 * std::pow(esdirk->error_ratio(),
+                                         -1. / (esdirk_tableau(settings.method)->embedded_order + 1.)),
+                          0.1, 0.9);
+    if (error_control ? control.reject_with_factor(h, factor) : control.reject(h))
+      return true;
+    const double t_next = t_now + h;
+    result.message = solved.converged ?
+                       "time " + format_number(t_now, 10) +
+                         " s: the error control cut the time step below Time/Min time step (s) (" +
+                         to_string(control.reason()) + ")" :
+                       no_equilibrium_message(t_next, control.cutbacks(), solved.message);
+    return false;
+  }
+
+  // The accepted step: internal variables, energy budget, motion (without
+  // inertia the velocities as differences), the error estimate's sum.
+  void TimeStepper::accept_esdirk_step(const double h)
+  {
+    model.accept_time_step();
+    model.set_time_step(0., TimeScheme::backward_euler);
+    model.set_inertia(InertiaStep());
+    const TimePoint start = point;
+    point                 = esdirk->end();
+    point.state           = model.state();
+    if (!settings.inertia)
+      {
+        point.motion.v     = (point.motion.z - start.motion.z) / h;
+        point.motion.V     = settings.water_density > 0. ? model.enclosed_volume() : 0.;
+        point.motion.V_dot = (point.motion.V - start.motion.V) / h;
+      }
+    motion = point.motion;
+    energy.work += esdirk->work();
+    energy.dissipated += esdirk->dissipated();
+    energy.last = model.energy_budget();
+    result.error_estimate += std::abs(esdirk->displacement_error());
+  }
+
+  bool TimeStepper::take_esdirk_step(StepController &control, const double breakpoint,
+                                     StepSummary &previous)
+  {
+    const double to_go  = breakpoint - t_now;
+    const double step   = control.step_towards(to_go);
+    const double t_next = step == to_go ? breakpoint : t_now + step;
+    const double h      = t_next - t_now;
+    if (!(h > 0.))
+      {
+        result.message = "time " + format_number(t_now, 12) +
+                         " s: the time step is below the resolution of t";
+        return false;
+      }
+    const SolveReport solved = esdirk->take(point, h);
+    result.solves += esdirk->solves();
+    result.newton_iterations += esdirk->iterations();
+    const bool error_control = settings.control == TimeStepControl::error;
+    if (!solved.converged || (error_control && !(esdirk->error_ratio() <= 1.)))
+      return reject_esdirk_step(control, h, solved);
+
+    StepEnds ends;
+    ends.state0                 = point.state;
+    ends.motion0                = point.motion;
+    const TimePoint start       = point;
+    accept_esdirk_step(h);
+    const double volume_mass = settings.water_density > 0. ? esdirk->water_mass(motion.V) : 0.;
+    const auto step_from_start = [&](const double theta) {
+      model.set_state(start.state);
+      if (!esdirk->take(start, theta * h).converged)
+        return false;
+      model.accept_time_step();
+      model.set_time_step(0., TimeScheme::backward_euler);
+      model.set_inertia(InertiaStep());
+      motion = esdirk->end().motion;
+      return true;
+    };
+    const unsigned int per_stage =
+      (esdirk->iterations() + esdirk->solves() - 1) / std::max(esdirk->solves(), 1u);
+    finish_step(ends, h, t_next, breakpoint, volume_mass, esdirk->iterations(), step_from_start,
+                previous);
+    if (error_control)
+      control.accept_with_factor(h, next_step_factor(esdirk->error_ratio()));
+    else
+      control.accept(h, per_stage);
+    return true;
   }
 } // namespace cdea

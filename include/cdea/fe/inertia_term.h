@@ -29,6 +29,8 @@ namespace cdea
 
   private:
     InertiaStep inertia;
+    /// The water column with its mass following V (InertiaStep).
+    void finish_variable_mass(unsigned int flags, AssembledSystem &system) const;
     /// m / (beta dt^2) for a mass m.
     double stiffness(double mass) const { return mass / (inertia.beta * inertia.dt * inertia.dt); }
   };

@@ -105,7 +105,7 @@ namespace cdea
     std::vector<std::pair<double, unsigned int>> dof_support() const;
 
     /// Index of the dof holding z at the disk edge.
-    unsigned int disk_z_dof() const;
+    unsigned int disk_z_dof() const override;
 
     // Time-dependent runs (source/fe/membrane_time.cc; doc/time.md).
     /// Replace the material law (elastic or with internal variables; the
@@ -122,10 +122,22 @@ namespace cdea
     double disk_position() const override;
     EnergyBudget energy_budget() const override;
     double disk_stiffness() const override;
+    std::vector<double> internal_now() const override;
+    void   set_internal_start(const std::vector<double>                  &start,
+                              const std::vector<const std::vector<double> *> &stages,
+                              const std::vector<double> &weights, double h) override;
+    double internal_error(const std::vector<const std::vector<double> *> &stages,
+                          const std::vector<double> &d, double h, const std::vector<double> &end,
+                          double absolute, double relative,
+                          std::vector<double> *shifted) const override;
+    double disk_position_change(const std::vector<double> &internal) override;
+    std::vector<double> charges() const override;
+    double              dissipation_rate() const override;
 
   private:
     /// Sensitivities use the tangent of the converged state (fe/sensitivities.h).
     friend class StateSensitivity;
+    friend class LinearizedDynamics;
     class Impl;
     class Continuation;
     std::unique_ptr<Impl>                impl;

@@ -15,6 +15,7 @@
 #include <cdea/base/text.h>
 #include <cdea/input/parameters_design.h>
 #include <cdea/input/parameters_plugins.h>
+#include <cdea/input/parameters_dynamics.h>
 #include <cdea/input/parameters_time.h>
 #include <cdea/model/scene.h>
 #include <cdea/numerics/tangent_solver.h>
@@ -172,6 +173,7 @@ namespace cdea
     parameters::MaterialLaw    material_law; ///< parameters_plugins.h
     parameters::Time           time;         ///< parameters_time.h
     parameters::LoadTerms      load_terms;   ///< parameters_plugins.h
+    parameters::Response        response;         ///< parameters_dynamics.h
 
     static void declare(dealii::ParameterHandler &prm);
     void        parse(dealii::ParameterHandler &prm);

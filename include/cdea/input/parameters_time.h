@@ -5,8 +5,8 @@
 // (solver_settings.h). The law with internal variables is Material/Model
 // (parameters_plugins.h).
 
-#include <cdea/material/membrane_law.h> // TimeScheme
-#include <cdea/model/waveform.h>        // WaveformKind
+#include <cdea/model/waveform.h>    // WaveformKind
+#include <cdea/numerics/esdirk.h>   // TimeMethod, TimeStepControl
 
 #include <string>
 
@@ -31,7 +31,11 @@ namespace cdea
       std::string  table_file;
       double       time_step_s;
       double       min_time_step_s;
-      TimeScheme   scheme;
+      TimeMethod      scheme;
+      TimeStepControl step_control;
+      double          relative_tolerance;
+      double          absolute_tolerance_mm;
+      double          internal_tolerance;
       bool         inertia;
       bool         water_inertia;
       std::string  rest_time_text; ///< "relaxed" or seconds
@@ -46,5 +50,6 @@ namespace cdea
   } // namespace parameters
 
   std::string to_string(WaveformKind choice);
-  std::string to_string(TimeScheme choice);
+  std::string to_string(TimeMethod choice);
+  std::string to_string(TimeStepControl choice);
 } // namespace cdea

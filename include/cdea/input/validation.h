@@ -32,6 +32,9 @@ namespace cdea
   /// throws InputError naming the parameter.
   void validate_time(const Parameters &p);
 
+  /// Subsection Response (the frequency range, the membrane's density).
+  void validate_dynamics(const Parameters &p);
+
   /// Rejects bad Reservoir entries with an InputError that names the
   /// parameter, e.g. "Reservoir/Width (mm) must be positive, got -3" (the
   /// water's are the water term's, checked with the others' by validate_ranges()).

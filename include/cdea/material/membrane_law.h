@@ -145,6 +145,18 @@ namespace cdea
     bool         written = true; ///< a /steps field (false: state only, e.g. a rate)
   };
 
+  /// The law linearized at a point whose evolving internal variables y
+  /// (n_evolving() of them, MembraneLaw::evolving_state()) are held:
+  ///   ds = instantaneous dl + stress_y dy,   d(rate) = rate_y dy + rate_l dl,
+  /// with the rate dy/dt of the law's evolution equation. Matrices are row
+  /// major: stress_y 2 x n, rate_y n x n, rate_l n x 2.
+  struct InternalLinearization
+  {
+    StressTangent       instantaneous{0., 0., 0.}; ///< d(stress)/d(stretches), y held
+    unsigned int        n = 0;                     ///< evolving variables
+    std::vector<double> stress_y, rate_y, rate_l;
+  };
+
   class MembraneLaw
   {
   public:
@@ -245,6 +257,41 @@ namespace cdea
       (void)step;
       return 0.;
     }
+
+    // The evolving internal variables, for Runge-Kutta stages, error
+    // estimates and the small-signal response. A law whose
+    // internal variables follow a rate equation dy/dt = f(l, y) names y (say,
+    // the log viscous stretches) and keeps the rate of the last evaluate()
+    // among its stored numbers; evaluate() with InternalStep{old, current, dt,
+    // backward_euler} then solves y = y_old + dt f(l, y) (any stage of a
+    // diagonally implicit method is such a step from a shifted start).
+
+    /// Evolving variables per point (0: none, as for an elastic law).
+    virtual unsigned int n_evolving() const { return 0; }
+    /// y and its rate dy/dt from the @p stored numbers of a point.
+    virtual void evolving_state(const double *stored, double *y, double *rate) const
+    {
+      (void)stored;
+      (void)y;
+      (void)rate;
+    }
+    /// The stored numbers of a point with y replaced by @p y (the rest kept).
+    virtual void set_evolving_state(const double *y, double *stored) const
+    {
+      (void)y;
+      (void)stored;
+    }
+    /// Dissipation rate per reference volume (W/m^3) of a point's stored state.
+    virtual double dissipation_rate(const double *stored) const
+    {
+      (void)stored;
+      return 0.;
+    }
+    /// The linearization at @p input with the @p stored internal variables held
+    /// (InternalLinearization); false outside the law's range. The default:
+    /// the tangent with the internal variables held, no evolving variables.
+    virtual bool linearize(const LawInput &input, const double *stored,
+                           InternalLinearization &out) const;
 
   private:
     std::vector<InternalVariable> internal;

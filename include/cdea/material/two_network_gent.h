@@ -90,6 +90,17 @@ namespace cdea
     /// end rates for the trapezoidal rule); 0 for dt = 0 or infinity.
     double dissipation(const InternalStep &step) const override;
 
+    /// y = (ln xi1, ln xi2), rate (q1, q2) as stored at the end of a step.
+    unsigned int n_evolving() const override { return 2; }
+    void         evolving_state(const double *stored, double *y, double *rate) const override;
+    void         set_evolving_state(const double *y, double *stored) const override;
+    /// q^T M^-1 q: the dashpot's power at the stored rate.
+    double dissipation_rate(const double *stored) const override;
+    /// With W the total energy at the stored xi: instantaneous = W_ll,
+    /// stress_y = W_le, rate_y = -M W_ee, rate_l = -M W_el (de/dt = -M W_e).
+    bool linearize(const LawInput &input, const double *stored,
+                   InternalLinearization &out) const override;
+
     const MaterialConstants &network_a() const { return a; }
     const ViscousNetwork    &network_b() const { return b; }
 

@@ -220,6 +220,16 @@ namespace cdea
     inline constexpr OutputField breakdown_radius{
       "breakdown_radius_mm", "mm", file_units::mm, Storage::real, Shape::scalar, every_run,
       "pre-stretched flat radius where it is reached"};
+    inline constexpr OutputField time_steps{
+      "time_steps", "1", 1., Storage::real, Shape::scalar, time_run,
+      "accepted steps of the time integration"};
+    inline constexpr OutputField time_steps_rejected{
+      "time_steps_rejected", "1", 1., Storage::real, Shape::scalar, time_run,
+      "steps the error control (or a failed Newton solve) rejected and took again shorter"};
+    inline constexpr OutputField time_error_estimate{
+      "time_error_estimate_mm", "mm", file_units::mm, Storage::real, Shape::scalar, time_run,
+      "estimated global error of the disk's position: the sum of the steps' local error "
+      "estimates (NaN for the fixed-step schemes, which have none)"};
     // clang-format on
   } // namespace summary_attribute
 
@@ -246,6 +256,11 @@ namespace cdea
   /// breakdown_voltage_kV (one per ring) and breakdown_radius_mm (one value);
   /// none if the breakdown field was not reached.
   std::vector<SummaryAttribute> breakdown_attributes(const OnsetRecord &breakdown);
+
+  /// time_steps, time_steps_rejected and time_error_estimate_mm (@p error_estimate in m).
+  std::vector<SummaryAttribute> time_integration_attributes(unsigned int steps,
+                                                            unsigned int rejected,
+                                                            double       error_estimate);
 
   /// Every /summary attribute a run of kind @p run (a RunKind) has, for its
   /// onset, limit points and breakdown.

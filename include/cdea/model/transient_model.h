@@ -17,11 +17,20 @@
 #include <cdea/material/membrane_law.h>
 #include <cdea/model/equilibrium_model.h>
 
+
 #include <vector>
 
 namespace cdea
 {
   /// The inertia terms of one time step (dt = 0: none).
+  ///
+  /// The water column's mass m_V = rho h / S^2 depends on V through the
+  /// column height h = (V_w - V) / S. Newmark's steps freeze it over a step
+  /// (volume_mass_slope = 0). A Runge-Kutta stage (dt = gamma h, beta = 1)
+  /// keeps it exact: the equation of motion of the kinetic energy
+  /// m_V(V) V'^2 / 2 is m_V(V) V'' + m_V'(V) V'^2 / 2 = force, with
+  /// m_V(V) = volume_mass + volume_mass_slope (V - volume_reference),
+  /// V'' = (V - volume_target) / (beta dt^2), V' = (V - volume_start) / dt.
   struct InertiaStep
   {
     double dt            = 0.;   ///< s
@@ -30,6 +39,14 @@ namespace cdea
     double disk_target   = 0.;   ///< m, z_pred of the disk
     double volume_mass   = 0.;   ///< kg/m^4, rho h / S of the water column (0: none)
     double volume_target = 0.;   ///< m^3, V_pred
+    double volume_mass_slope = 0.; ///< kg/m^7, dm_V/dV (0: the mass frozen)
+    double volume_reference  = 0.; ///< m^3, where m_V = volume_mass
+    double volume_start      = 0.; ///< m^3, the stage's Vhat
+    /// A force (N) the solve's residual tolerance is relative to at least
+    /// (0: the model's own scale). A short stage's inertia stiffness k makes
+    /// k z carry a round-off of k |z| eps that Newton's residual cannot get
+    /// below; the stages set this so that the tolerance allows it.
+    double residual_scale = 0.;
   };
 
   /// The energy stored in a state, apart from the kinetic energy (J).
@@ -61,9 +78,39 @@ namespace cdea
     virtual bool has_internal_variables() const = 0;
     /// z(A), the disk's coordinate (m; z > 0 is the weight's direction).
     virtual double disk_position() const = 0;
+    /// The index of z(A) among the unknowns.
+    virtual unsigned int disk_z_dof() const = 0;
     virtual EnergyBudget energy_budget() const = 0;
     /// Static stiffness of the disk coordinate at the current state, loads and
     /// internal variables held: the tangent condensed onto z(A) (N/m).
     virtual double disk_stiffness() const = 0;
+
+    // Runge-Kutta stages (time_stepper.h, doc/time.md "Error control"). The
+    // internal variables are vectors in the layout of ModelState::internal;
+    // the law says which of their numbers evolve (MembraneLaw::n_evolving()).
+
+    /// The internal variables of the last solve: after a converged stage its
+    /// values, with the rates there.
+    virtual std::vector<double> internal_now() const = 0;
+    /// The start of a stage: the accepted (and current) internal variables
+    /// become @p start with the evolving ones advanced by h sum_j w_j rate_j,
+    /// rate_j those stored in @p stages[j].
+    virtual void set_internal_start(const std::vector<double>                  &start,
+                                    const std::vector<const std::vector<double> *> &stages,
+                                    const std::vector<double> &weights, double h) = 0;
+    /// The largest |h sum_j d_j rate_j| / (absolute + relative |y|) over the
+    /// evolving variables y of @p end (0 if none); @p shifted, if given, gets
+    /// @p end with y moved by that estimate.
+    virtual double internal_error(const std::vector<const std::vector<double> *> &stages,
+                                  const std::vector<double> &d, double h,
+                                  const std::vector<double> &end, double absolute,
+                                  double relative, std::vector<double> *shifted) const = 0;
+    /// To first order, the change of z(A) if the current state's internal
+    /// variables were @p internal (held), with the tangent of the last solve.
+    virtual double disk_position_change(const std::vector<double> &internal) = 0;
+    /// The charge Q_k on each ring's electrode at the current state (C).
+    virtual std::vector<double> charges() const = 0;
+    /// The material's dissipation rate at the current internal variables (W).
+    virtual double dissipation_rate() const = 0;
   };
 } // namespace cdea

@@ -46,6 +46,12 @@ namespace cdea
     double frequency() const { return frequency_; }
 
     std::vector<double> voltages(double t) const;
+    /// The voltages at @p t on the piece between knots that holds @p inside,
+    /// extended linearly beyond its knots (the sine: voltages(t)): the
+    /// stages of a step inside one piece see no kink, even those beyond its end.
+    std::vector<double> voltages_on_piece(double t, double inside) const;
+    /// d(voltages)/dt at @p t on that piece (V/s).
+    std::vector<double> rates_on_piece(double t, double inside) const;
     /// The first knot strictly after @p t (end_time() at the latest).
     double next_breakpoint(double t) const;
 

@@ -23,6 +23,7 @@
 #include <cdea/solver/postprocessors.h>
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -57,6 +58,14 @@ namespace cdea
     unsigned int steps             = 0; ///< converged steps reported
     unsigned int newton_iterations = 0; ///< over all solves, the onset search included
     unsigned int solves            = 0; ///< equilibrium solves attempted
+    /// Time runs: the accepted and rejected steps of the time integration
+    /// (from t = 0, or from the rest), the sum of the local error estimates
+    /// of the disk's position (m; NaN without an estimate: the fixed-step
+    /// schemes) and a warning the run should print (a drive that never rose).
+    unsigned int time_steps     = 0;
+    unsigned int rejected_steps = 0;
+    double       error_estimate = std::numeric_limits<double>::quiet_NaN();
+    std::string  warning;
   };
 
   class LoadStepper

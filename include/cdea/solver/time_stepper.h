@@ -7,14 +7,17 @@
 //     the weight is hung;
 //  2. with a rest time, the weight held that long at zero voltage (creep);
 //  3. the voltage waveform from t = 0 to its end in implicit steps of at most
-//     `max_step`, landing on every breakpoint of the waveform: each step solves
-//     equilibrium with the internal variables' update (backward Euler or the
-//     trapezoidal rule) and, if on, the Newmark inertia of the disk (and the
-//     pump's water column), halving the step where Newton fails and growing
-//     it back after easy steps (StepController, numerics/step_control.h). A
-//     converged step's internal variables are accepted and the disk's
-//     velocity and acceleration updated:
+//     `max_step` (and, for a sine, 1/16 of its period), landing on every
+//     breakpoint of the waveform. An ESDIRK method (esdirk_step.h, the
+//     default) takes each step in stages and sizes the next from its error
+//     estimate (a PI controller through StepController's accept_with_factor
+//     and reject_with_factor), or takes fixed steps. The fixed-step schemes
+//     of earlier versions solve each step once with the internal variables'
+//     update (backward Euler or the trapezoidal rule) and, if on, the Newmark
+//     inertia of the disk (and the pump's water column):
 //       a1 = (z1 - z_pred) / (beta dt^2),  v1 = v0 + dt ((1 - gamma) a0 + gamma a1).
+//     Every scheme halves the step where Newton fails and, with fixed steps,
+//     grows it back after easy steps (StepController, numerics/step_control.h).
 //
 // Every converged step goes through the same postprocessors as the
 // quasi-static run, plus the time columns (time, disk velocity, energy
@@ -23,7 +26,9 @@
 // step's fraction), reported as a step of its own.
 
 #include <cdea/model/scene.h>
+#include <cdea/numerics/esdirk.h>
 #include <cdea/numerics/step_control.h>
+#include <cdea/solver/esdirk_step.h>
 #include <cdea/solver/load_stepper.h>
 #include <cdea/solver/postprocessors.h>
 #include <cdea/model/transient_model.h>
@@ -41,7 +46,17 @@ namespace cdea
     double       max_step     = 0.01; ///< s
     double       min_step     = 1e-8; ///< s; a step cut below it ends the run
     unsigned int max_cutbacks = 30;
-    TimeScheme   scheme       = TimeScheme::backward_euler;
+    /// A fixed-step scheme (backward Euler, the parameter file's default,
+    /// or trapezoidal) or an ESDIRK method with or without error control.
+    TimeMethod      method  = TimeMethod::backward_euler;
+    TimeStepControl control = TimeStepControl::error;
+    /// Error control: a step is accepted if every estimate e of its local
+    /// error is below absolute + relative |value| (velocities: times the
+    /// disk's angular frequency; the water volume: absolute times the tube's
+    /// cross-section, i.e. the level in the tube).
+    double relative_tolerance     = 1e-6;
+    double displacement_tolerance = 1e-9; ///< m, absolute
+    double internal_tolerance     = 1e-9; ///< absolute, on the evolving internal variables
     bool         inertia      = true;
     double       newmark_beta  = 0.25; ///< average acceleration: second order,
     double       newmark_gamma = 0.5;  ///< no numerical damping
@@ -54,13 +69,6 @@ namespace cdea
     double water_density = 0.; ///< kg/m^3
     double water_volume  = 0.; ///< m^3
     double tube_area     = 1.; ///< m^2
-  };
-
-  /// The mechanical state of the disk (and the water column) between steps.
-  struct InertiaState
-  {
-    double z = 0., v = 0., a = 0.;          ///< disk: m, m/s, m/s^2
-    double V = 0., V_dot = 0., V_ddot = 0.; ///< enclosed volume and its rates
   };
 
   class TimeStepper
@@ -87,6 +95,10 @@ namespace cdea
     /// After run(): the time reached and the disk's state there.
     double              time() const { return t_now; }
     const InertiaState &inertia_state() const { return motion; }
+
+    /// The largest step for the waveform: max_step, and for a sine under an
+    /// ESDIRK method at most 1/16 of its period (s).
+    static double largest_step(const TimeSettings &settings);
 
   private:
     const Scene                       scene;
@@ -118,6 +130,16 @@ namespace cdea
       InertiaState motion0, motion1;
     };
 
+    /// The ESDIRK path: its step, the state at t_now (with the rates the
+    /// next step starts from), the last error ratio of the PI controller,
+    /// whether the step being tried follows a rejection, and the disk's
+    /// angular frequency that weighs velocity errors.
+    std::unique_ptr<EsdirkStep> esdirk;
+    TimePoint                   point;
+    double                      last_ratio         = 1.;
+    bool                        after_rejection    = false;
+    double                      largest_voltage    = 0.;
+
     LoadStepper                      *quasi_static_stepper = nullptr;
     std::shared_ptr<const StepFields> reported_fields;
     RunResult                         result;
@@ -132,16 +154,35 @@ namespace cdea
     bool time_stage_stability() const { return quasi_static.stability_check && !settings.inertia; }
     LoadState           load_at(double t) const;
     std::vector<double> voltages_at(double t) const;
+    /// On the waveform's piece holding @p inside (Waveform::voltages_on_piece).
+    LoadState           load_on_piece(double t, double inside) const;
+    std::vector<double> voltage_rates(double t, double inside) const;
     bool                run_quasi_static();
     StepSummary         start_time_stage();
     StepControlSettings step_control() const;
     bool        take_step(StepController &control, double breakpoint, StepSummary &previous);
+    double      initial_step() const;
+    void        start_esdirk();
+    bool        take_esdirk_step(StepController &control, double breakpoint,
+                                 StepSummary &previous);
+    bool        reject_esdirk_step(StepController &control, double h, const SolveReport &solved);
+    void        accept_esdirk_step(double h);
+    double      next_step_factor(double ratio);
+    /// After an accepted step of length h from ends.state0: the columns, the
+    /// rows and the onset search (with @p step_from_start, which leaves the
+    /// model and motion at a fraction of the step), common to both paths.
+    void        finish_step(StepEnds &ends, double h, double t_next, double breakpoint,
+                            double volume_mass, unsigned int iterations,
+                            const std::function<bool(double)> &step_from_start,
+                            StepSummary &previous);
+    void        finish_run();
     SolveReport attempt_step(const ModelState &state0, const InertiaState &motion0, double h);
     /// One implicit step from the accepted state (model, motion) at t to
     /// t + dt; on success the new state is accepted and motion updated.
     SolveReport advance(double t, double dt, InertiaState &state);
     void        accept_step(double t_next);
-    void        locate_onset(const StepEnds &ends, double h, double s2_start, double s2_end);
+    void        locate_onset(const StepEnds &ends, double h, double s2_start, double s2_end,
+                             const std::function<bool(double)> &step_from_start);
     std::string no_equilibrium_message(double t_next, unsigned int cutbacks,
                                        const std::string &why) const;
     double      water_column_mass(const InertiaState &m) const;

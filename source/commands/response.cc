@@ -1,0 +1,106 @@
+// `cdea response FILE.prm`: the small-signal frequency response about the
+// equilibrium at the end of the voltage path (analysis/frequency_response.h):
+// the natural frequencies with their damping, a table of the transfer
+// functions at a few frequencies, and <Base name>_response.h5 with all of
+// them. 0 written, 1 bad input, 2 no equilibrium or not written.
+
+#include <cdea/analysis/frequency_response.h>
+#include <cdea/base/format.h>
+#include <cdea/base/run_control.h>
+#include <cdea/commands/command.h>
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+
+namespace cdea
+{
+  namespace
+  {
+    class Response final : public CommandJob
+    {
+    public:
+      void check(Invocation &invocation) override
+      {
+        input = run_input(invocation.parameters, invocation.parameter_text,
+                          RunMethod::finite_elements, "response");
+      }
+
+      std::string output_path(const Invocation &invocation) const override
+      {
+        return invocation.parameters.results_path("_response");
+      }
+
+      int run(Invocation &invocation) override
+      {
+        const auto        start = std::chrono::steady_clock::now();
+        FrequencyResponse r;
+        try
+          {
+            r = frequency_response(input);
+          }
+        catch (const std::runtime_error &e)
+          {
+            std::cerr << "cdea: " << e.what() << '\n';
+            invocation.output.give_up();
+            return exit_not_complete;
+          }
+        const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        print(r);
+        try
+          {
+            write_response_file(invocation.output.path, invocation.parameter_text, r);
+          }
+        catch (const std::exception &e)
+          {
+            std::cerr << "cdea: the results cannot be written: " << e.what()
+                      << " (an older file of this name stays as it was)\n";
+            return exit_not_complete;
+          }
+        std::cout << r.frequency.size() << " frequencies in " << std::setprecision(3)
+                  << r.seconds * 1e3 << " ms, " << seconds << " s in all\nwrote "
+                  << invocation.output.path << '\n';
+        return exit_success;
+      }
+
+    private:
+      RunInput input;
+
+      void print(const FrequencyResponse &r) const
+      {
+        std::cout << "Equilibrium at " << format_kV(r.bias) << ": displacement "
+                  << format_number(r.displacement * 1e3, 8) << " mm, enclosed volume "
+                  << format_number(r.volume * 1e9, 8) << " mm^3\nMass: disk "
+                  << format_number(r.disk_mass * 1e3) << " g, membrane density "
+                  << format_number(r.density) << " kg/m^3, water column "
+                  << format_number(r.water_mass) << " kg/m^4\n";
+        if (r.mode_frequency.empty())
+          std::cout << "no natural frequencies (no mass)\n";
+        for (std::size_t k = 0; k < r.mode_frequency.size(); ++k)
+          std::cout << "mode " << k + 1 << ": natural frequency "
+                    << format_number(r.mode_frequency[k], 8) << " Hz, damping ratio "
+                    << format_number(r.mode_damping[k], 4) << '\n';
+        std::cout << std::setw(14) << "f (Hz)" << std::setw(18) << "disk (mm/kV)"
+                  << std::setw(14) << "phase (deg)" << std::setw(20) << "volume (mm^3/kV)"
+                  << '\n';
+        const std::size_t n = r.frequency.size(), rows = std::min<std::size_t>(n, 11);
+        for (std::size_t j = 0; j < rows; ++j)
+          {
+            const std::size_t i = rows > 1 ? j * (n - 1) / (rows - 1) : 0;
+            std::cout << std::setw(14) << format_number(r.frequency[i], 5) << std::setw(18)
+                      << format_number(1e6 * std::abs(r.disk_drive[i]), 6) << std::setw(14)
+                      << format_fixed(std::arg(r.disk_drive[i]) * 180. / M_PI, 2)
+                      << std::setw(20) << format_number(1e12 * std::abs(r.volume_drive[i]), 6)
+                      << '\n';
+          }
+      }
+    };
+  } // namespace
+
+  std::unique_ptr<CommandJob> response_job()
+  {
+    return std::make_unique<Response>();
+  }
+} // namespace cdea
