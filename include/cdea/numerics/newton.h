@@ -8,6 +8,13 @@
 // 2-norm decreases (Armijo with c = 1e-4); a residual that is not finite (a
 // trial state outside the Gent limit, say) counts as no decrease.
 //
+// A residual cannot be evaluated more exactly than its round-off level (the
+// problem's residual_floor(): for the FE model eps |K| |x|, which grows with
+// the stiffness, as elements shrink or the film nears its Gent limit). Where
+// that level lies above residual_tolerance times the scale, a state whose
+// residual has reached it and whose update is below update_tolerance has
+// converged as far as double precision allows, and counts as converged.
+//
 // The problem evaluates its residual together with its tangent at every
 // state Newton visits: the tangent of the accepted state is the next
 // iteration's, and that of the converged state is left for whoever needs it.
@@ -39,6 +46,13 @@ namespace cdea
     /// Solve J dx = -r with the tangent of the last evaluate() (zero in
     /// constrained entries; not finite if the tangent is singular).
     virtual void solve_linearized(const Eigen::VectorXd &r, Eigen::VectorXd &dx) = 0;
+    /// The round-off level of the largest residual entry at @p x (absolute,
+    /// in the residual's unit); 0 if the problem cannot tell.
+    virtual double residual_floor(const Eigen::VectorXd &x) const
+    {
+      (void)x;
+      return 0.;
+    }
   };
 
   class NewtonStrategy
