@@ -147,29 +147,39 @@ namespace cdea
   // The Gent law's locking measure (I - 3) / Jlim, I = l1^2 + l2^2 + (l1 l2)^-2:
   // 1 at the limit, where the stiffness grows without bound and the
   // residual's round-off with it.
-  std::string MembraneModel::Impl::gent_limit_note(const Eigen::VectorXd &x) const
+  double MembraneModel::Impl::gent_fraction(const Eigen::VectorXd &x, double &where) const
   {
     const double jlim = scene.material.jlim;
+    double       worst = 0.;
+    where              = 0.;
     if (!(jlim > 0.) || x.size() != solution.size() || !x.allFinite())
-      return "";
+      return 0.;
     std::vector<double> local;
-    double              worst = 0., worst_R = 0.;
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       {
         gather(mesh, x, c, local);
         for (unsigned int q = 0; q < mesh.energy_rule.size(); ++q)
           {
-            const PointKinematics p  = kinematics(mesh, mesh.energy_rule, q, mesh.cells[c], local.data());
-            const double          I  = p.l1 * p.l1 + p.l2 * p.l2 + 1. / (p.l1 * p.l1 * p.l2 * p.l2);
-            const double          to = (I - 3.) / jlim;
+            const PointKinematics p =
+              kinematics(mesh, mesh.energy_rule, q, mesh.cells[c], local.data());
+            const double I  = p.l1 * p.l1 + p.l2 * p.l2 + 1. / (p.l1 * p.l1 * p.l2 * p.l2);
+            const double to = (I - 3.) / jlim;
             if (to > worst)
               {
-                worst   = to;
-                worst_R = p.R;
+                worst = to;
+                where = p.R;
               }
           }
       }
-    if (!(worst > 0.9))
+    return worst;
+  }
+
+  std::string MembraneModel::Impl::gent_limit_note(const Eigen::VectorXd &x) const
+  {
+    double       R     = 0.;
+    const double worst = gent_fraction(x, R);
+    const double jlim  = scene.material.jlim;
+    if (!(worst > near_gent_limit))
       return "";
     std::ostringstream o;
     o << std::setprecision(4);
@@ -180,7 +190,7 @@ namespace cdea
     else
       o << "; the stretch reaches the Gent limit (I1 - 3 = " << worst * jlim
         << " >= Jlim = " << jlim;
-    o << " at r/a = " << std::setprecision(3) << scene.prestretch * worst_R / scene.disk_radius
+    o << " at r/a = " << std::setprecision(3) << scene.prestretch * R / scene.disk_radius
       << (worst < 1. ? "): the film stiffens without bound there, which stalls Newton" :
                        "): the film cannot stretch that far");
     return o.str();

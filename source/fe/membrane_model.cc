@@ -120,7 +120,8 @@ namespace cdea
   double MembraneModel::Impl::residual_floor(const Eigen::VectorXd &x) const
   {
     const BandMatrix &K = system.tangent;
-    if (K.size() != x.size())
+    double            where = 0.;
+    if (K.size() != x.size() || !(gent_fraction(x, where) > near_gent_limit))
       return 0.;
     double largest = 0.;
     for (unsigned int i = 0; i < K.size(); ++i)

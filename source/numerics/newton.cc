@@ -30,11 +30,13 @@ namespace cdea
     }
 
     /// The scaled residual @p res at @p x is at (or below) the residual's
-    /// round-off level, which lies above the tolerance.
+    /// round-off level, which lies above the tolerance (and the settings
+    /// accept that as converged).
     bool at_round_off(const NonlinearProblem &problem, const NewtonSettings &settings,
                       const Eigen::VectorXd &x, const double res)
     {
-      return res * settings.residual_scale <= problem.residual_floor(x);
+      return settings.converge_at_round_off &&
+             res * settings.residual_scale <= problem.residual_floor(x);
     }
 
     std::string no_decrease_message(const NewtonSettings &settings, const unsigned int k,
@@ -110,7 +112,10 @@ namespace cdea
             report.converged = true;
             return report;
           }
-        if (alpha * upd < settings.update_tolerance && at_round_off(problem, settings, x, res))
+        // The full Newton update, not the step the line search took: near a
+        // fold (a nearly singular tangent) the line search shortens a large
+        // update, and a state there is not converged.
+        if (upd < settings.update_tolerance && at_round_off(problem, settings, x, res))
           {
             report.converged = true;
             return report;
