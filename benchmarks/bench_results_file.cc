@@ -6,6 +6,9 @@
 // repetitions.
 //
 //   build/benchmarks/bench_results_file [STEPS [SAMPLES]]
+//
+// Exits with 1 if the replay of the journal does not give back every step
+// it holds, undamaged (the count it prints is checked).
 
 #include <cdea/model/output_fields.h>
 #include <cdea/output/journal.h>
@@ -84,6 +87,7 @@ int main(int argc, char **argv)
 
   std::vector<double> append_us, journal_us, document_us, checkpoint_ms[3], finish_ms, replay_ms;
   std::size_t         file_bytes = 0, journal_bytes = 0;
+  unsigned int        replayed   = 0;
   const unsigned int  marks[3] = {n / 5, n / 2, n};
   for (int repetition = 0; repetition < 5; ++repetition)
     {
@@ -128,8 +132,18 @@ int main(int argc, char **argv)
         const auto t = Clock::now();
         const auto replay = cdea::replay_journal(path + ".journal", path);
         replay_ms.push_back(since(t) * 1e3);
-        if (replay.steps != n)
-          std::cerr << "replay gave " << replay.steps << " steps\n";
+        // The replay must give back every step the journal holds, undamaged.
+        if (replay.steps != n || replay.journal_steps != n || !replay.document ||
+            replay.damaged_at != cdea::no_damage || replay.dropped_bytes != 0)
+          {
+            std::fprintf(stderr,
+                         "bench_results_file: the replay of %u steps gave %u steps (%u step "
+                         "records in the journal, %zu bytes dropped%s)\n",
+                         n, replay.steps, replay.journal_steps, replay.dropped_bytes,
+                         replay.damaged_at != cdea::no_damage ? ", damaged" : "");
+            return 1;
+          }
+        replayed = replay.steps;
       }
       fs::remove_all(out);
       fs::create_directories(out);
@@ -143,7 +157,8 @@ int main(int argc, char **argv)
     std::printf("  checkpoint after %6u steps         %8.1f ms\n", marks[k],
                 median(checkpoint_ms[k]));
   std::printf("  finish (image, write, fsync, rename) %7.1f ms\n", median(finish_ms));
-  std::printf("  rebuild from the journal             %7.1f ms\n", median(replay_ms));
+  std::printf("  rebuild from the journal             %7.1f ms (%u of %u steps replayed)\n",
+              median(replay_ms), replayed, n);
   std::printf("  file %.0f bytes per step, journal %.0f bytes per step\n",
               double(file_bytes) / n, double(journal_bytes) / n);
   fs::remove_all(out);

@@ -9,7 +9,8 @@
 // to the floor; and the same for the CPU time (user + system) of each process,
 // which other jobs on a shared machine disturb much less than the wall time.
 // Interleaving the programs round by round lets a slow phase of the machine hit
-// all of them alike.
+// all of them alike. Exits with 1 if a process fails or the run leaves no
+// results file.
 //
 //   build/benchmarks/bench_startup [ROUNDS] [FILE.prm]
 
@@ -67,6 +68,17 @@ namespace
     const auto as_seconds = [](const timeval &t) { return t.tv_sec + 1e-6 * t.tv_usec; };
     return {seconds, as_seconds(usage.ru_utime) + as_seconds(usage.ru_stime)};
   }
+
+  /// Whether @p folder holds a non-empty finished results file (*.h5).
+  bool results_written(const std::filesystem::path &folder)
+  {
+    std::error_code ec;
+    for (const auto &entry : std::filesystem::directory_iterator(folder, ec))
+      if (entry.path().extension() == ".h5" && entry.path().stem().extension().empty() &&
+          entry.file_size(ec) > 0)
+        return true;
+    return false;
+  }
 } // namespace
 
 int main(int argc, char **argv)
@@ -110,7 +122,15 @@ int main(int argc, char **argv)
         p.wall.push_back(t.wall);
         p.cpu.push_back(t.cpu);
       }
+  // What the timed run computes: beside its exit code (checked above), the
+  // finished results file (not a partial, journal or checkpoint).
+  const bool written = results_written(out);
   std::filesystem::remove_all(out);
+  if (!written)
+    {
+      std::cerr << "bench_startup: cdea run wrote no results file into " << out << '\n';
+      return 1;
+    }
 
   std::cout << "medians of " << rounds << " interleaved rounds (load average at the end: ";
   {

@@ -16,6 +16,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <numeric>
 
 namespace cdea
@@ -41,12 +44,31 @@ namespace cdea
     }
   } // namespace
 
+  namespace
+  {
+    /// The FE space of degree p, built once per degree and process (deal.II's
+    /// FE_Q and FESystem constructors cost more than the rest of a small
+    /// model); read-only once built.
+    std::shared_ptr<const FESystem<1>> shared_fe(const unsigned int degree)
+    {
+      static std::mutex                                            lock;
+      static std::map<unsigned int, std::shared_ptr<const FESystem<1>>> built;
+      const std::lock_guard<std::mutex>                            guard(lock);
+      auto                                                        &fe = built[degree];
+      if (!fe)
+        fe = std::make_shared<const FESystem<1>>(FE_Q<1>(degree), 2);
+      return fe;
+    }
+  } // namespace
+
   struct Discretization::Impl
   {
     explicit Impl(const unsigned int degree)
-      : fe(FE_Q<1>(degree), 2)
+      : fe_pointer(shared_fe(degree))
+      , fe(*fe_pointer)
     {}
-    FESystem<1> fe;
+    std::shared_ptr<const FESystem<1>> fe_pointer;
+    const FESystem<1>                 &fe;
 
     ShapeTable tabulate(const std::vector<double> &points, const std::vector<double> &weights) const
     {

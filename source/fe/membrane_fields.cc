@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 
@@ -143,6 +144,58 @@ namespace cdea
     }
   } // namespace
 
+  // The Gent law's locking measure (I - 3) / Jlim, I = l1^2 + l2^2 + (l1 l2)^-2:
+  // 1 at the limit, where the stiffness grows without bound and the
+  // residual's round-off with it.
+  double MembraneModel::Impl::gent_fraction(const Eigen::VectorXd &x, double &where) const
+  {
+    const double jlim = scene.material.jlim;
+    double       worst = 0.;
+    where              = 0.;
+    if (!(jlim > 0.) || x.size() != solution.size() || !x.allFinite())
+      return 0.;
+    std::vector<double> local;
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        gather(mesh, x, c, local);
+        for (unsigned int q = 0; q < mesh.energy_rule.size(); ++q)
+          {
+            const PointKinematics p =
+              kinematics(mesh, mesh.energy_rule, q, mesh.cells[c], local.data());
+            const double I  = p.l1 * p.l1 + p.l2 * p.l2 + 1. / (p.l1 * p.l1 * p.l2 * p.l2);
+            const double to = (I - 3.) / jlim;
+            if (to > worst)
+              {
+                worst = to;
+                where = p.R;
+              }
+          }
+      }
+    return worst;
+  }
+
+  std::string MembraneModel::Impl::gent_limit_note(const Eigen::VectorXd &x) const
+  {
+    double       R     = 0.;
+    const double worst = gent_fraction(x, R);
+    const double jlim  = scene.material.jlim;
+    if (!(worst > near_gent_limit))
+      return "";
+    std::ostringstream o;
+    o << std::setprecision(4);
+    if (worst < 1.)
+      o << "; the stretch is within " << std::setprecision(2) << 100. * (1. - worst)
+        << std::setprecision(4) << "% of the Gent limit (I1 - 3 = " << worst * jlim
+        << " of Jlim = " << jlim;
+    else
+      o << "; the stretch reaches the Gent limit (I1 - 3 = " << worst * jlim
+        << " >= Jlim = " << jlim;
+    o << " at r/a = " << std::setprecision(3) << scene.prestretch * R / scene.disk_radius
+      << (worst < 1. ? "): the film stiffens without bound there, which stalls Newton" :
+                       "): the film cannot stretch that far");
+    return o.str();
+  }
+
   double MembraneModel::displacement() const
   {
     return std::abs(impl->solution[impl->mesh.z_inner] - impl->solution[impl->mesh.z_outer]);
@@ -234,6 +287,13 @@ namespace cdea
           written.push_back(i);
           f.internal.push_back({declared[i].name, declared[i].unit, declared[i].description, {}});
         }
+    const std::size_t samples = std::size_t(mesh.n_cells()) * t.size();
+    for (std::vector<double> *v : {&f.R, &f.r, &f.z, &f.theta, &f.lambda1, &f.lambda2, &f.s1,
+                                   &f.s2, &f.Phi, &f.E})
+      v->reserve(samples);
+    f.ring.reserve(samples);
+    for (InternalField &field : f.internal)
+      field.values.reserve(samples);
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       {
         gather(mesh, m.solution, c, local);

@@ -92,6 +92,11 @@ namespace cdea
   void MembraneModel::Impl::solve_tangent(const Eigen::VectorXd &b, Eigen::VectorXd &u)
   {
     u = b;
+    solve_in_place(u);
+  }
+
+  void MembraneModel::Impl::solve_in_place(Eigen::VectorXd &u)
+  {
     for (const unsigned int i : mesh.constrained)
       u[i] = 0.;
     // A singular tangent: a non-finite update makes Newton and the arc-length
@@ -113,7 +118,27 @@ namespace cdea
 
   void MembraneModel::Impl::solve_linearized(const Eigen::VectorXd &r, Eigen::VectorXd &dx)
   {
-    solve_tangent(-r, dx);
+    dx = -r;
+    solve_in_place(dx);
+  }
+
+  double MembraneModel::Impl::residual_floor(const Eigen::VectorXd &x) const
+  {
+    const BandMatrix &K = system.tangent;
+    double            where = 0.;
+    if (K.size() != x.size() || !(gent_fraction(x, where) > near_gent_limit))
+      return 0.;
+    double largest = 0.;
+    for (unsigned int i = 0; i < K.size(); ++i)
+      {
+        const unsigned int lo = i > K.bandwidth() ? i - K.bandwidth() : 0;
+        const unsigned int hi = std::min(K.size() - 1, i + K.bandwidth());
+        double             sum = 0.;
+        for (unsigned int j = lo; j <= hi; ++j)
+          sum += std::abs(K.entry(i, j) * x[j]);
+        largest = std::max(largest, sum);
+      }
+    return 10. * std::numeric_limits<double>::epsilon() * largest;
   }
 
   MembraneModel::MembraneModel(const Scene &scene, const FeDiscretization &discretization,
@@ -179,6 +204,7 @@ namespace cdea
         }
     if (!report.converged)
       {
+        report.message += impl->gent_limit_note(impl->solution);
         impl->set_load(old_load);
         impl->solution = old_solution;
         return report;

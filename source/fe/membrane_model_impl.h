@@ -74,6 +74,8 @@ namespace cdea
     bool factorize();
     /// u = K^-1 b with the last tangent (NaN if singular), constrained entries zero.
     void solve_tangent(const Eigen::VectorXd &b, Eigen::VectorXd &u);
+    /// u <- K^-1 u, the same.
+    void solve_in_place(Eigen::VectorXd &u);
     /// The stability of the tangent of the last assembly without the
     /// constrained dofs: positive definite, and the smallest eigenvalue if
     /// @p with_eigenvalue.
@@ -81,6 +83,23 @@ namespace cdea
 
     void evaluate(const Eigen::VectorXd &x, Eigen::VectorXd &r) override;
     void solve_linearized(const Eigen::VectorXd &r, Eigen::VectorXd &dx) override;
+    /// 10 eps max_i sum_j |K_ij| |x_j| with the tangent of the last assembly
+    /// that had one: a residual entry is a difference of terms that large
+    /// (the positions carry eps |x| each, the tangent turns that into forces).
+    /// Only within 10 % of the Gent limit (0 elsewhere): the cause this
+    /// floor is for; elsewhere Newton converges as it always did.
+    double residual_floor(const Eigen::VectorXd &x) const override;
+
+    /// The largest (I - 3) / Jlim over the quadrature points at @p x (1 at
+    /// the Gent limit; 0 if not finite), and its reference radius @p where.
+    double gent_fraction(const Eigen::VectorXd &x, double &where) const;
+    /// Within 10 % of the Gent limit: where Newton may stop at the
+    /// residual's round-off level, and a failure names the limit.
+    static constexpr double near_gent_limit = 0.9;
+    /// Why a solve that ended at @p x may have failed, if the Gent limit
+    /// is the cause: where gent_fraction() exceeds near_gent_limit, a
+    /// sentence naming the limit (starting with "; "); empty otherwise.
+    std::string gent_limit_note(const Eigen::VectorXd &x) const;
 
     /// Residual scale of Newton and the corrector (N).
     double residual_scale() const;

@@ -10,6 +10,8 @@ namespace cdea
     , two_pi_H(2. * M_PI * scene.material.thickness)
     , voltages(scene.n_rings(), 0.)
   {
+    for (unsigned int i = 0; i < mesh.dofs_per_cell(); ++i)
+      (mesh.component[i] == 0 ? r_dofs : z_dofs).push_back(i);
     set_law(std::move(law));
   }
 
@@ -82,25 +84,7 @@ namespace cdea
             out.residual[i] += w * (law.stress.s1 * s.dl1[i] + law.stress.s2 * s.dl2[i]);
           }
         if (flags & assemble_tangent)
-          {
-            // w [t11 dl1_i dl1_j + t12 (dl1_i dl2_j + dl2_i dl1_j) + t22 dl2_i dl2_j
-            //    + s1 ((dr'_i dr'_j + dz'_i dz'_j) - dl1_i dl1_j) / l1]
-            // = u_i dl1_j + v_i dl2_j + [same component] c g_i g_j with
-            // u = w ((t11 - s1/l1) dl1 + t12 dl2), v = w (t12 dl1 + t22 dl2), c = w s1/l1.
-            const StressTangent &t  = law.tangent;
-            const double         c  = w * law.stress.s1 / p.l1;
-            const double         a1 = w * t.s11 - c, a2 = w * t.s12, a3 = w * t.s22;
-            double              *K  = out.tangent.data();
-            for (unsigned int i = 0; i < n; ++i)
-              {
-                const double u  = a1 * s.dl1[i] + a2 * s.dl2[i];
-                const double v  = a2 * s.dl1[i] + a3 * s.dl2[i];
-                const double cg = c * s.gradient[i];
-                for (unsigned int j = 0; j < n; ++j)
-                  K[i * n + j] += u * s.dl1[j] + v * s.dl2[j] +
-                                  (comp[i] == comp[j] ? cg * s.gradient[j] : 0.);
-              }
-          }
+          add_point_tangent(law, p, w, s, out.tangent.data());
         if (flags & assemble_parameter_derivatives)
           {
             for (const auto &[parameter, column] : law_parameter_columns(*in.layout, ring))
@@ -117,6 +101,42 @@ namespace cdea
           }
       }
     return true;
+  }
+
+  // w [t11 dl1_i dl1_j + t12 (dl1_i dl2_j + dl2_i dl1_j) + t22 dl2_i dl2_j
+  //    + s1 ((dr'_i dr'_j + dz'_i dz'_j) - dl1_i dl1_j) / l1]
+  // = u_i dl1_j + v_i dl2_j + [same component] c g_i g_j with
+  // u = w ((t11 - s1/l1) dl1 + t12 dl2), v = w (t12 dl1 + t22 dl2), c = w s1/l1.
+  // dl2_j = 0 for a z dof: those columns take u_i dl1_j (+ c g_i g_j for a z
+  // row) alone, the same numbers as the whole sum with its zero terms.
+  void MembraneTerm::add_point_tangent(const LawResponse &law, const PointKinematics &p,
+                                       const double w, const CellScratch &s, double *K) const
+  {
+    const unsigned int   n  = mesh.dofs_per_cell();
+    const StressTangent &t  = law.tangent;
+    const double         c  = w * law.stress.s1 / p.l1;
+    const double         a1 = w * t.s11 - c, a2 = w * t.s12, a3 = w * t.s22;
+    const double        *dl1 = s.dl1.data(), *dl2 = s.dl2.data(), *g = s.gradient.data();
+    for (const unsigned int i : r_dofs)
+      {
+        const double u = a1 * dl1[i] + a2 * dl2[i], v = a2 * dl1[i] + a3 * dl2[i];
+        const double cg = c * g[i];
+        double      *row = K + i * n;
+        for (const unsigned int j : r_dofs)
+          row[j] += u * dl1[j] + v * dl2[j] + cg * g[j];
+        for (const unsigned int j : z_dofs)
+          row[j] += u * dl1[j];
+      }
+    for (const unsigned int i : z_dofs)
+      {
+        const double u = a1 * dl1[i] + a2 * dl2[i], v = a2 * dl1[i] + a3 * dl2[i];
+        const double cg = c * g[i];
+        double      *row = K + i * n;
+        for (const unsigned int j : r_dofs)
+          row[j] += u * dl1[j] + v * dl2[j];
+        for (const unsigned int j : z_dofs)
+          row[j] += u * dl1[j] + cg * g[j];
+      }
   }
 
   // The residual w (s1 dl1_i + s2 dl2_i) at a point R = x0 + h xi moves with

@@ -1,6 +1,7 @@
 #include <cdea/numerics/band_matrix.h>
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <limits>
 
@@ -13,7 +14,11 @@ namespace cdea
     values.assign(std::size_t(3 * bw + 1) * n, 0.);
   }
 
-  void BandMatrix::set_zero() { std::fill(values.begin(), values.end(), 0.); }
+  void BandMatrix::set_zero()
+  {
+    // All bits zero is +0.0; memset, where std::fill stays an element loop at -O2.
+    std::memset(values.data(), 0, values.size() * sizeof(double));
+  }
 
   double BandMatrix::entry(const unsigned int i, const unsigned int j) const
   {

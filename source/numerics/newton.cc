@@ -29,6 +29,16 @@ namespace cdea
       return 0.;
     }
 
+    /// The scaled residual @p res at @p x is at (or below) the residual's
+    /// round-off level, which lies above the tolerance (and the settings
+    /// accept that as converged).
+    bool at_round_off(const NonlinearProblem &problem, const NewtonSettings &settings,
+                      const Eigen::VectorXd &x, const double res)
+    {
+      return settings.converge_at_round_off &&
+             res * settings.residual_scale <= problem.residual_floor(x);
+    }
+
     std::string no_decrease_message(const NewtonSettings &settings, const unsigned int k,
                                     const double res)
     {
@@ -75,6 +85,13 @@ namespace cdea
         const double alpha = line_search(problem, settings, x, dx, r.norm(), trial, r_trial);
         if (alpha == 0.)
           {
+            // No decrease from a state already at its round-off level, with
+            // an update below the tolerance: as converged as it can be.
+            if (upd < settings.update_tolerance && at_round_off(problem, settings, x, res))
+              {
+                report.converged = true;
+                return report;
+              }
             report.message = no_decrease_message(settings, k, res);
             return report;
           }
@@ -91,6 +108,14 @@ namespace cdea
         // far below the tolerance, so another iteration is not needed.
         if (res < settings.residual_tolerance && alpha == 1. &&
             upd < std::sqrt(settings.update_tolerance) * 1e-2)
+          {
+            report.converged = true;
+            return report;
+          }
+        // The full Newton update, not the step the line search took: near a
+        // fold (a nearly singular tangent) the line search shortens a large
+        // update, and a state there is not converged.
+        if (upd < settings.update_tolerance && at_round_off(problem, settings, x, res))
           {
             report.converged = true;
             return report;

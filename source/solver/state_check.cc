@@ -35,6 +35,37 @@ namespace cdea
       const int o3 = orientation(u, v, p), o4 = orientation(u, v, q);
       return o1 * o2 < 0 && o3 * o4 < 0;
     }
+    /// Whether two segments of the polyline that are not neighbours cross:
+    /// only segments whose r-ranges overlap can, so a sweep over the segments
+    /// by their smallest r compares each with those still open at that r
+    /// (linear for a meridian that turns back in r only locally, where every
+    /// pair would be quadratic in the samples).
+    bool crosses_itself(const std::vector<Point2> &line)
+    {
+      const std::size_t        segments = line.size() < 2 ? 0 : line.size() - 1;
+      std::vector<std::size_t> order(segments), open;
+      const auto               r_min = [&](const std::size_t i) {
+        return std::min(line[i].r, line[i + 1].r);
+      };
+      const auto r_max = [&](const std::size_t i) { return std::max(line[i].r, line[i + 1].r); };
+      for (std::size_t i = 0; i < segments; ++i)
+        order[i] = i;
+      std::sort(order.begin(), order.end(),
+                [&](const std::size_t a, const std::size_t b) { return r_min(a) < r_min(b); });
+      for (const std::size_t i : order)
+        {
+          open.erase(std::remove_if(open.begin(), open.end(),
+                                    [&](const std::size_t j) { return r_max(j) < r_min(i); }),
+                     open.end());
+          for (const std::size_t j : open)
+            if ((i > j ? i - j : j - i) >= 2 &&
+                cross(line[std::min(i, j)], line[std::min(i, j) + 1], line[std::max(i, j)],
+                      line[std::max(i, j) + 1]))
+              return true;
+          open.push_back(i);
+        }
+      return false;
+    }
   } // namespace
 
   int nonphysical_flags(const StepFields &f, const double frame_radius)
@@ -65,14 +96,8 @@ namespace cdea
       r_monotone = line[i + 1].r >= line[i].r;
     if (r_monotone)
       return flags;
-    // Otherwise every pair of segments: O(n^2) over a few hundred samples.
-    for (std::size_t i = 0; i + 1 < line.size() && !(flags & self_intersection); ++i)
-      for (std::size_t j = i + 2; j + 1 < line.size(); ++j)
-        if (cross(line[i], line[i + 1], line[j], line[j + 1]))
-          {
-            flags |= self_intersection;
-            break;
-          }
+    if (crosses_itself(line))
+      flags |= self_intersection;
     return flags;
   }
 

@@ -77,8 +77,14 @@ namespace cdea
                                  const LawResponse &law, const CellScratch &scratch,
                                  CellContribution &out) const;
 
+    /// The tangent of one point added into @p K (local, row-major).
+    void add_point_tangent(const LawResponse &law, const PointKinematics &p, double w,
+                           const CellScratch &s, double *K) const;
+
     const Discretization              &mesh;
     const double                       two_pi_H;
+    /// The local dofs of r and of z.
+    std::vector<unsigned int>          r_dofs, z_dofs;
     std::shared_ptr<const MembraneLaw> law_;
     std::vector<double>                voltages;
     double                             dt     = 0.;
