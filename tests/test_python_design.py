@@ -131,3 +131,22 @@ def test_fit_bad_input():
                  {"Time/Enabled": True, "Material/Model": "viscoelastic"})
     with pytest.raises(ValueError, match="cannot read data file 'missing.csv'"):
         cdea.fit(text, "missing.csv")
+
+
+def test_fit_of_a_law_constant():
+    """A law's own constant by its entry: the same values as `cdea fit`, and
+    the refusals of a name the law lacks and of Jlim without the Gent limit."""
+    text = prm_text("fit-example.prm", "fit")
+    csv = os.path.join(SRC, "prm", "fit-example.csv")
+    overrides = {"Material/Model": "mooney-rivlin", "Material/Shear modulus (kPa)": 25,
+                 "Calibration/Free parameters": "shear modulus, Mooney-Rivlin C2"}
+    result = cdea.fit(text, csv, overrides)
+    assert result.converged
+    assert list(result.values) == ["shear modulus (Pa)", "Mooney-Rivlin C2 (kPa)"]
+    c2, e = result.values["Mooney-Rivlin C2 (kPa)"], result.standard_errors["Mooney-Rivlin C2 (kPa)"]
+    assert c2 >= 0 and e > 0
+    with pytest.raises(ValueError, match="'ogden alpha 1' is not a parameter that can be fitted "
+                       "with Material/Model = mooney-rivlin"):
+        cdea.fit(text, csv, dict(overrides, **{"Calibration/Free parameters": "Ogden alpha 1"}))
+    with pytest.raises(ValueError, match="'jlim': Material/Model = neo-hooke has no Jlim"):
+        cdea.fit(text, csv, {"Material/Model": "neo-hooke"})

@@ -107,21 +107,41 @@ namespace cdea
 
 
 
-    /// The free parameters with large entries in @p v (a singular vector).
+    /// The free parameters with large entries in @p v (a singular vector);
+    /// the largest one if none is large.
     std::string parameter_names(const Eigen::VectorXd &v, const FitSettings &settings)
     {
       std::string list;
       for (std::size_t j = 0; j < settings.free.size(); ++j)
         if (std::abs(v[j]) > 0.1)
           list += (list.empty() ? "" : ", ") + label(settings.free[j]);
+      if (list.empty())
+        {
+          Eigen::Index largest = 0;
+          v.cwiseAbs().maxCoeff(&largest);
+          list = label(settings.free[std::size_t(largest)]);
+        }
       return list;
     }
 
-    /// Bounds inside the laws' range: positive constants, a taut film, Jlim
-    /// above the pre-stretched film's I - 3 (in the scaled variables q).
-    void set_lower_bounds(ceres::Problem &problem, std::vector<double> &q, const Scene &base,
-                          const FitSettings &settings, const std::vector<double> &scale)
+    /// The interval of a law constant @p p that the law @p law declares.
+    LawConstant declared_range(const MembraneLaw &law, const SceneParameter &p)
     {
+      for (const LawConstant &c : law.own_constants())
+        if (c.entry == p.entry)
+          return c;
+      return {p.entry};
+    }
+
+    /// Bounds inside the laws' range: positive film constants, a taut film,
+    /// Jlim above the pre-stretched film's I - 3, a law's own constants in
+    /// the interval the law declares (in the scaled variables q). A law's
+    /// further checks (Ogden's mu_p alpha_p >= 0) fail the evaluation of a
+    /// step beyond them, which Levenberg-Marquardt rejects and shortens.
+    void set_bounds(ceres::Problem &problem, std::vector<double> &q, const Scene &base,
+                    const FitSettings &settings, const std::vector<double> &scale)
+    {
+      const auto law = base.law();
       for (std::size_t j = 0; j < settings.free.size(); ++j)
         {
           double lower = 1e-3;
@@ -131,6 +151,15 @@ namespace cdea
             {
               const double l = base.prestretch;
               lower          = 1.001 * (2. * l * l + std::pow(l, -4) - 3.) / scale[j];
+            }
+          if (settings.free[j].kind == ParameterKind::law_constant)
+            {
+              const LawConstant range = declared_range(*law, settings.free[j]);
+              if (std::isfinite(range.upper))
+                problem.SetParameterUpperBound(q.data(), int(j), range.upper / scale[j]);
+              lower = range.lower / scale[j];
+              if (!std::isfinite(lower))
+                continue;
             }
           problem.SetParameterLowerBound(q.data(), int(j), lower);
         }
@@ -161,7 +190,13 @@ namespace cdea
       const std::size_t K = settings.free.size(), M = std::size_t(Jw.rows());
       Eigen::VectorXd   norms(K);
       for (std::size_t j = 0; j < K; ++j)
-        norms[j] = Jw.col(j).norm();
+        {
+          // A column of zeros (the displacements do not depend on that
+          // parameter) stays zero: its singular vector names it.
+          norms[j] = Jw.col(j).norm();
+          if (!(norms[j] > 0.))
+            norms[j] = 1.;
+        }
       const Eigen::MatrixXd             Jn = Jw * norms.cwiseInverse().asDiagonal();
       Eigen::JacobiSVD<Eigen::MatrixXd> svd(Jn, Eigen::ComputeThinV);
       const Eigen::VectorXd            &sv = svd.singularValues();
@@ -215,8 +250,14 @@ namespace cdea
     FitResult         r;
     for (const auto &p : settings.free)
       r.initial.push_back(parameter_value(base, p));
-    const std::vector<double> scale = r.initial;
-    std::vector<double>       q(K, 1.);
+    // q_j = p_j / |p0_j|: 1 in size at the start (a law constant that
+    // starts at 0, such as a Mooney-Rivlin C2, in units of its entry).
+    std::vector<double> scale;
+    for (const double p0 : r.initial)
+      scale.push_back(p0 != 0. ? std::abs(p0) : 1.);
+    std::vector<double> q(K);
+    for (std::size_t j = 0; j < K; ++j)
+      q[j] = r.initial[j] / scale[j];
 
     r.standard_errors.assign(K, nan);
     r.correlation = Eigen::MatrixXd::Constant(K, K, nan);
@@ -230,7 +271,7 @@ namespace cdea
     ceres::Problem problem;
     problem.AddResidualBlock(
       new DisplacementResiduals(model, data, scale, r.evaluations, failure), nullptr, q.data());
-    set_lower_bounds(problem, q, base, settings, scale);
+    set_bounds(problem, q, base, settings, scale);
     ceres::Solver::Options options = solver_options(settings);
     Progress               callback(progress, q, scale);
     options.callbacks.push_back(&callback);

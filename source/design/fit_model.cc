@@ -188,34 +188,86 @@ namespace cdea
     return data;
   }
 
+  namespace
+  {
+    /// The film's and the load's parameters a fit may free, by their names
+    /// in Calibration/Free parameters.
+    const std::vector<std::pair<std::string, ParameterKind>> &scene_parameter_names()
+    {
+      static const std::vector<std::pair<std::string, ParameterKind>> kinds = {
+        {"shear modulus", ParameterKind::shear_modulus},
+        {"jlim", ParameterKind::jlim},
+        {"permittivity", ParameterKind::permittivity},
+        {"mass", ParameterKind::mass},
+        {"pre-stretch", ParameterKind::prestretch}};
+      return kinds;
+    }
+
+    /// An entry without its unit: "Mooney-Rivlin C2 (kPa)" -> "Mooney-Rivlin C2".
+    std::string without_unit(const std::string &entry)
+    {
+      const auto open = entry.rfind(" (");
+      return open != std::string::npos && entry.back() == ')' ? entry.substr(0, open) : entry;
+    }
+
+    /// The names Calibration/Free parameters accepts under @p law: the
+    /// film's constants it depends on, permittivity, mass, pre-stretch and
+    /// the law's own constants (their entries of subsection Material).
+    std::string allowed_names(const MembraneLaw &law)
+    {
+      std::string list = "shear modulus";
+      if (law.depends_on(LawParameter::jlim))
+        list += ", Jlim";
+      list += ", permittivity, mass, pre-stretch";
+      for (const LawConstant &c : law.own_constants())
+        list += ", " + c.entry;
+      return list;
+    }
+
+    /// The parameter @p key (lower case) names under @p law; InputError
+    /// naming the entry @p name and what this law allows.
+    SceneParameter free_parameter(const std::string &key, const std::string &name,
+                                  const MembraneLaw &law, const std::string &model)
+    {
+      const std::string under =
+        model == LawSettings().model ? "" : " with Material/Model = " + model;
+      for (const auto &[text, kind] : scene_parameter_names())
+        if (key == text)
+          {
+            // Under a law without the Gent limit the displacement does not
+            // depend on Jlim: a free Jlim would make the fit singular.
+            if (kind == ParameterKind::jlim && !law.depends_on(LawParameter::jlim))
+              throw InputError(name + ": 'jlim': Material/Model = " + model +
+                               " has no Jlim, the displacements do not depend on it (any of " +
+                               allowed_names(law) + ")");
+            return {kind, 0};
+          }
+      for (const LawConstant &c : law.own_constants())
+        if (key == lower_case(c.entry) || key == lower_case(without_unit(c.entry)))
+          return {ParameterKind::law_constant, 0, c.entry};
+      throw InputError(name + ": '" + key + "' is not a parameter that can be fitted" + under +
+                       " (any of " + allowed_names(law) + ")");
+    }
+  } // namespace
+
   FitSettings fit_settings(const Parameters &p)
   {
     require_quasi_static_elastic(p, "fit");
-    const std::string name = "Calibration/Free parameters";
-    static const std::pair<const char *, ParameterKind> kinds[] = {
-      {"shear modulus", ParameterKind::shear_modulus},
-      {"jlim", ParameterKind::jlim},
-      {"permittivity", ParameterKind::permittivity},
-      {"mass", ParameterKind::mass},
-      {"pre-stretch", ParameterKind::prestretch}};
-    FitSettings s;
+    const std::string name  = "Calibration/Free parameters";
+    const auto        law   = p.scene().law();
+    FitSettings       s;
     for (const std::string &item : split_list(p.calibration.free_parameters_text, ','))
       {
-        const auto fields = fields_of(item);
-        const std::string key = lower_case(fields.empty() ? "" : fields[0]);
-        const auto        hit = std::find_if(std::begin(kinds), std::end(kinds),
-                                      [&](const auto &k) { return key == k.first; });
-        if (hit == std::end(kinds))
-          throw InputError(name + ": '" + key + "' is not a parameter that can be fitted (any "
-                           "of shear modulus, Jlim, permittivity, mass, pre-stretch)");
+        const auto           fields = fields_of(item);
+        const std::string    key    = lower_case(fields.empty() ? "" : fields[0]);
+        const SceneParameter free   = free_parameter(key, name, *law, p.material_law.model);
         for (const auto &f : s.free)
-          if (f.kind == hit->second)
+          if (f.kind == free.kind && f.entry == free.entry)
             throw InputError(name + ": '" + key + "' is given twice");
-        s.free.push_back({hit->second, 0});
+        s.free.push_back(free);
       }
     if (s.free.empty())
-      throw InputError(name + ": no parameter given (any of shear modulus, Jlim, permittivity, "
-                       "mass, pre-stretch)");
+      throw InputError(name + ": no parameter given (any of " + allowed_names(*law) + ")");
     s.max_iterations = p.calibration.max_iterations;
     s.tolerance      = p.calibration.tolerance;
     if (p.wrinkling.model != WrinklingModel::check)

@@ -24,6 +24,8 @@ namespace cdea
           return {"Loading", "Mass (g)", exact_number(value * 1e3)};
         case ParameterKind::prestretch:
           return {"Geometry", "Prestretch", exact_number(value)};
+        case ParameterKind::law_constant:
+          return {"Material", p.entry, exact_number(value)};
         default:
           throw std::invalid_argument("fitted_entry: " + p.name() + " is not a fit parameter");
       }

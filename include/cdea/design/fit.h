@@ -1,8 +1,10 @@
 #pragma once
 // `cdea fit FILE.prm DATA.csv`: least-squares calibration of material and
 // load parameters (subsection Calibration: any of shear modulus, Jlim,
-// permittivity, mass, pre-stretch) to measured disk displacements at given
-// ring voltages (doc/optimization.md, "Calibration").
+// permittivity, mass, pre-stretch, and the own constants of the law of
+// Material/Model by their entries, Jlim only under a law that has it) to
+// measured disk displacements at given ring voltages (doc/optimization.md,
+// "Calibration").
 //
 // Every data point is the state reached by ramping its ring voltages
 // proportionally from zero (the branch continued from zero voltage), as
@@ -60,7 +62,9 @@ namespace cdea
     double                      tolerance      = 1e-10;
   };
 
-  /// Subsection Calibration checked; throws InputError naming the parameter.
+  /// Subsection Calibration checked; throws InputError naming the parameter
+  /// and, for a name the law of Material/Model does not have (or Jlim under
+  /// a law without the Gent limit), the names this law allows.
   FitSettings fit_settings(const Parameters &p);
 
   /// Throws InputError (naming the data @p name) if @p data has fewer points
