@@ -16,6 +16,7 @@ namespace cdea
   std::unique_ptr<CommandJob> recover_job();          // commands/recover.cc
   std::unique_ptr<CommandJob> optimize_job();         // commands/optimize.cc
   std::unique_ptr<CommandJob> fit_job();              // commands/fit.cc
+  std::unique_ptr<CommandJob> chart_job();            // commands/chart.cc
   std::unique_ptr<CommandJob> print_parameters_job(); // commands/print_parameters.cc
   std::unique_ptr<CommandJob> version_job();          // commands/version.cc
   std::unique_ptr<CommandJob> help_job();             // commands/help.cc
@@ -61,6 +62,11 @@ namespace cdea
         "(subsection Calibration), <Base name>_fit.h5"},
        reads_parameters | stops_on_signals | in_python, Ranks::one, Output::claimed_first,
        fit_job},
+      {"chart", {"FILE.prm"},
+       {"material charts of Material/Model: uniaxial and\n"
+        "equibiaxial stress-stretch, the DMA chart of a\n"
+        "viscoelastic law, <Base name>_chart.h5"},
+       reads_parameters, Ranks::one, Output::claimed_first, chart_job},
       {"print-parameters", {"", "--json"},
        {"print a complete, documented parameter file",
         "the same parameters and defaults as JSON"},
