@@ -383,22 +383,32 @@ namespace cdea
     return m.str();
   }
 
+  // The next step's end @p t_next (the breakpoint itself when the
+  // controller reaches it, so no round-off step is left) and length @p h;
+  // false with the message when h is below the resolution of t.
+  bool TimeStepper::next_step(StepController &control, const double breakpoint, double &t_next,
+                              double &h)
+  {
+    const double to_go = breakpoint - t_now;
+    const double step  = control.step_towards(to_go);
+    t_next             = step == to_go ? breakpoint : t_now + step;
+    h                  = t_next - t_now;
+    if (h > 0.)
+      return true;
+    result.message =
+      "time " + format_number(t_now, 12) + " s: the time step is below the resolution of t";
+    return false;
+  }
+
   // One step from t_now towards @p breakpoint, accepted (true, the model and
   // t_now at its end) or cut back (true, nothing changed); false if the run
   // ends here (the message in the result).
   bool TimeStepper::take_step(StepController &control, const double breakpoint,
                               StepSummary &previous)
   {
-    const double to_go  = breakpoint - t_now;
-    const double step   = control.step_towards(to_go);
-    const double t_next = step == to_go ? breakpoint : t_now + step;
-    const double h      = t_next - t_now;
-    if (!(h > 0.))
-      {
-        result.message = "time " + format_number(t_now, 12) +
-                         " s: the time step is below the resolution of t";
-        return false;
-      }
+    double t_next = 0., h = 0.;
+    if (!next_step(control, breakpoint, t_next, h))
+      return false;
     StepEnds ends;
     ends.state0             = model.state();
     ends.motion0            = motion;
@@ -641,16 +651,9 @@ namespace cdea
   bool TimeStepper::take_esdirk_step(StepController &control, const double breakpoint,
                                      StepSummary &previous)
   {
-    const double to_go  = breakpoint - t_now;
-    const double step   = control.step_towards(to_go);
-    const double t_next = step == to_go ? breakpoint : t_now + step;
-    const double h      = t_next - t_now;
-    if (!(h > 0.))
-      {
-        result.message = "time " + format_number(t_now, 12) +
-                         " s: the time step is below the resolution of t";
-        return false;
-      }
+    double t_next = 0., h = 0.;
+    if (!next_step(control, breakpoint, t_next, h))
+      return false;
     const SolveReport solved = esdirk->take(point, h);
     result.solves += esdirk->solves();
     result.newton_iterations += esdirk->iterations();

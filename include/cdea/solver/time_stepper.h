@@ -160,6 +160,7 @@ namespace cdea
     bool                run_quasi_static();
     StepSummary         start_time_stage();
     StepControlSettings step_control() const;
+    bool        next_step(StepController &control, double breakpoint, double &t_next, double &h);
     bool        take_step(StepController &control, double breakpoint, StepSummary &previous);
     double      initial_step() const;
     void        start_esdirk();
