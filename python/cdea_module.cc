@@ -64,6 +64,8 @@ void require_directory_of(const std::string &file)
   throw py::error_already_set();
 }
 
+py::dict response_dict(const FrequencyResponse &r); // python/response_bindings.cc
+
 namespace
 {
   bool is_sequence(const py::handle value)
@@ -489,46 +491,6 @@ namespace
       });
   }
 
-  /// cdea.run, cdea.shoot, cdea.sweep and cdea.parameters.
-  /// The columns of @p values times @p factor as a numpy array (rows x
-  /// columns, or rows if one column).
-  py::array complex_array(const Eigen::MatrixXcd &values, const double factor)
-  {
-    const bool vector = values.cols() == 1;
-    py::array_t<std::complex<double>> a(
-      vector ? std::vector<py::ssize_t>{values.rows()} :
-               std::vector<py::ssize_t>{values.rows(), values.cols()});
-    std::complex<double> *out = a.mutable_data();
-    for (Eigen::Index i = 0; i < values.rows(); ++i)
-      for (Eigen::Index k = 0; k < values.cols(); ++k)
-        *out++ = factor * values(i, k);
-    return a;
-  }
-
-  /// `cdea response` in-process: the datasets of <Base name>_response.h5
-  /// (complex arrays for the transfer functions) in a dict.
-  py::dict response_dict(const FrequencyResponse &r)
-  {
-    const auto n = static_cast<py::ssize_t>(r.frequency.size());
-    const auto m = static_cast<py::ssize_t>(r.mode_frequency.size());
-    std::vector<double> bias_kV;
-    for (const double v : r.bias)
-      bias_kV.push_back(v * 1e-3);
-    py::dict d;
-    d["frequency_Hz"]            = real_array(r.frequency, {n});
-    d["disk_mm_per_kV"]          = complex_array(r.disk, 1e6);
-    d["volume_mm3_per_kV"]       = complex_array(r.volume_per_volt, 1e12);
-    d["drive_disk_mm_per_kV"]    = complex_array(r.disk_drive, 1e6);
-    d["drive_volume_mm3_per_kV"] = complex_array(r.volume_drive, 1e12);
-    d["mode_frequency_Hz"]       = real_array(r.mode_frequency, {m});
-    d["mode_damping_ratio"]      = real_array(r.mode_damping, {m});
-    d["bias_voltage_kV"]         = real_array(bias_kV, {py::ssize_t(bias_kV.size())});
-    d["displacement_mm"]         = r.displacement * 1e3;
-    d["volume_mm3"]              = r.volume * 1e9;
-    d["drive_scale_kV"]          = r.drive_scale * 1e-3;
-    return d;
-  }
-
   void bind_response(py::module_ &m, const std::string &prm_doc)
   {
     m.def(
@@ -548,6 +510,7 @@ namespace
        "complex). " + prm_doc).c_str());
   }
 
+  /// cdea.run, cdea.shoot, cdea.sweep, cdea.parameters and cdea.response.
   void bind_runs(py::module_ &m)
   {
     const std::string prm_doc = "prm: the path of a parameter file (str or os.PathLike) or its "

@@ -7,6 +7,8 @@
 2. No include cycle between files (a header and its source count as one file).
 3. No function in source/, include/ or python/ longer than 80 lines, from the
    first line of its declaration to its closing brace.
+4. No file there longer than 600 lines (a file that grows past it holds more
+   than one concern).
 
 Usage: structure_check.py [SOURCE_DIR] [--list-functions N]
 Prints every violation with its file and line; exits 1 if there is one.
@@ -16,6 +18,7 @@ import re
 import sys
 
 MAX_FUNCTION_LINES = 80
+MAX_FILE_LINES = 600
 
 
 def folder_order(root):
@@ -259,6 +262,9 @@ def check_function_lengths(root, listing=0):
     problems, all_functions = [], []
     for path, _ in code_files(root):
         text = open(os.path.join(root, path), encoding="utf-8").read()
+        n_lines = text.count("\n")
+        if n_lines > MAX_FILE_LINES:
+            problems.append(f"{path}: {n_lines} lines (at most {MAX_FILE_LINES} in a file)")
         for name, first, last in functions(text):
             lines = last - first + 1
             all_functions.append((lines, f"{path}:{first}: {name}"))

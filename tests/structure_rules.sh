@@ -14,7 +14,8 @@ else
 fi
 
 # A scratch tree: folders a -> b, a file of a that includes b (upward), two
-# files of b that include each other, and a function of 93 lines.
+# files of b that include each other, a function of 93 lines and a file of
+# 601 lines.
 mkdir -p tree/doc tree/include/cdea/a tree/include/cdea/b tree/source/a tree/source/b
 printf '# x\n## Folder order\n\n    a -> b\n' > tree/doc/architecture.md
 printf '#pragma once\n#include <cdea/b/two.h>\n' > tree/include/cdea/a/up.h
@@ -25,12 +26,13 @@ printf '#pragma once\n#include <cdea/b/one.h>\n' > tree/include/cdea/b/two.h
   for i in $(seq 1 90); do printf '  int x%d = %d;\n' "$i" "$i"; done
   printf '}\n'
 } > tree/source/a/up.cc
+for i in $(seq 1 601); do printf '// line %d\n' "$i"; done > tree/source/b/long_file.cc
 
 if out=$("$PYTHON" "$check" tree 2>&1); then
-  fail "structure_check passed a tree with three problems"; echo "$out"
+  fail "structure_check passed a tree with four problems"; echo "$out"
 else
   ok "structure_check fails on the scratch tree"
-  for expected in "a/up.h" "b/one -> b/two" "long_function"; do
+  for expected in "a/up.h" "b/one -> b/two" "long_function" "long_file.cc: 601 lines"; do
     if grep -q "$expected" <<< "$out"; then ok "names $expected"
     else fail "does not name $expected:"; echo "$out"; fi
   done
