@@ -95,13 +95,13 @@ round() { # round old|new
   # CPU time of the process (user + system): less sensitive to other jobs.
   record "$1" optimize8_cpu_s '^optimize: 8 rings[^,]*, [0-9]* starts *[0-9.]* *[0-9.]* *\([0-9.]*\).*'
   record "$1" fit_cpu_s '^fit: [^0-9]*20 points *[0-9.]* *[0-9.]* *\([0-9.]*\).*'
-  bench "$1" bench_time "$repo/prm/pump-time.prm" 0 3 1
+  bench "$1" bench_time "$repo/prm/pump-time.prm" 0 3 1 0
   record "$1" time_ms ".*median time per run (no output):$number"
   record "$1" time_cpu_ms ".*median time per run (no output):[^(]*(CPU$number"
 }
 echo
 echo "speed: $rounds rounds of bench_default ${default_prm#$repo/} 31 3, bench_sweep ${sweep_prm#$repo/} 3 0,"
-echo "       bench_optimize 3 8 8 and bench_time prm/pump-time.prm 0 3 1"
+echo "       bench_optimize 3 8 8 and bench_time prm/pump-time.prm 0 3 1 0"
 for ((k = 1; k <= rounds; ++k)); do
   if ((k % 2)); then round old; round new; else round new; round old; fi
   echo "  round $k of $rounds done (load average $(cut -d' ' -f1 /proc/loadavg))"

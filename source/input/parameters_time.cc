@@ -41,21 +41,22 @@ namespace cdea
                         "are linear between rows and start from 0 V at t = 0 when the first row "
                         "is later.");
       prm.declare_entry("Time step (s)", "0.01", Double(),
-                        "Largest time step (ESDIRK schemes: for a sine at most 1/16 of its "
-                        "period); steps land on every ramp end, square edge and table row and "
-                        "are halved where Newton needs it. backward Euler, trapezoidal and "
-                        "Step control = fixed: the step itself.");
+                        "ESDIRK schemes with Step control = error (the default): the cap on the "
+                        "steps the error estimate sizes (for a sine at most 1/16 of its period). "
+                        "backward Euler, trapezoidal and Step control = fixed: the step itself. "
+                        "Steps land on every ramp end, square edge and table row and are halved "
+                        "where Newton needs it.");
       prm.declare_entry("Min time step (s)", "1e-8", Double(),
                         "A step cut below this ends the run (exit code 2).");
-      prm.declare_entry("Scheme", "backward Euler",
+      prm.declare_entry("Scheme", "ESDIRK4",
                         Selection("ESDIRK3|ESDIRK4|backward Euler|trapezoidal"),
-                        "backward Euler (the default), trapezoidal: the fixed-step schemes for the "
-                        "dashpots (first and second order), the inertia by Newmark's average "
-                        "acceleration; they take steps of Time step (s) (Step control does not "
-                        "apply). ESDIRK3, ESDIRK4: L-stable diagonally implicit Runge-Kutta methods of "
-                        "order 3 (3 implicit stages) and 4 (5 stages) for the film's internal "
-                        "variables, the disk's and the water's inertia alike, with an error "
-                        "estimate (Step control).");
+                        "ESDIRK4 (the default), ESDIRK3: L-stable diagonally implicit Runge-Kutta "
+                        "methods of order 4 (5 implicit stages) and 3 (3 stages) for the film's "
+                        "internal variables, the disk's and the water's inertia alike, with an "
+                        "error estimate (Step control). backward Euler, trapezoidal: the "
+                        "fixed-step schemes for the dashpots (first and second order), the inertia "
+                        "by Newmark's average acceleration; they take steps of Time step (s) "
+                        "(Step control does not apply).");
       prm.declare_entry("Step control", "error", Selection("error|fixed"),
                         "ESDIRK schemes: error: each step's local error estimate against the "
                         "tolerances sizes the next step (up to Time step (s)); fixed: steps of "

@@ -46,8 +46,10 @@ namespace cdea
     double       max_step     = 0.01; ///< s
     double       min_step     = 1e-8; ///< s; a step cut below it ends the run
     unsigned int max_cutbacks = 30;
-    /// A fixed-step scheme (backward Euler, the parameter file's default,
-    /// or trapezoidal) or an ESDIRK method with or without error control.
+    /// A fixed-step scheme (backward Euler or trapezoidal) or an ESDIRK
+    /// method with or without error control. The parameter file's default is
+    /// ESDIRK4 with error control (time_settings() sets it); this struct's
+    /// stays backward Euler for the C++ callers that build a fixed-step run.
     TimeMethod      method  = TimeMethod::backward_euler;
     TimeStepControl control = TimeStepControl::error;
     /// Error control: a step is accepted if every estimate e of its local
