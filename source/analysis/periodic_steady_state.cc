@@ -298,7 +298,10 @@ namespace cdea
     TimePoint point = lift(x);
     step->clear_history();
     const double k   = esdirk_tableau(time.method)->embedded_order + 1.;
-    const double cap = std::min(time.max_step, period / 32.);
+    // Error control: steps at most T/32 (Time/Time step (s) is the time
+    // runs' cap, below a slow drive's needs); fixed steps: Time/Time step (s).
+    const bool   control = time.control == TimeStepControl::error;
+    const double cap     = control ? period / 32. : std::min(time.max_step, period / 32.);
     auto keep = [&](PeriodRecord &r) {
       r.t.push_back(point.t);
       r.z.push_back(point.motion.z);
@@ -330,7 +333,7 @@ namespace cdea
           }
         const SolveReport solved = step->take(point, h);
         const double      ratio  = step->error_ratio();
-        if (!solved.converged || (adapt && !(ratio <= 1.)))
+        if (!solved.converged || (adapt && control && !(ratio <= 1.)))
           {
             if (!adapt || h < time.min_step)
               throw std::runtime_error("the period map failed at t = " + format_number(point.t) +
@@ -357,7 +360,8 @@ namespace cdea
         if (adapt)
           {
             chosen.push_back(h);
-            h *= std::clamp(0.9 * std::pow(std::max(ratio, 1e-10), -1. / k), 0.2, 5.);
+            h = control ? h * std::clamp(0.9 * std::pow(std::max(ratio, 1e-10), -1. / k), 0.2, 5.) :
+                          cap;
           }
       }
     if (adapt)

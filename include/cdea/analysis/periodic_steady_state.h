@@ -13,7 +13,7 @@
 // is the disk's acceleration m a.
 //
 // P is the ESDIRK integration (solver/esdirk_step.h) over [0, T], landing on
-// the waveform's breakpoints, steps at most T/32 and Time/Time step (s).
+// the waveform's breakpoints, steps at most T/32 (with fixed steps: Time/Time step (s)).
 // Newton on P(x) - x = 0 with Jacobian-free GMRES on (I - dP/dx), the
 // directional derivatives as differences of period maps on a frozen step
 // sequence (the one the error control chose for the current iterate), so
