@@ -65,6 +65,8 @@ void require_directory_of(const std::string &file)
 }
 
 py::dict response_dict(const FrequencyResponse &r); // python/response_bindings.cc
+void bind_frequency_sweep(py::module_ &, const std::string &, // python/response_bindings.cc
+                          ParameterInput (*)(const py::object &, const py::object &));
 
 namespace
 {
@@ -551,6 +553,7 @@ namespace
       py::arg("prm") = "", py::arg("overrides") = py::none(),
       ("Every parameter, validated, as a results file stores them. " + prm_doc).c_str());
     bind_response(m, prm_doc);
+    bind_frequency_sweep(m, prm_doc, parameter_input);
   }
 } // namespace
 

@@ -13,6 +13,7 @@ namespace cdea
   std::unique_ptr<CommandJob> compare_job();          // commands/compare.cc
   std::unique_ptr<CommandJob> sweep_job();            // commands/sweep.cc
   std::unique_ptr<CommandJob> response_job();         // commands/response.cc
+  std::unique_ptr<CommandJob> frequency_sweep_job();  // commands/frequency_sweep.cc
   std::unique_ptr<CommandJob> recover_job();          // commands/recover.cc
   std::unique_ptr<CommandJob> optimize_job();         // commands/optimize.cc
   std::unique_ptr<CommandJob> fit_job();              // commands/fit.cc
@@ -48,6 +49,12 @@ namespace cdea
         "natural frequencies, <Base name>_response.h5"},
        reads_parameters | time_runs | in_python, Ranks::one, Output::claimed_first,
        response_job},
+      {"frequency-sweep", {"FILE.prm"},
+       {"periodic steady states of the waveform over the\n"
+        "frequencies of subsection Frequency sweep: stroke,\n"
+        "dissipation, loss of tension, the usable band,\n"
+        "<Base name>_frequency_sweep.h5"},
+       reads_parameters | time_runs, Ranks::one, Output::claimed_first, frequency_sweep_job},
       {"recover", {"FILE.h5"},
        {"rebuild the results of a killed run from its\n"
         "journal FILE.h5.journal"},

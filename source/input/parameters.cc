@@ -315,6 +315,8 @@ namespace cdea
     parameters::Time::declare(prm);
     parameters::LoadTerms::declare(prm, [&](const EntryDeclaration &e) { return !in_reservoir(e); });
     parameters::Response::declare(prm);
+    parameters::SteadyState::declare(prm);
+    parameters::FrequencySweep::declare(prm);
   }
 
   void Parameters::parse(ParameterHandler &prm)
@@ -336,6 +338,8 @@ namespace cdea
     time.parse(prm);
     load_terms.parse(prm);
     response.parse(prm);
+    steady_state.parse(prm);
+    frequency_sweep.parse(prm);
   }
 
   std::string to_string(const Continuation choice)

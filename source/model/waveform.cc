@@ -21,7 +21,8 @@ namespace cdea
   }
 
   Waveform Waveform::square(const std::vector<double> &peak, const double frequency,
-                            const unsigned int cycles, const double rise_time)
+                            const unsigned int cycles, const double rise_time,
+                            const double low_fraction)
   {
     const double period = 1. / frequency;
     if (!(frequency > 0.) || cycles == 0 || !(rise_time > 0.) || !(rise_time < 0.5 * period))
@@ -31,8 +32,12 @@ namespace cdea
     w.kind_      = WaveformKind::square;
     w.peak_      = peak;
     w.frequency_ = frequency;
+    w.low_       = low_fraction;
     w.end        = cycles * period;
-    const std::vector<double> zero(peak.size(), 0.);
+    std::vector<double> low(peak.size(), 0.);
+    for (std::size_t i = 0; i < peak.size(); ++i)
+      low[i] = low_fraction == 0. ? 0. : low_fraction * peak[i];
+    const std::vector<double> &zero = low;
     for (unsigned int k = 0; k < cycles; ++k)
       {
         const double t0 = k * period;
@@ -50,7 +55,7 @@ namespace cdea
   }
 
   Waveform Waveform::sine(const std::vector<double> &peak, const double frequency,
-                          const unsigned int cycles)
+                          const unsigned int cycles, const double low_fraction)
   {
     if (!(frequency > 0.) || cycles == 0)
       throw std::invalid_argument("Waveform::sine: frequency > 0 and cycles > 0");
@@ -58,6 +63,7 @@ namespace cdea
     w.kind_      = WaveformKind::sine;
     w.peak_      = peak;
     w.frequency_ = frequency;
+    w.low_       = low_fraction;
     w.end        = cycles / frequency;
     w.knot_times = {0., w.end};
     return w;
@@ -95,10 +101,11 @@ namespace cdea
   {
     if (kind_ == WaveformKind::sine)
       {
+        // low + (peak - low) (1 - cos(2 pi f t)) / 2, low = low_ peak
         std::vector<double> v = peak_;
         const double        s = 0.5 * (1. - std::cos(2. * M_PI * frequency_ * t));
         for (double &x : v)
-          x *= s;
+          x *= low_ + (1. - low_) * s;
         return v;
       }
     if (t <= knot_times.front())
@@ -151,7 +158,7 @@ namespace cdea
       {
         const double s = M_PI * frequency_ * std::sin(2. * M_PI * frequency_ * t);
         for (std::size_t i = 0; i < v.size(); ++i)
-          v[i] = peak_[i] * s;
+          v[i] = (1. - low_) * peak_[i] * s;
         return v;
       }
     if (knot_times.size() < 2)

@@ -174,6 +174,8 @@ namespace cdea
     parameters::Time           time;         ///< parameters_time.h
     parameters::LoadTerms      load_terms;   ///< parameters_plugins.h
     parameters::Response        response;         ///< parameters_dynamics.h
+    parameters::SteadyState     steady_state;     ///< parameters_dynamics.h
+    parameters::FrequencySweep  frequency_sweep;  ///< parameters_dynamics.h
 
     static void declare(dealii::ParameterHandler &prm);
     void        parse(dealii::ParameterHandler &prm);

@@ -1,9 +1,13 @@
 #pragma once
 // Parameters of the small-signal frequency response (subsection Response,
 // `cdea response`, doc/dynamics.md), with declare/parse as in parameters.h;
-// checked by validate_dynamics() (validation.h).
+// checked by validate_dynamics() (validation.h). The periodic steady states
+// (subsection Steady state) and the frequency sweep (subsection Frequency
+// sweep) of `cdea frequency-sweep`, checked by that command
+// (analysis/frequency_sweep.h, frequency_sweep_settings()).
 
 #include <string>
+#include <vector>
 
 namespace dealii
 {
@@ -21,6 +25,29 @@ namespace cdea
       unsigned int frequencies;
       unsigned int modes;
       double       membrane_density;
+      static void  declare(dealii::ParameterHandler &prm);
+      void         parse(dealii::ParameterHandler &prm);
+    };
+
+    struct SteadyState
+    {
+      double       tolerance;
+      unsigned int max_newton_iterations;
+      unsigned int krylov_dimension;
+      unsigned int start_periods;
+      double       low_fraction;
+      static void  declare(dealii::ParameterHandler &prm);
+      void         parse(dealii::ParameterHandler &prm);
+    };
+
+    struct FrequencySweep
+    {
+      double       lowest_frequency_Hz;
+      double       highest_frequency_Hz;
+      int          frequencies; ///< as given (checked by the command)
+      bool         log_spacing;
+      std::string  frequency_list; ///< "Frequencies (Hz)" as given; empty: the range
+      double       usable_factor;
       static void  declare(dealii::ParameterHandler &prm);
       void         parse(dealii::ParameterHandler &prm);
     };

@@ -30,9 +30,14 @@ namespace cdea
 
     /// Volts per ring; times in seconds.
     static Waveform ramp_hold(const std::vector<double> &peak, double ramp_time, double hold_time);
+    /// The square wave and the sine swing between @p low_fraction times the
+    /// peak and the peak (0: from 0 V, as the time runs drive them; the
+    /// periodic steady states of analysis/periodic_steady_state.h drive a
+    /// small swing about a bias with a fraction close to 1).
     static Waveform square(const std::vector<double> &peak, double frequency, unsigned int cycles,
-                           double rise_time);
-    static Waveform sine(const std::vector<double> &peak, double frequency, unsigned int cycles);
+                           double rise_time, double low_fraction = 0.);
+    static Waveform sine(const std::vector<double> &peak, double frequency, unsigned int cycles,
+                         double low_fraction = 0.);
     /// Rows of strictly increasing times >= 0 with one voltage per ring each.
     static Waveform table(const std::vector<double> &times,
                           const std::vector<std::vector<double>> &voltages);
@@ -44,6 +49,8 @@ namespace cdea
     double       end_time() const { return end; }
     /// Drive frequency (Hz) of a periodic waveform, 0 otherwise.
     double frequency() const { return frequency_; }
+    /// The square wave's and the sine's low voltage over the peak (0 else).
+    double low_fraction() const { return low_; }
 
     std::vector<double> voltages(double t) const;
     /// The voltages at @p t on the piece between knots that holds @p inside,
@@ -59,6 +66,7 @@ namespace cdea
     WaveformKind                     kind_      = WaveformKind::ramp_hold;
     std::vector<double>              peak_;
     double                           frequency_ = 0.;
+    double                           low_       = 0.;
     double                           end        = 0.;
     std::vector<double>              knot_times;
     std::vector<std::vector<double>> knot_voltages;

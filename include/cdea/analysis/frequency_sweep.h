@@ -1,0 +1,51 @@
+#pragma once
+// `cdea frequency-sweep FILE.prm` and cdea.frequency_sweep(): the periodic
+// steady state (analysis/periodic_steady_state.h) of the prm's waveform at
+// each frequency of subsection Frequency sweep, with the stroke amplitude,
+// mean displacement, swept (pumped) volume, dissipation per cycle, the
+// smallest hoop stress over the period, the loss-of-tension flag and the
+// usable band (doc/dynamics.md, "Periodic steady states and the frequency
+// sweep").
+
+#include <cdea/analysis/periodic_steady_state.h>
+#include <cdea/analysis/run_input.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace cdea
+{
+  struct FrequencySweepSettings
+  {
+    std::vector<double> frequencies; ///< Hz, increasing
+    double              usable_factor = 1.5;
+    SteadyStateSettings steady;
+  };
+
+  /// The settings of subsections Frequency sweep and Steady state; throws
+  /// InputError naming the entry (an empty or non-positive list, a waveform
+  /// that is not periodic, a tolerance out of range).
+  FrequencySweepSettings frequency_sweep_settings(const Parameters &p);
+
+  struct FrequencySweepResult
+  {
+    std::vector<SteadyPeriod> periods;
+    double quasi_static_amplitude = 0.; ///< m
+    std::vector<int> usable;            ///< 1 or 0 per frequency
+    /// The usable band: the longest run of consecutive usable frequencies
+    /// (NaN if none).
+    double band_low = 0., band_high = 0.; ///< Hz
+    double usable_factor = 0.;
+    double seconds       = 0.;
+    bool   all_converged = true;
+  };
+
+  /// The sweep; @p on_frequency is called after each frequency (progress).
+  FrequencySweepResult frequency_sweep(const RunInput &input, const FrequencySweepSettings &s,
+                                       const std::function<void(const SteadyPeriod &)> &on_frequency);
+
+  /// <Base name>_frequency_sweep.h5 of @p r.
+  void write_frequency_sweep_file(const std::string &path, const std::string &parameter_text,
+                                  const FrequencySweepResult &r);
+} // namespace cdea

@@ -1,0 +1,185 @@
+#include <cdea/analysis/frequency_sweep.h>
+#include <cdea/base/format.h>
+#include <cdea/base/text.h>
+#include <cdea/output/hdf5_writer.h>
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#ifndef CDEA_VERSION
+#  define CDEA_VERSION "unknown"
+#endif
+
+namespace cdea
+{
+  namespace
+  {
+    std::vector<double> sweep_frequencies(const parameters::FrequencySweep &f)
+    {
+      std::vector<double> list;
+      if (!trim_blanks(f.frequency_list).empty())
+        {
+          list = parse_number_list(f.frequency_list, "Frequency sweep/Frequencies (Hz)");
+          for (std::size_t i = 0; i < list.size(); ++i)
+            if (!(list[i] > 0. && list[i] <= 1e6) || (i > 0 && !(list[i] > list[i - 1])))
+              throw InputError("Frequency sweep/Frequencies (Hz) must be increasing frequencies "
+                               "above 0 and at most 1e6 Hz, got " + f.frequency_list);
+          return list;
+        }
+      require_positive(f.lowest_frequency_Hz, "Frequency sweep/Lowest frequency (Hz)");
+      if (f.frequencies < 1 || f.frequencies > 100000)
+        throw InputError("Frequency sweep/Frequencies must be between 1 and 100000, got " +
+                         std::to_string(f.frequencies));
+      if (!(f.highest_frequency_Hz >= f.lowest_frequency_Hz && f.highest_frequency_Hz <= 1e6) ||
+          (f.frequencies > 1 && !(f.highest_frequency_Hz > f.lowest_frequency_Hz)))
+        throw InputError("Frequency sweep/Highest frequency (Hz) must be above Frequency "
+                         "sweep/Lowest frequency (Hz) (" + format_number(f.lowest_frequency_Hz) +
+                         ") and at most 1e6, got " + format_number(f.highest_frequency_Hz));
+      const double lo = f.lowest_frequency_Hz, hi = f.highest_frequency_Hz;
+      for (int i = 0; i < f.frequencies; ++i)
+        {
+          const double s = f.frequencies > 1 ? double(i) / (f.frequencies - 1) : 0.;
+          list.push_back(f.log_spacing ? lo * std::pow(hi / lo, s) : lo + s * (hi - lo));
+        }
+      return list;
+    }
+  } // namespace
+
+  FrequencySweepSettings frequency_sweep_settings(const Parameters &p)
+  {
+    if (!p.time.enabled)
+      throw InputError("cdea frequency-sweep needs Time/Enabled = true (the waveform, inertia "
+                       "and time integration of a time run)");
+    if (p.time.waveform != WaveformKind::sine && p.time.waveform != WaveformKind::square)
+      throw InputError("Time/Waveform must be sine or square (periodic) for a frequency sweep, "
+                       "got " + to_string(p.time.waveform));
+    FrequencySweepSettings s;
+    s.frequencies = sweep_frequencies(p.frequency_sweep);
+    if (p.time.waveform == WaveformKind::square && !(p.time.rise_time_s < 0.5 / s.frequencies.back()))
+      throw InputError("Time/Rise time (s) (" + format_number(p.time.rise_time_s) +
+                       ") must be below half the period of the highest frequency (" +
+                       format_number(s.frequencies.back()) + " Hz) of the square wave");
+    s.usable_factor = p.frequency_sweep.usable_factor;
+    require_range(s.usable_factor, 1., 1e6, "Frequency sweep/Usable stroke factor", "");
+    const auto &st = p.steady_state;
+    require_range(st.tolerance, 1e-14, 0.1, "Steady state/Tolerance", "");
+    require_range(st.low_fraction, 0., 0.999999, "Steady state/Low voltage (fraction of peak)",
+                  "", true);
+    s.steady.tolerance     = st.tolerance;
+    s.steady.max_newton    = st.max_newton_iterations;
+    s.steady.max_krylov    = st.krylov_dimension;
+    s.steady.start_periods = st.start_periods;
+    s.steady.low_fraction  = st.low_fraction;
+    return s;
+  }
+
+  namespace
+  {
+    /// Usable: taut, and the stroke within the factor of the quasi-static one;
+    /// the band: the longest run of consecutive usable frequencies.
+    void usable_band(FrequencySweepResult &r)
+    {
+      const double qs = r.quasi_static_amplitude, F = r.usable_factor;
+      std::size_t  best_start = 0, best_length = 0, start = 0, length = 0;
+      for (std::size_t i = 0; i < r.periods.size(); ++i)
+        {
+          const SteadyPeriod &s = r.periods[i];
+          const bool ok = s.converged && !s.loss_of_tension && s.stroke_amplitude <= F * qs &&
+                          s.stroke_amplitude >= qs / F;
+          r.usable.push_back(ok ? 1 : 0);
+          length = ok ? length + 1 : 0;
+          start  = ok && length == 1 ? i : start;
+          if (length > best_length)
+            {
+              best_length = length;
+              best_start  = start;
+            }
+        }
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      r.band_low       = best_length ? r.periods[best_start].frequency : nan;
+      r.band_high      = best_length ? r.periods[best_start + best_length - 1].frequency : nan;
+    }
+  } // namespace
+
+  FrequencySweepResult frequency_sweep(const RunInput &input, const FrequencySweepSettings &s,
+                                       const std::function<void(const SteadyPeriod &)> &on_frequency)
+  {
+    const auto           clock_start = std::chrono::steady_clock::now();
+    FrequencySweepResult r;
+    r.usable_factor = s.usable_factor;
+    PeriodicSteadyState steady(input.parameters, input.scene, s.steady);
+    r.quasi_static_amplitude = steady.quasi_static_amplitude();
+    for (const double f : s.frequencies)
+      {
+        r.periods.push_back(steady.solve(f));
+        r.all_converged = r.all_converged && r.periods.back().converged;
+        if (on_frequency)
+          on_frequency(r.periods.back());
+      }
+    usable_band(r);
+    r.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+    return r;
+  }
+
+  void write_frequency_sweep_file(const std::string &path, const std::string &parameter_text,
+                                  const FrequencySweepResult &r)
+  {
+    Hdf5Writer w(path);
+    w.attribute("/", "parameters", parameter_text);
+    w.attribute("/", "code_version", std::string(CDEA_VERSION));
+    w.attribute("/", "quasi_static_amplitude_mm", r.quasi_static_amplitude * 1e3);
+    w.attribute("/", "usable_stroke_factor", r.usable_factor);
+    w.attribute("/", "usable_band_low_Hz", r.band_low);
+    w.attribute("/", "usable_band_high_Hz", r.band_high);
+    w.attribute("/", "seconds", r.seconds);
+    const std::size_t n = r.periods.size();
+    w.group("/sweep");
+    auto column = [&](const std::string &name, const std::string &unit,
+                      const std::string &description, auto value) {
+      std::vector<double> v;
+      for (const SteadyPeriod &s : r.periods)
+        v.push_back(value(s));
+      w.dataset("/sweep/" + name, {n}, v, unit, description);
+    };
+    column("frequency_Hz", "Hz", "drive frequency", [](auto &s) { return s.frequency; });
+    column("stroke_amplitude_mm", "mm", "half the peak-to-peak of z(A) over the steady period",
+           [](auto &s) { return s.stroke_amplitude * 1e3; });
+    column("mean_displacement_mm", "mm", "z(A) averaged over the steady period",
+           [](auto &s) { return s.mean_displacement * 1e3; });
+    column("harmonic_real_mm", "mm", "z(A)'s first harmonic c: z = mean + Re(c exp(i w t)) + ...",
+           [](auto &s) { return s.first_harmonic.real() * 1e3; });
+    column("harmonic_imag_mm", "mm", "imaginary part of c",
+           [](auto &s) { return s.first_harmonic.imag() * 1e3; });
+    column("swept_volume_mm3", "mm^3",
+           "peak-to-peak of the enclosed volume: the volume pumped per cycle with the water "
+           "load, the swept volume without",
+           [](auto &s) { return s.volume_swing * 1e9; });
+    column("dissipated_energy_mJ", "mJ", "the branches' dissipation over the period",
+           [](auto &s) { return s.dissipated * 1e3; });
+    column("electrical_work_mJ", "mJ", "the voltage source's work over the period",
+           [](auto &s) { return s.electrical_work * 1e3; });
+    column("energy_defect", "1", "|electrical work - dissipated - stored change| / dissipated",
+           [](auto &s) { return s.energy_defect(); });
+    column("s2_min_kPa", "kPa", "smallest hoop stress over the period",
+           [](auto &s) { return s.s2_min * 1e-3; });
+    column("periodicity_defect", "1", "weighted periodicity defect (Steady state/Tolerance)",
+           [](auto &s) { return std::max(s.defect, s.check_move); });
+    column("seconds", "s", "computing time of the frequency", [](auto &s) { return s.seconds; });
+    std::vector<int> flag, converged, newton, maps;
+    for (const SteadyPeriod &s : r.periods)
+      {
+        flag.push_back(s.loss_of_tension ? 1 : 0);
+        converged.push_back(s.converged ? 1 : 0);
+        newton.push_back(int(s.newton_iterations));
+        maps.push_back(int(s.period_maps));
+      }
+    w.dataset("/sweep/loss_of_tension", flag, "1: the swing reaches loss of tension (s2 < 0)");
+    w.dataset("/sweep/usable", r.usable, "1: taut and the stroke within the usable factor");
+    w.dataset("/sweep/converged", converged, "1: the periodic steady state converged");
+    w.dataset("/sweep/newton_iterations", newton, "Newton iterations");
+    w.dataset("/sweep/period_maps", maps, "periods integrated (GMRES, checks, start)");
+    w.commit();
+  }
+} // namespace cdea

@@ -1,0 +1,129 @@
+// `cdea frequency-sweep FILE.prm`: the periodic steady state of the prm's
+// waveform at each frequency of subsection Frequency sweep
+// (analysis/frequency_sweep.h), a line per frequency as it is done (with the
+// time left, base/progress.h), the usable band, and
+// <Base name>_frequency_sweep.h5. 0 written, 1 bad input, 2 a frequency
+// without a steady state (the file is written with it flagged) or not written.
+
+#include <cdea/analysis/frequency_sweep.h>
+#include <cdea/base/format.h>
+#include <cdea/base/progress.h>
+#include <cdea/base/run_control.h>
+#include <cdea/commands/command.h>
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+
+namespace cdea
+{
+  namespace
+  {
+    class FrequencySweepJob final : public CommandJob
+    {
+    public:
+      void check(Invocation &invocation) override
+      {
+        input    = run_input(invocation.parameters, invocation.parameter_text,
+                             RunMethod::finite_elements, "frequency-sweep");
+        settings = frequency_sweep_settings(invocation.parameters);
+      }
+
+      std::string output_path(const Invocation &invocation) const override
+      {
+        return invocation.parameters.results_path("_frequency_sweep");
+      }
+
+      int run(Invocation &invocation) override
+      {
+        FrequencySweepResult r;
+        print_header();
+        const auto start = std::chrono::steady_clock::now();
+        std::size_t done = 0;
+        try
+          {
+            r = frequency_sweep(input, settings, [&](const SteadyPeriod &s) {
+              ++done;
+              const double elapsed =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+              print_row(s, done, elapsed);
+            });
+          }
+        catch (const std::runtime_error &e)
+          {
+            std::cerr << "cdea: " << e.what() << '\n';
+            invocation.output.give_up();
+            return exit_not_complete;
+          }
+        print_summary(r);
+        try
+          {
+            write_frequency_sweep_file(invocation.output.path, invocation.parameter_text, r);
+          }
+        catch (const std::exception &e)
+          {
+            std::cerr << "cdea: the results cannot be written: " << e.what()
+                      << " (an older file of this name stays as it was)\n";
+            return exit_not_complete;
+          }
+        std::cout << "wrote " << invocation.output.path << '\n';
+        return r.all_converged ? exit_success : exit_not_complete;
+      }
+
+    private:
+      RunInput               input;
+      FrequencySweepSettings settings;
+
+      void print_header() const
+      {
+        std::cout << "Periodic steady states of the " << to_string(input.parameters.time.waveform)
+                  << " wave at " << settings.frequencies.size()
+                  << " frequencies (tolerance " << format_number(settings.steady.tolerance, 3)
+                  << ")\n"
+                  << std::setw(10) << "f (Hz)" << std::setw(13) << "stroke (mm)" << std::setw(12)
+                  << "mean (mm)" << std::setw(15) << "volume (mm^3)" << std::setw(15)
+                  << "dissip. (mJ)" << std::setw(13) << "min s2 (kPa)" << std::setw(8)
+                  << "Newton" << std::setw(7) << "maps" << std::setw(9) << "time (s)"
+                  << "  progress\n";
+      }
+
+      void print_row(const SteadyPeriod &s, const std::size_t done, const double elapsed) const
+      {
+        const std::size_t n    = settings.frequencies.size();
+        const double      left = elapsed / done * (n - done);
+        std::cout << std::setw(10) << format_number(s.frequency, 5) << std::setw(13)
+                  << format_fixed(s.stroke_amplitude * 1e3, 5) << std::setw(12)
+                  << format_fixed(s.mean_displacement * 1e3, 4) << std::setw(15)
+                  << format_number(s.volume_swing * 1e9, 6) << std::setw(15)
+                  << format_number(s.dissipated * 1e3, 5) << std::setw(13)
+                  << format_fixed(s.s2_min * 1e-3, 3) << std::setw(8) << s.newton_iterations
+                  << std::setw(7) << s.period_maps << std::setw(9) << format_fixed(s.seconds, 2)
+                  << "  " << done << "/" << n << ", " << format_duration(left) << " left"
+                  << (s.loss_of_tension ? "  LOSS OF TENSION" : "") << std::endl;
+        if (!s.converged)
+          std::cerr << "cdea: " << s.message << '\n';
+      }
+
+      void print_summary(const FrequencySweepResult &r) const
+      {
+        std::cout << "quasi-static stroke amplitude (film relaxed): "
+                  << format_number(r.quasi_static_amplitude * 1e3, 6) << " mm\n"
+                  << "usable band (taut, stroke within a factor "
+                  << format_number(r.usable_factor) << " of the quasi-static one): ";
+        if (std::isnan(r.band_low))
+          std::cout << "none\n";
+        else
+          std::cout << format_number(r.band_low, 5) << " to " << format_number(r.band_high, 5)
+                    << " Hz\n";
+        std::cout << r.periods.size() << " frequencies in " << std::setprecision(3) << r.seconds
+                  << " s\n";
+      }
+    };
+  } // namespace
+
+  std::unique_ptr<CommandJob> frequency_sweep_job()
+  {
+    return std::make_unique<FrequencySweepJob>();
+  }
+} // namespace cdea
