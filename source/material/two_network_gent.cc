@@ -27,13 +27,14 @@ namespace cdea
     struct SpringB
     {
       double  energy = 0.;
+      Vector2 xi; ///< exp(e) where it was evaluated
       Vector2 W_l, W_e;
       Matrix2 W_ll, W_ee, W_le;
 
       bool evaluate(const MembraneLaw &spring, const double l1, const double l2, const Vector2 &e,
                     const bool with_energy)
       {
-        const Vector2 xi(std::exp(e[0]), std::exp(e[1]));
+        xi = Vector2(std::exp(e[0]), std::exp(e[1]));
         const Vector2 al(l1 / xi[0], l2 / xi[1]);
         LawResponse   r;
         if (!spring.evaluate({al[0], al[1], 0.}, InternalStep{},
@@ -140,36 +141,42 @@ namespace cdea
     /// rate q0 for the trapezoidal rule): G(e) = c M^-1 (e - e0) - f + W_e =
     /// 0, c = 1/dt (backward Euler) or 2/dt (trapezoidal, with f = M^-1 q0);
     /// H = c M^-1 + W_ee. Newton from @p e with step halving while outside
-    /// spring B's Gent limit, until the update is below 1e-13 (then e and
-    /// spring B there, @p w, are kept). False if it fails.
+    /// the spring's range, until the update is below 1e-13 (then e and the
+    /// spring there, @p w, with its energy if @p with_energy, are kept).
+    /// False if it fails.
     bool update_viscous_strain(const MembraneLaw &spring, const LawInput &in,
                                const InternalStep &step, const Matrix2 &M_inv,
-                               const Vector2 &e0, const Vector2 &q0, Vector2 &e, SpringB &w)
+                               const Vector2 &e0, const Vector2 &q0, const bool with_energy,
+                               Vector2 &e, SpringB &w)
     {
       const bool    trapezoidal = step.scheme == TimeScheme::trapezoidal;
       const double  c           = (trapezoidal ? 2. : 1.) / step.dt;
       const Vector2 f           = trapezoidal ? Vector2(M_inv * q0) : Vector2::Zero();
+      if (!w.evaluate(spring, in.l1, in.l2, e, with_energy))
+        return false;
       for (unsigned int it = 0; it < 60; ++it)
         {
-          if (!w.evaluate(spring, in.l1, in.l2, e, false))
-            return false;
           const Vector2 G  = c * M_inv * (e - e0) - f + w.W_e;
           const Matrix2 H  = c * M_inv + w.W_ee;
           Vector2       de = -solve(H, G);
           if (!de.allFinite())
             return false;
-          // e is within |de| of the root: keep it and its spring B.
+          // e is within |de| of the root: keep it and its spring.
           if (de.lpNorm<Eigen::Infinity>() <= 1e-13)
             return true;
+          // The spring is evaluated at the trial point, which is where the
+          // next iteration starts if it lies inside the range.
+          bool   inside = false;
           double lambda = 1.;
-          for (unsigned int k = 0; k < 40; ++k, lambda *= 0.5)
+          for (unsigned int k = 0; k < 40 && !inside; ++k, lambda *= 0.5)
             {
               const Vector2 trial = e + lambda * de;
-              const double  a1 = in.l1 / std::exp(trial[0]), a2 = in.l2 / std::exp(trial[1]);
-              if (spring.range_margin(a1, a2) > 0.)
-                break;
+              inside              = w.evaluate(spring, in.l1, in.l2, trial, with_energy);
+              if (inside)
+                e = trial;
             }
-          e += lambda * de;
+          if (!inside)
+            return false;
         }
       return false;
     }
@@ -177,14 +184,15 @@ namespace cdea
     /// Network B at the updated e: the internal variables xi = exp(e) and
     /// the rate at the end of the step, de/dt = M sigma = -M W_e, into
     /// step.current; its part of the incremental potential, of the stress
-    /// and of the condensed tangent W_ll - W_le H^-1 W_el added to @p out.
+    /// and of the condensed tangent W_ll - W_le H^-1 W_el added to @p out
+    /// (the tangent only if @p with_tangent).
     void add_network_b(const SpringB &w, const Vector2 &e, const Vector2 &e0, const Vector2 &q0,
                        const InternalStep &step, const Matrix2 &M, const Matrix2 &M_inv,
-                       LawResponse &out)
+                       const bool with_tangent, LawResponse &out)
     {
       const Vector2 q = -M * w.W_e;
-      step.current[0] = std::exp(e[0]);
-      step.current[1] = std::exp(e[1]);
+      step.current[0] = w.xi[0]; // exp(e)
+      step.current[1] = w.xi[1];
       step.current[2] = q[0];
       step.current[3] = q[1];
 
@@ -197,13 +205,18 @@ namespace cdea
             energy += de.dot(M_inv * de) / step.dt - (M_inv * q0).dot(de);
           else
             energy += 0.5 * de.dot(M_inv * de) / step.dt;
-          const Matrix2 H =
-            (step.scheme == TimeScheme::trapezoidal ? 2. : 1.) / step.dt * M_inv + w.W_ee;
-          K -= w.W_le * H.inverse() * w.W_le.transpose();
+          if (with_tangent)
+            {
+              const Matrix2 H =
+                (step.scheme == TimeScheme::trapezoidal ? 2. : 1.) / step.dt * M_inv + w.W_ee;
+              K -= w.W_le * H.inverse() * w.W_le.transpose();
+            }
         }
       out.energy += energy;
       out.stress.s1 += w.W_l[0];
       out.stress.s2 += w.W_l[1];
+      if (!with_tangent)
+        return;
       // The condensed tangent is symmetric up to round-off: take its mean.
       out.tangent.s11 += K(0, 0);
       out.tangent.s12 += 0.5 * (K(0, 1) + K(1, 0));
@@ -215,8 +228,8 @@ namespace cdea
   {
     /// Branch @p n of network B over @p step (its four stored numbers at
     /// step.old and step.current), added to @p out; false if its update fails.
-    bool add_branch(const ViscousNetwork &n, const MembraneLaw &spring, const LawInput &in, const InternalStep &step,
-                    const unsigned int request, LawResponse &out)
+    bool add_branch(const ViscousNetwork &n, const MembraneLaw &spring, const LawInput &in,
+                    const InternalStep &step, const unsigned int request, LawResponse &out)
     {
       const double  eta = n.shear_modulus * n.relaxation_time;
       const Vector2 e0(std::log(step.old[0]), std::log(step.old[1]));
@@ -230,20 +243,14 @@ namespace cdea
       SpringB w;
       if (step.dt > 0.)
         {
-          if (!update_viscous_strain(spring, in, step, mobility_inverse(eta), e0, q0, e, w))
+          if (!update_viscous_strain(spring, in, step, mobility_inverse(eta), e0, q0,
+                                     request & law_energy, e, w))
             return false;
-          if (request & law_energy)
-            {
-              LawResponse r;
-              if (!spring.evaluate({in.l1 / std::exp(e[0]), in.l2 / std::exp(e[1]), 0.},
-                                   InternalStep{}, law_energy, r))
-                return false;
-              w.energy = r.energy;
-            }
         }
       else if (!w.evaluate(spring, in.l1, in.l2, e, request & law_energy))
         return false;
-      add_network_b(w, e, e0, q0, step, mobility(eta), mobility_inverse(eta), out);
+      add_network_b(w, e, e0, q0, step, mobility(eta), mobility_inverse(eta),
+                    request & law_tangent, out);
       return true;
     }
   } // namespace
@@ -404,7 +411,10 @@ namespace cdea
     /// A list entry of subsection Material (empty text: no value).
     std::vector<double> branch_list(const LawSettings &settings, const std::string &entry)
     {
-      return parse_number_list(settings.text(entry, ""), "Material/" + entry);
+      const std::string text = settings.text(entry, "");
+      if (trim_blanks(text).empty())
+        return {};
+      return parse_number_list(text, "Material/" + entry);
     }
 
     /// Checks one branch's constants; @p what names the entries ("Material/
