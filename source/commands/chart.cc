@@ -12,6 +12,7 @@
 #include <cdea/material/membrane_law.h>
 #include <cdea/output/hdf5_writer.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -171,15 +172,29 @@ namespace cdea
       {
         const SmallStrainModuli &m = d.moduli;
         const double E_A = m.relaxed, E = m.instantaneous;
-        // tan delta = E_B x / (E_A + E x^2), x = w tau, is largest at x = sqrt(E_A / E).
-        const double x_peak = std::sqrt(E_A / E);
-        std::cout << "\nDMA chart (small-strain uniaxial tension, standard linear solid):\n"
-                  << "  relaxed modulus E_A " << format_number(E_A * 1e-3, 6)
-                  << " kPa, instantaneous E_A + E_B " << format_number(E * 1e-3, 6)
-                  << " kPa, relaxation time " << format_number(m.relaxation_time, 6) << " s\n"
-                  << "  largest loss factor " << format_number((E - E_A) / (2. * std::sqrt(E_A * E)), 6)
-                  << " at " << format_number(x_peak / (two_pi * m.relaxation_time), 6) << " Hz\n"
-                  << std::setw(14) << "frequency (Hz)" << std::setw(16) << "E' (kPa)"
+        if (m.relaxation_time > 0.)
+          {
+            // tan delta = E_B x / (E_A + E x^2), x = w tau, is largest at x = sqrt(E_A / E).
+            const double x_peak = std::sqrt(E_A / E);
+            std::cout << "\nDMA chart (small-strain uniaxial tension, standard linear solid):\n"
+                      << "  relaxed modulus E_A " << format_number(E_A * 1e-3, 6)
+                      << " kPa, instantaneous E_A + E_B " << format_number(E * 1e-3, 6)
+                      << " kPa, relaxation time " << format_number(m.relaxation_time, 6)
+                      << " s\n  largest loss factor "
+                      << format_number((E - E_A) / (2. * std::sqrt(E_A * E)), 6) << " at "
+                      << format_number(x_peak / (two_pi * m.relaxation_time), 6) << " Hz\n";
+          }
+        else
+          {
+            const auto peak = std::max_element(d.loss_factor.begin(), d.loss_factor.end());
+            const auto k    = std::size_t(peak - d.loss_factor.begin());
+            std::cout << "\nDMA chart (small-strain uniaxial tension, relaxation spectrum):\n"
+                      << "  relaxed modulus " << format_number(E_A * 1e-3, 6)
+                      << " kPa, instantaneous " << format_number(E * 1e-3, 6)
+                      << " kPa\n  largest loss factor of the table " << format_number(*peak, 6)
+                      << " at " << format_number(d.frequency[k], 6) << " Hz\n";
+          }
+        std::cout << std::setw(14) << "frequency (Hz)" << std::setw(16) << "E' (kPa)"
                   << std::setw(16) << "E'' (kPa)" << std::setw(14) << "tan delta" << '\n';
         for (const std::size_t k : table_rows(d.frequency.size()))
           std::cout << std::setw(14) << format_number(d.frequency[k], 4) << std::setw(16)

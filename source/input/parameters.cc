@@ -480,6 +480,7 @@ namespace cdea
                           material.permittivity, geometry.film_thickness_mm * 1e-3};
     scene.material_model = material_law.model;
     scene.law_constants  = material_law.constants;
+    scene.law_texts      = material_law.texts;
     scene.mass         = loading.mass_g * 1e-3;
     scene.gravity      = loading.gravity;
     scene.ring_edges_over_a =

@@ -15,6 +15,9 @@ namespace cdea
           prm.enter_subsection(e.subsection);
           if (e.kind == EntryKind::flag)
             prm.declare_entry(e.name, e.default_value, dealii::Patterns::Bool(), e.documentation);
+          else if (e.kind == EntryKind::text)
+            prm.declare_entry(e.name, e.default_value, dealii::Patterns::Anything(),
+                              e.documentation);
           else
             prm.declare_entry(e.name, e.default_value, dealii::Patterns::Double(),
                               e.documentation);
@@ -30,6 +33,8 @@ namespace cdea
         prm.enter_subsection(e.subsection);
         if (e.kind == EntryKind::flag)
           values.set_flag(e.path(), prm.get_bool(e.name));
+        else if (e.kind == EntryKind::text)
+          values.set_text(e.path(), prm.get(e.name));
         else
           values.set_number(e.path(), prm.get_double(e.name));
         prm.leave_subsection();
@@ -67,10 +72,14 @@ namespace cdea
       model = prm.get("Model");
       prm.leave_subsection();
       constants.clear();
+      texts.clear();
       const ParameterDeclarations laws = membrane_law_parameters();
       const ParameterValues       values = read_plugin_entries(prm, laws);
       for (const EntryDeclaration &e : laws.entries())
-        constants[e.name] = values.number(e.path());
+        if (e.kind == EntryKind::text)
+          texts[e.name] = values.text(e.path());
+        else
+          constants[e.name] = values.number(e.path());
     }
 
     void LoadTerms::declare(ParameterHandler                                    &prm,
@@ -90,6 +99,7 @@ namespace cdea
       s.model     = model;
       s.material  = network_a;
       s.constants = constants;
+      s.texts     = texts;
       return s;
     }
   } // namespace parameters

@@ -24,6 +24,12 @@ namespace cdea
     return it->second;
   }
 
+  std::string LawSettings::text(const std::string &name, const std::string &fallback) const
+  {
+    const auto it = texts.find(name);
+    return it == texts.end() ? fallback : it->second;
+  }
+
   bool register_membrane_law(const LawPlugin &plugin)
   {
     if (!registry().emplace(plugin.name, plugin).second)

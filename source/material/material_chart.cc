@@ -1,4 +1,5 @@
 #include <cdea/base/format.h>
+#include <cdea/material/linear_response.h>
 #include <cdea/material/material_chart.h>
 #include <cdea/material/membrane_law.h>
 #include <cdea/numerics/bracketed_root.h>
@@ -175,7 +176,9 @@ namespace cdea
     SmallStrainModuli m;
     m.instantaneous = step_modulus(law, 0.);
     m.relaxed       = step_modulus(law, std::numeric_limits<double>::infinity());
-    if (law.n_internal_variables() == 0)
+    // An elastic law has no relaxation time, a spectrum (more than one
+    // branch: two evolving variables each) none single.
+    if (law.n_internal_variables() == 0 || law.n_evolving() > 2)
       return m;
     const double E_B = m.instantaneous - m.relaxed;
     if (!(E_B > 1e-9 * m.instantaneous) || !(m.relaxed > 0.))
@@ -213,19 +216,39 @@ namespace cdea
     loss           = E_B * x / (1. + x * x);
   }
 
+  std::complex<double> complex_modulus(const MembraneLaw &law, const double f)
+  {
+    const unsigned int  n = law.n_internal_variables();
+    std::vector<double> relaxed(n);
+    law.relaxed_internal_variables({1., 1., 0.}, relaxed.data());
+    InternalLinearization lin;
+    if (!law.linearize({1., 1., 0.}, relaxed.data(), lin))
+      throw std::runtime_error("the law cannot be linearized at the undeformed state");
+    const ComplexTangent c = frequency_tangent(lin, 2. * pi * f);
+    return c.s11 - c.s12 * c.s12 / c.s22;
+  }
+
   DmaChart dma_chart(const MembraneLaw &law, const ChartSettings &settings)
   {
     if (law.n_internal_variables() == 0)
       throw std::invalid_argument("dma_chart: an elastic law has no loss");
     DmaChart chart;
     chart.moduli         = small_strain_moduli(law);
+    const bool spectrum  = !(chart.moduli.relaxation_time > 0.);
     const unsigned int n = std::max(2u, settings.frequency_points);
     const double       a = std::log10(settings.min_frequency), b = std::log10(settings.max_frequency);
     for (unsigned int k = 0; k < n; ++k)
       {
         const double f = std::pow(10., a + (b - a) * k / (n - 1));
         double       storage, loss;
-        standard_linear_solid(chart.moduli, f, storage, loss);
+        if (spectrum)
+          {
+            const std::complex<double> E = complex_modulus(law, f);
+            storage                      = E.real();
+            loss                         = E.imag();
+          }
+        else
+          standard_linear_solid(chart.moduli, f, storage, loss);
         chart.frequency.push_back(f);
         chart.storage.push_back(storage);
         chart.loss.push_back(loss);

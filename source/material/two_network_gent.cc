@@ -6,7 +6,10 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace cdea
 {
@@ -24,22 +27,23 @@ namespace cdea
     struct SpringB
     {
       double  energy = 0.;
+      Vector2 xi; ///< exp(e) where it was evaluated
       Vector2 W_l, W_e;
       Matrix2 W_ll, W_ee, W_le;
 
-      bool evaluate(const GentDielectric &gent, const double l1, const double l2, const Vector2 &e,
+      bool evaluate(const MembraneLaw &spring, const double l1, const double l2, const Vector2 &e,
                     const bool with_energy)
       {
-        const Vector2 xi(std::exp(e[0]), std::exp(e[1]));
+        xi = Vector2(std::exp(e[0]), std::exp(e[1]));
         const Vector2 al(l1 / xi[0], l2 / xi[1]);
-        if (!(gent.gent_margin(al[0], al[1]) > 0.))
+        LawResponse   r;
+        if (!spring.evaluate({al[0], al[1], 0.}, InternalStep{},
+                             law_stress | law_tangent | (with_energy ? law_energy : 0u), r))
           return false;
-        const NominalStress s = gent.stress(al[0], al[1]);
-        const StressTangent k = gent.tangent(al[0], al[1]);
-        const Vector2       t(s.s1, s.s2);
-        Matrix2             tt;
-        tt << k.s11, k.s12, k.s12, k.s22;
-        energy = with_energy ? gent.energy(al[0], al[1]) : 0.;
+        const Vector2 t(r.stress.s1, r.stress.s2);
+        Matrix2       tt;
+        tt << r.tangent.s11, r.tangent.s12, r.tangent.s12, r.tangent.s22;
+        energy = with_energy ? r.energy : 0.;
         for (int i = 0; i < 2; ++i)
           {
             W_l[i] = t[i] / xi[i];
@@ -78,16 +82,57 @@ namespace cdea
     }
   } // namespace
 
+  namespace
+  {
+    /// xi1, xi2, q1, q2 of each of @p n branches (branch k >= 2: suffix _bk).
+    std::vector<InternalVariable> branch_variables(const std::size_t n)
+    {
+      std::vector<InternalVariable> v;
+      for (std::size_t k = 0; k < n; ++k)
+        {
+          const std::string of     = k == 0 ? "" : " of branch " + std::to_string(k + 1);
+          const std::string suffix = k == 0 ? "" : "_b" + std::to_string(k + 1);
+          v.push_back({"xi1" + suffix, "1", "viscous (dashpot) stretch xi1" + of,
+                       RelaxedValue::meridian_stretch});
+          v.push_back({"xi2" + suffix, "1", "viscous (dashpot) stretch xi2" + of,
+                       RelaxedValue::hoop_stretch});
+          v.push_back({"q1" + suffix, "1/s", "rate of ln xi1 at the end of the step" + of,
+                       RelaxedValue::zero, false});
+          v.push_back({"q2" + suffix, "1/s", "rate of ln xi2 at the end of the step" + of,
+                       RelaxedValue::zero, false});
+        }
+      return v;
+    }
+
+    /// @p springs, or if there are none the Gent law of each branch's mu
+    /// and Jlim (at the film's permittivity; used at 0 V).
+    std::vector<SpringLaw> springs_of(const std::vector<ViscousNetwork> &branches,
+                                      std::vector<SpringLaw> springs, const MaterialConstants &film)
+    {
+      if (branches.empty())
+        throw std::invalid_argument("TwoNetworkGentLaw: network B needs at least one branch");
+      if (springs.empty())
+        for (const ViscousNetwork &n : branches)
+          springs.push_back(std::make_shared<GentDielectricLaw>(
+            MaterialConstants{n.shear_modulus, n.jlim, film.permittivity, film.thickness}));
+      if (springs.size() != branches.size())
+        throw std::invalid_argument("TwoNetworkGentLaw: one spring per branch");
+      return springs;
+    }
+  } // namespace
+
   TwoNetworkGentLaw::TwoNetworkGentLaw(const MaterialConstants &network_a,
                                        const ViscousNetwork    &network_b)
-    : MembraneLaw({{"xi1", "1", "viscous (dashpot) stretch xi1", RelaxedValue::meridian_stretch},
-                   {"xi2", "1", "viscous (dashpot) stretch xi2", RelaxedValue::hoop_stretch},
-                   {"q1", "1/s", "rate of ln xi1 at the end of the step", RelaxedValue::zero, false},
-                   {"q2", "1/s", "rate of ln xi2 at the end of the step", RelaxedValue::zero, false}})
+    : TwoNetworkGentLaw(network_a, std::vector<ViscousNetwork>{network_b})
+  {}
+
+  TwoNetworkGentLaw::TwoNetworkGentLaw(const MaterialConstants    &network_a,
+                                       std::vector<ViscousNetwork> branches,
+                                       std::vector<SpringLaw>      springs)
+    : MembraneLaw(branch_variables(branches.size()))
     , a(network_a)
-    , b(network_b)
-    , spring_b{network_b.shear_modulus, network_b.jlim, network_a.permittivity,
-               network_a.thickness}
+    , b(std::move(branches))
+    , spring(springs_of(b, std::move(springs), network_a))
   {}
 
   namespace
@@ -96,36 +141,42 @@ namespace cdea
     /// rate q0 for the trapezoidal rule): G(e) = c M^-1 (e - e0) - f + W_e =
     /// 0, c = 1/dt (backward Euler) or 2/dt (trapezoidal, with f = M^-1 q0);
     /// H = c M^-1 + W_ee. Newton from @p e with step halving while outside
-    /// spring B's Gent limit, until the update is below 1e-13 (then e and
-    /// spring B there, @p w, are kept). False if it fails.
-    bool update_viscous_strain(const GentDielectric &spring, const LawInput &in,
+    /// the spring's range, until the update is below 1e-13 (then e and the
+    /// spring there, @p w, with its energy if @p with_energy, are kept).
+    /// False if it fails.
+    bool update_viscous_strain(const MembraneLaw &spring, const LawInput &in,
                                const InternalStep &step, const Matrix2 &M_inv,
-                               const Vector2 &e0, const Vector2 &q0, Vector2 &e, SpringB &w)
+                               const Vector2 &e0, const Vector2 &q0, const bool with_energy,
+                               Vector2 &e, SpringB &w)
     {
       const bool    trapezoidal = step.scheme == TimeScheme::trapezoidal;
       const double  c           = (trapezoidal ? 2. : 1.) / step.dt;
       const Vector2 f           = trapezoidal ? Vector2(M_inv * q0) : Vector2::Zero();
+      if (!w.evaluate(spring, in.l1, in.l2, e, with_energy))
+        return false;
       for (unsigned int it = 0; it < 60; ++it)
         {
-          if (!w.evaluate(spring, in.l1, in.l2, e, false))
-            return false;
           const Vector2 G  = c * M_inv * (e - e0) - f + w.W_e;
           const Matrix2 H  = c * M_inv + w.W_ee;
           Vector2       de = -solve(H, G);
           if (!de.allFinite())
             return false;
-          // e is within |de| of the root: keep it and its spring B.
+          // e is within |de| of the root: keep it and its spring.
           if (de.lpNorm<Eigen::Infinity>() <= 1e-13)
             return true;
+          // The spring is evaluated at the trial point, which is where the
+          // next iteration starts if it lies inside the range.
+          bool   inside = false;
           double lambda = 1.;
-          for (unsigned int k = 0; k < 40; ++k, lambda *= 0.5)
+          for (unsigned int k = 0; k < 40 && !inside; ++k, lambda *= 0.5)
             {
               const Vector2 trial = e + lambda * de;
-              const double  a1 = in.l1 / std::exp(trial[0]), a2 = in.l2 / std::exp(trial[1]);
-              if (spring.gent_margin(a1, a2) > 0.)
-                break;
+              inside              = w.evaluate(spring, in.l1, in.l2, trial, with_energy);
+              if (inside)
+                e = trial;
             }
-          e += lambda * de;
+          if (!inside)
+            return false;
         }
       return false;
     }
@@ -133,14 +184,15 @@ namespace cdea
     /// Network B at the updated e: the internal variables xi = exp(e) and
     /// the rate at the end of the step, de/dt = M sigma = -M W_e, into
     /// step.current; its part of the incremental potential, of the stress
-    /// and of the condensed tangent W_ll - W_le H^-1 W_el added to @p out.
+    /// and of the condensed tangent W_ll - W_le H^-1 W_el added to @p out
+    /// (the tangent only if @p with_tangent).
     void add_network_b(const SpringB &w, const Vector2 &e, const Vector2 &e0, const Vector2 &q0,
                        const InternalStep &step, const Matrix2 &M, const Matrix2 &M_inv,
-                       LawResponse &out)
+                       const bool with_tangent, LawResponse &out)
     {
       const Vector2 q = -M * w.W_e;
-      step.current[0] = std::exp(e[0]);
-      step.current[1] = std::exp(e[1]);
+      step.current[0] = w.xi[0]; // exp(e)
+      step.current[1] = w.xi[1];
       step.current[2] = q[0];
       step.current[3] = q[1];
 
@@ -153,17 +205,53 @@ namespace cdea
             energy += de.dot(M_inv * de) / step.dt - (M_inv * q0).dot(de);
           else
             energy += 0.5 * de.dot(M_inv * de) / step.dt;
-          const Matrix2 H =
-            (step.scheme == TimeScheme::trapezoidal ? 2. : 1.) / step.dt * M_inv + w.W_ee;
-          K -= w.W_le * H.inverse() * w.W_le.transpose();
+          if (with_tangent)
+            {
+              const Matrix2 H =
+                (step.scheme == TimeScheme::trapezoidal ? 2. : 1.) / step.dt * M_inv + w.W_ee;
+              K -= w.W_le * H.inverse() * w.W_le.transpose();
+            }
         }
       out.energy += energy;
       out.stress.s1 += w.W_l[0];
       out.stress.s2 += w.W_l[1];
+      if (!with_tangent)
+        return;
       // The condensed tangent is symmetric up to round-off: take its mean.
       out.tangent.s11 += K(0, 0);
       out.tangent.s12 += 0.5 * (K(0, 1) + K(1, 0));
       out.tangent.s22 += K(1, 1);
+    }
+  } // namespace
+
+  namespace
+  {
+    /// Branch @p n of network B over @p step (its four stored numbers at
+    /// step.old and step.current), added to @p out; false if its update fails.
+    bool add_branch(const ViscousNetwork &n, const MembraneLaw &spring, const LawInput &in,
+                    const InternalStep &step, const unsigned int request, LawResponse &out)
+    {
+      const double  eta = n.shear_modulus * n.relaxation_time;
+      const Vector2 e0(std::log(step.old[0]), std::log(step.old[1]));
+      const Vector2 q0(step.old[2], step.old[3]);
+      // Start from the last update at this point (the previous Newton iterate
+      // of the same step, or e0 after accepting), if it is one.
+      Vector2 e = e0;
+      if (step.dt > 0. && step.current[0] > 0. && step.current[1] > 0. &&
+          std::isfinite(step.current[0]) && std::isfinite(step.current[1]))
+        e = Vector2(std::log(step.current[0]), std::log(step.current[1]));
+      SpringB w;
+      if (step.dt > 0.)
+        {
+          if (!update_viscous_strain(spring, in, step, mobility_inverse(eta), e0, q0,
+                                     request & law_energy, e, w))
+            return false;
+        }
+      else if (!w.evaluate(spring, in.l1, in.l2, e, request & law_energy))
+        return false;
+      add_network_b(w, e, e0, q0, step, mobility(eta), mobility_inverse(eta),
+                    request & law_tangent, out);
+      return true;
     }
   } // namespace
 
@@ -182,34 +270,18 @@ namespace cdea
 
     if (std::isinf(step.dt))
       {
-        // Fully relaxed: xi = l, spring B unstrained.
+        // Fully relaxed: xi = l, every spring unstrained.
         relaxed_internal_variables(in, step.current);
         return true;
       }
     if (!step.old)
       return false;
-
-    const GentDielectric spring(spring_b, 0.);
-    const double         eta = b.shear_modulus * b.relaxation_time;
-    const Vector2        e0(std::log(step.old[0]), std::log(step.old[1]));
-    const Vector2        q0(step.old[2], step.old[3]);
-    // Start from the last update at this point (the previous Newton iterate
-    // of the same step, or e0 after accepting), if it is one.
-    Vector2 e = e0;
-    if (step.dt > 0. && step.current[0] > 0. && step.current[1] > 0. &&
-        std::isfinite(step.current[0]) && std::isfinite(step.current[1]))
-      e = Vector2(std::log(step.current[0]), std::log(step.current[1]));
-    SpringB w;
-    if (step.dt > 0.)
+    for (std::size_t k = 0; k < b.size(); ++k)
       {
-        if (!update_viscous_strain(spring, in, step, mobility_inverse(eta), e0, q0, e, w))
+        const InternalStep branch{step.old + 4 * k, step.current + 4 * k, step.dt, step.scheme};
+        if (!add_branch(b[k], *spring[k], in, branch, request, out))
           return false;
-        if (request & law_energy)
-          w.energy = spring.energy(in.l1 / std::exp(e[0]), in.l2 / std::exp(e[1]));
       }
-    else if (!w.evaluate(spring, in.l1, in.l2, e, request & law_energy))
-      return false;
-    add_network_b(w, e, e0, q0, step, mobility(eta), mobility_inverse(eta), out);
     return true;
   }
 
@@ -229,49 +301,83 @@ namespace cdea
   {
     if (!(step.dt > 0.) || std::isinf(step.dt) || !step.old || !step.current)
       return 0.;
-    const Vector2 de(std::log(step.current[0] / step.old[0]),
-                     std::log(step.current[1] / step.old[1]));
-    return de.dot(mobility_inverse(b.shear_modulus * b.relaxation_time) * de) / step.dt;
+    double sum = 0.;
+    for (std::size_t k = 0; k < b.size(); ++k)
+      {
+        const double *o = step.old + 4 * k, *c = step.current + 4 * k;
+        const Vector2 de(std::log(c[0] / o[0]), std::log(c[1] / o[1]));
+        sum += de.dot(mobility_inverse(b[k].shear_modulus * b[k].relaxation_time) * de) / step.dt;
+      }
+    return sum;
   }
+
   void TwoNetworkGentLaw::evolving_state(const double *stored, double *y, double *rate) const
   {
-    y[0]    = std::log(stored[0]);
-    y[1]    = std::log(stored[1]);
-    rate[0] = stored[2];
-    rate[1] = stored[3];
+    for (std::size_t k = 0; k < b.size(); ++k)
+      {
+        const double *s = stored + 4 * k;
+        y[2 * k]        = std::log(s[0]);
+        y[2 * k + 1]    = std::log(s[1]);
+        rate[2 * k]     = s[2];
+        rate[2 * k + 1] = s[3];
+      }
   }
 
   void TwoNetworkGentLaw::set_evolving_state(const double *y, double *stored) const
   {
-    stored[0] = std::exp(y[0]);
-    stored[1] = std::exp(y[1]);
+    for (std::size_t k = 0; k < b.size(); ++k)
+      {
+        stored[4 * k]     = std::exp(y[2 * k]);
+        stored[4 * k + 1] = std::exp(y[2 * k + 1]);
+      }
   }
 
   double TwoNetworkGentLaw::dissipation_rate(const double *stored) const
   {
-    const Vector2 q(stored[2], stored[3]);
-    return q.dot(mobility_inverse(b.shear_modulus * b.relaxation_time) * q);
+    double sum = 0.;
+    for (std::size_t k = 0; k < b.size(); ++k)
+      {
+        const Vector2 q(stored[4 * k + 2], stored[4 * k + 3]);
+        sum += q.dot(mobility_inverse(b[k].shear_modulus * b[k].relaxation_time) * q);
+      }
+    return sum;
   }
 
+  // Branch k's evolving variables are y[2k], y[2k + 1]: its 2 x 2 blocks of
+  // W_le and -M_k W_ee, -M_k W_el go to columns (rows) 2k, 2k + 1.
   bool TwoNetworkGentLaw::linearize(const LawInput &in, const double *stored,
                                     InternalLinearization &out) const
   {
     const GentDielectric law_a(a, in.voltage);
     if (!(in.l1 > 0.) || !(in.l2 > 0.) || !(law_a.gent_margin(in.l1, in.l2) > 0.))
       return false;
-    SpringB w;
-    if (!w.evaluate(GentDielectric(spring_b, 0.), in.l1, in.l2,
-                    Vector2(std::log(stored[0]), std::log(stored[1])), false))
-      return false;
-    const StressTangent ta = law_a.tangent(in.l1, in.l2);
-    out.instantaneous      = {ta.s11 + w.W_ll(0, 0), ta.s12 + 0.5 * (w.W_ll(0, 1) + w.W_ll(1, 0)),
-                              ta.s22 + w.W_ll(1, 1)};
-    const Matrix2 M      = mobility(b.shear_modulus * b.relaxation_time);
-    const Matrix2 rate_y = -M * w.W_ee, rate_l = -M * w.W_le.transpose();
-    out.n                = 2;
-    out.stress_y         = {w.W_le(0, 0), w.W_le(0, 1), w.W_le(1, 0), w.W_le(1, 1)};
-    out.rate_y           = {rate_y(0, 0), rate_y(0, 1), rate_y(1, 0), rate_y(1, 1)};
-    out.rate_l           = {rate_l(0, 0), rate_l(0, 1), rate_l(1, 0), rate_l(1, 1)};
+    const unsigned int n = n_evolving();
+    out.n                = n;
+    out.stress_y.assign(2 * n, 0.);
+    out.rate_y.assign(n * n, 0.);
+    out.rate_l.assign(2 * n, 0.);
+    StressTangent t = law_a.tangent(in.l1, in.l2);
+    for (std::size_t k = 0; k < b.size(); ++k)
+      {
+        SpringB w;
+        if (!w.evaluate(*spring[k], in.l1, in.l2,
+                        Vector2(std::log(stored[4 * k]), std::log(stored[4 * k + 1])), false))
+          return false;
+        t.s11 += w.W_ll(0, 0);
+        t.s12 += 0.5 * (w.W_ll(0, 1) + w.W_ll(1, 0));
+        t.s22 += w.W_ll(1, 1);
+        const Matrix2 M      = mobility(b[k].shear_modulus * b[k].relaxation_time);
+        const Matrix2 rate_y = -M * w.W_ee, rate_l = -M * w.W_le.transpose();
+        for (unsigned int i = 0; i < 2; ++i)
+          for (unsigned int j = 0; j < 2; ++j)
+            {
+              const std::size_t row = 2 * k + i, column = 2 * k + j;
+              out.stress_y[i * n + column] = w.W_le(i, j);
+              out.rate_y[row * n + column] = rate_y(i, j);
+              out.rate_l[row * 2 + j]      = rate_l(i, j);
+            }
+      }
+    out.instantaneous = t;
     return true;
   }
 
@@ -283,30 +389,135 @@ namespace cdea
                        "Gent limit Jlim_B of network B's spring.");
     prm.declare_number("Material", "Relaxation time (s)", "2",
                        "tau = eta / mu_B of network B (eta: the dashpot's viscosity).");
+    prm.declare_text("Material", "Branch shear moduli (kPa)", "",
+                     "A relaxation spectrum (viscoelastic model): the shear moduli mu_k of "
+                     "network B's parallel branches, e.g. '30, 10, 5'; empty: one branch, "
+                     "Network B shear modulus, Network B Jlim and Relaxation time (s).");
+    prm.declare_text("Material", "Branch relaxation times (s)", "",
+                     "tau_k = eta_k / mu_k of the branches, as many as Branch shear moduli "
+                     "(kPa).");
+    prm.declare_text("Material", "Branch Jlim", "",
+                     "Jlim_k of the branches' springs, as many as Branch shear moduli (kPa); "
+                     "empty: Network B Jlim for every branch.");
+    prm.declare_text("Material", "Branch law", "elastic",
+                     "The elastic law of every branch's spring (and of network B's one "
+                     "spring): a Material/Model value without internal variables ('elastic' "
+                     "is Gent), with Shear modulus mu_k, Jlim Jlim_k and the law's other "
+                     "constants from subsection Material.");
   }
+
+  namespace
+  {
+    /// A list entry of subsection Material (empty text: no value).
+    std::vector<double> branch_list(const LawSettings &settings, const std::string &entry)
+    {
+      const std::string text = settings.text(entry, "");
+      if (trim_blanks(text).empty())
+        return {};
+      return parse_number_list(text, "Material/" + entry);
+    }
+
+    /// Checks one branch's constants; @p what names the entries ("Material/
+    /// Network B shear modulus (kPa)" or the list entry with the branch).
+    void check_branch(const double mu_a_kPa, const double mu_kPa, const double jlim,
+                      const double tau, const std::string names[3])
+    {
+      // Bounds the solver can meet: network B more than 1e4 times as stiff
+      // as network A leaves no equilibrium under the dead load (measured at
+      // 1e5), and relaxation times outside 1e-12..1e12 s are below the
+      // smallest time step or beyond any run's duration.
+      if (!(mu_kPa >= 1e-6 * mu_a_kPa && mu_kPa <= 1e4 * mu_a_kPa))
+        throw InputError(names[0] + " must be between 1e-6 and 1e4 times Material/Shear modulus "
+                         "(kPa) (" + format_number(1e-6 * mu_a_kPa) + " to " +
+                         format_number(1e4 * mu_a_kPa) + " kPa), got " + format_number(mu_kPa));
+      if (!(jlim >= 1e-12 && jlim <= 1e12))
+        throw InputError(names[1] + " must be between 1e-12 and 1e12, got " +
+                         format_number(jlim));
+      if (!(tau >= 1e-12 && tau <= 1e12))
+        throw InputError(names[2] + " must be between 1e-12 and 1e12 s, got " +
+                         format_number(tau));
+    }
+
+    /// The branches of the list entries (empty if Branch shear moduli is).
+    std::vector<ViscousNetwork> listed_branches(const LawSettings &settings)
+    {
+      const std::string   moduli = "Branch shear moduli (kPa)", times = "Branch relaxation times (s)",
+                          limits = "Branch Jlim";
+      const std::vector<double> mu = branch_list(settings, moduli), tau = branch_list(settings, times);
+      std::vector<double>       jlim = branch_list(settings, limits);
+      if (mu.empty() && tau.empty() && jlim.empty())
+        return {};
+      if (mu.empty() || mu.size() > max_viscous_branches)
+        throw InputError("Material/" + moduli + " must list 1 to " +
+                         std::to_string(max_viscous_branches) + " shear moduli when Material/" +
+                         times + " or Material/" + limits + " is set, got " +
+                         std::to_string(mu.size()));
+      if (tau.size() != mu.size())
+        throw InputError("Material/" + times + " must list as many relaxation times as Material/" +
+                         moduli + " lists moduli (" + std::to_string(mu.size()) + "), got " +
+                         std::to_string(tau.size()));
+      if (jlim.empty())
+        jlim.assign(mu.size(), settings.constant("Network B Jlim"));
+      if (jlim.size() != mu.size())
+        throw InputError("Material/" + limits + " must be empty or list as many values as "
+                         "Material/" + moduli + " (" + std::to_string(mu.size()) + "), got " +
+                         std::to_string(jlim.size()));
+      std::vector<ViscousNetwork> branches;
+      for (std::size_t k = 0; k < mu.size(); ++k)
+        {
+          const std::string of = " (branch " + std::to_string(k + 1) + ")";
+          const std::string names[3] = {"Material/" + moduli + of, "Material/" + limits + of,
+                                        "Material/" + times + of};
+          check_branch(settings.material.shear_modulus / 1e3, mu[k], jlim[k], tau[k], names);
+          branches.push_back({mu[k] * 1e3, jlim[k], tau[k]});
+        }
+      return branches;
+    }
+
+    /// Every branch's spring, the law of Material/Branch law with the
+    /// branch's mu and Jlim (none for the Gent law: the constructor's).
+    std::vector<SpringLaw> make_springs(const LawSettings                 &settings,
+                                       const std::vector<ViscousNetwork> &branches)
+    {
+      const std::string law = trim_blanks(settings.text("Branch law", "elastic"));
+      if (law == "elastic")
+        return {};
+      const std::vector<std::string> names = membrane_law_names();
+      if (std::find(names.begin(), names.end(), law) == names.end() || law == settings.model)
+        throw InputError("Material/Branch law must name an elastic law of Material/Model "
+                         "other than '" + settings.model + "', got '" + law + "'");
+      std::vector<SpringLaw> springs;
+      for (const ViscousNetwork &n : branches)
+        {
+          LawSettings s                = settings;
+          s.model                      = law;
+          s.material.shear_modulus     = n.shear_modulus;
+          s.material.jlim              = n.jlim;
+          springs.push_back(make_membrane_law(s));
+          if (springs.back()->n_internal_variables() != 0)
+            throw InputError("Material/Branch law must name a law without internal variables, "
+                             "got '" + law + "'");
+        }
+      return springs;
+    }
+  } // namespace
 
   std::shared_ptr<const MembraneLaw> TwoNetworkGentLaw::parse_parameters(const LawSettings &settings)
   {
-    // Bounds the solver can meet: network B more than 1e4 times as stiff
-    // as network A leaves no equilibrium under the dead load (measured at
-    // 1e5), and relaxation times outside 1e-12..1e12 s are below the
-    // smallest time step or beyond any run's duration.
-    const double mu_a = settings.material.shear_modulus / 1e3; // kPa, as the file has it
-    const double mu_b = settings.constant("Network B shear modulus (kPa)");
-    const double jlim = settings.constant("Network B Jlim");
-    const double tau  = settings.constant("Relaxation time (s)");
-    if (!(mu_b >= 1e-6 * mu_a && mu_b <= 1e4 * mu_a))
-      throw InputError("Material/Network B shear modulus (kPa) must be between 1e-6 and 1e4 "
-                       "times Material/Shear modulus (kPa) (" + format_number(1e-6 * mu_a) +
-                       " to " + format_number(1e4 * mu_a) + " kPa), got " + format_number(mu_b));
-    if (!(jlim >= 1e-12 && jlim <= 1e12))
-      throw InputError("Material/Network B Jlim must be between 1e-12 and 1e12, got " +
-                       format_number(jlim));
-    if (!(tau >= 1e-12 && tau <= 1e12))
-      throw InputError("Material/Relaxation time (s) must be between 1e-12 and 1e12 s, got " +
-                       format_number(tau));
-    return std::make_shared<TwoNetworkGentLaw>(settings.material,
-                                               ViscousNetwork{mu_b * 1e3, jlim, tau});
+    std::vector<ViscousNetwork> branches = listed_branches(settings);
+    if (branches.empty())
+      {
+        const double      mu_b = settings.constant("Network B shear modulus (kPa)");
+        const double      jlim = settings.constant("Network B Jlim");
+        const double      tau  = settings.constant("Relaxation time (s)");
+        const std::string names[3] = {"Material/Network B shear modulus (kPa)",
+                                      "Material/Network B Jlim", "Material/Relaxation time (s)"};
+        check_branch(settings.material.shear_modulus / 1e3, mu_b, jlim, tau, names);
+        branches.push_back({mu_b * 1e3, jlim, tau});
+      }
+    std::vector<SpringLaw> springs = make_springs(settings, branches);
+    return std::make_shared<TwoNetworkGentLaw>(settings.material, std::move(branches),
+                                               std::move(springs));
   }
 
   CDEA_REGISTER_MEMBRANE_LAW(TwoNetworkGentLaw, "viscoelastic",

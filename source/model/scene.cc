@@ -19,6 +19,7 @@ namespace cdea
     s.model     = material_model;
     s.material  = material;
     s.constants = law_constants;
+    s.texts     = law_texts;
     return s;
   }
 

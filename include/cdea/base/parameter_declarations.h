@@ -13,11 +13,14 @@
 
 namespace cdea
 {
-  /// What an entry holds: deal.II's Patterns::Double() or Patterns::Bool().
+  /// What an entry holds: deal.II's Patterns::Double() or Patterns::Bool(),
+  /// or text (Patterns::Anything(): a list or a name that the plugin parses
+  /// and checks itself).
   enum class EntryKind
   {
     number,
-    flag
+    flag,
+    text
   };
 
   struct EntryDeclaration
@@ -43,6 +46,8 @@ namespace cdea
                         const std::string &default_value, const std::string &documentation);
     void declare_flag(const std::string &subsection, const std::string &name,
                       const std::string &default_value, const std::string &documentation);
+    void declare_text(const std::string &subsection, const std::string &name,
+                      const std::string &default_value, const std::string &documentation);
     /// A number declared elsewhere that the plugin reads too.
     void read_number(const std::string &subsection, const std::string &name);
     /// Every entry of @p other after these.
@@ -61,12 +66,15 @@ namespace cdea
   public:
     void set_number(const std::string &path, double value);
     void set_flag(const std::string &path, bool value);
+    void set_text(const std::string &path, const std::string &value);
     /// The value of @p path; std::invalid_argument naming it if there is none.
     double number(const std::string &path) const;
     bool   flag(const std::string &path) const;
+    const std::string &text(const std::string &path) const;
 
   private:
     std::map<std::string, double> numbers;
     std::map<std::string, bool>   flags;
+    std::map<std::string, std::string> texts;
   };
 } // namespace cdea

@@ -39,7 +39,8 @@ namespace cdea
     struct MaterialLaw
     {
       std::string                   model;     ///< a registered law's name
-      std::map<std::string, double> constants; ///< every law's entries, by name
+      std::map<std::string, double> constants; ///< every law's number entries, by name
+      std::map<std::string, std::string> texts; ///< every law's text entries, by name
       static void                   declare(dealii::ParameterHandler &prm);
       void                          parse(dealii::ParameterHandler &prm);
 

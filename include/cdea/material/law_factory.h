@@ -41,10 +41,16 @@ namespace cdea
     /// The entries the laws declare in subsection Material, by name, in the
     /// parameter file's units (e.g. "Relaxation time (s)").
     std::map<std::string, double> constants;
+    /// The text entries they declare (ParameterDeclarations::declare_text:
+    /// lists, names), by name, as the file writes them.
+    std::map<std::string, std::string> texts;
 
     /// The entry @p name of constants; throws std::invalid_argument naming
     /// it and the model if it is not there.
     double constant(const std::string &name) const;
+    /// The text entry @p name of texts, or @p fallback if it is not there
+    /// (settings built by hand, without the parameter file).
+    std::string text(const std::string &name, const std::string &fallback) const;
   };
 
   /// Builds a law from its settings.

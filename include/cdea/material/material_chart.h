@@ -25,6 +25,7 @@
 //   not of that form is refused (std::runtime_error).
 
 #include <memory>
+#include <complex>
 #include <string>
 #include <vector>
 
@@ -70,8 +71,16 @@ namespace cdea
   {
     double relaxed       = 0.; ///< E_A (Pa): dt -> infinity
     double instantaneous = 0.; ///< E_A + E_B (Pa): dt = 0
-    double relaxation_time = 0.; ///< tau (s); 0 for an elastic law
+    /// tau (s); 0 for an elastic law and for a relaxation spectrum (several branches)
+    double relaxation_time = 0.;
   };
+
+  /// The complex small-strain uniaxial modulus E' + i E'' (Pa) at @p f (Hz)
+  /// from the law's linearization at the undeformed relaxed state
+  /// (linear_response.h): C11 - C12^2 / C22 of C(2 pi f). For a Prony series
+  /// E' = E_A + sum_k E_k x_k^2 / (1 + x_k^2), E'' = sum_k E_k x_k / (1 + x_k^2),
+  /// x_k = 2 pi f tau_k, E_k = 3 mu_k.
+  std::complex<double> complex_modulus(const MembraneLaw &law, double f);
 
   /// The DMA chart (SI units, frequency in Hz).
   struct DmaChart
@@ -110,7 +119,9 @@ namespace cdea
                              double &loss);
 
   /// The DMA chart of a law with internal variables (throws
-  /// std::invalid_argument for an elastic law).
+  /// std::invalid_argument for an elastic law): the standard linear solid of
+  /// small_strain_moduli() for one relaxation time, complex_modulus() for a
+  /// spectrum.
   DmaChart dma_chart(const MembraneLaw &law, const ChartSettings &settings);
 
   /// "uniaxial" or "equibiaxial".

@@ -11,6 +11,13 @@
 //
 //   W = W_A(l1, l2) + W_B(a1, a2) - (eps / 2) (Phi l1 l2 / H)^2.
 //
+// A relaxation spectrum: network B may be several such branches k in
+// parallel (a Prony series), each its own spring (any elastic law of the
+// library at zero voltage, with mu_k and Jlim_k; Gent by default), its own
+// dashpot (eta_k = mu_k tau_k) and its own xi; W sums W_k(l / xi_k), and
+// every formula below holds branch by branch (the branches couple only
+// through l). One branch is the two-network model.
+//
 // Evolution: the dashpot's deviatoric rate equals its deviatoric stress over
 // 2 eta, with spring B's in-plane true stresses sigma_i = a_i dW_B/da_i
 // (sigma_3 = 0). In the viscous log-strains e_i = ln xi_i this is
@@ -34,23 +41,26 @@
 // dt = 0 holds xi fixed (instantaneous, "glassy" response); dt = +infinity
 // relaxes network B completely (xi = l, W_B = 0: network A alone).
 //
-// Internal variables per point (declared in the constructor): xi1, xi2 (the
-// results hold them) and q1, q2 with q = de/dt at the end of the step (1/s),
-// which the trapezoidal rule needs.
+// Internal variables per point (declared in the constructor), four per
+// branch: xi1, xi2 (the results hold them) and q1, q2 with q = de/dt at the
+// end of the step (1/s), which the trapezoidal rule needs; the first branch's
+// are named xi1, xi2, q1, q2, branch k's (k >= 2) xi1_bk, xi2_bk, q1_bk, q2_bk.
 //
 // Registered as Material/Model = viscoelastic (law_factory.h): network A is
 // the film's Gent law, network B's constants are entries of subsection
-// Material that the law declares itself.
+// Material that the law declares itself (one branch, or the lists of
+// "Branch shear moduli (kPa)" etc.).
 
 #include <cdea/material/membrane_law.h>
 
 #include <memory>
+#include <vector>
 
 namespace cdea
 {
   struct LawSettings;
 
-  /// Spring B and the dashpot.
+  /// Spring B and the dashpot: one branch of network B.
   struct ViscousNetwork
   {
     double shear_modulus   = 0.; ///< mu_B (Pa)
@@ -58,14 +68,27 @@ namespace cdea
     double relaxation_time = 0.; ///< tau = eta / mu_B (s)
   };
 
+  /// An elastic law as a branch's spring, evaluated at zero voltage.
+  using SpringLaw = std::shared_ptr<const MembraneLaw>;
+
+  /// At most this many branches (the entries' check): 4 internal variables
+  /// each at every quadrature point.
+  constexpr unsigned int max_viscous_branches = 20;
+
   class TwoNetworkGentLaw final : public MembraneLaw
   {
   public:
     /// @p network_a: mu_A, Jlim_A and the dielectric (permittivity, thickness).
     TwoNetworkGentLaw(const MaterialConstants &network_a, const ViscousNetwork &network_b);
+    /// Network B as @p branches in parallel (at least one), with @p springs
+    /// (one per branch; empty: the Gent law of each branch's mu and Jlim).
+    TwoNetworkGentLaw(const MaterialConstants &network_a, std::vector<ViscousNetwork> branches,
+                      std::vector<SpringLaw> springs = {});
 
     /// Network B's entries of subsection Material: "Network B shear modulus
-    /// (kPa)", "Network B Jlim", "Relaxation time (s)".
+    /// (kPa)", "Network B Jlim", "Relaxation time (s)" (one branch), or the
+    /// lists "Branch shear moduli (kPa)", "Branch relaxation times (s)",
+    /// "Branch Jlim" (branches; empty: the one branch), and "Branch law".
     static void declare_parameters(ParameterDeclarations &prm);
     /// Network B from those entries (checked: InputError naming the entry
     /// and its range), network A the film's Gent law.
@@ -90,23 +113,28 @@ namespace cdea
     /// end rates for the trapezoidal rule); 0 for dt = 0 or infinity.
     double dissipation(const InternalStep &step) const override;
 
-    /// y = (ln xi1, ln xi2), rate (q1, q2) as stored at the end of a step.
-    unsigned int n_evolving() const override { return 2; }
+    /// y = (ln xi1, ln xi2) of each branch, rate (q1, q2) as stored at the
+    /// end of a step.
+    unsigned int n_evolving() const override { return 2 * n_branches(); }
     void         evolving_state(const double *stored, double *y, double *rate) const override;
     void         set_evolving_state(const double *y, double *stored) const override;
     /// q^T M^-1 q: the dashpot's power at the stored rate.
     double dissipation_rate(const double *stored) const override;
     /// With W the total energy at the stored xi: instantaneous = W_ll,
-    /// stress_y = W_le, rate_y = -M W_ee, rate_l = -M W_el (de/dt = -M W_e).
+    /// stress_y = W_le, rate_y = -M W_ee, rate_l = -M W_el (de/dt = -M W_e);
+    /// rate_y is block diagonal, a 2 x 2 block per branch.
     bool linearize(const LawInput &input, const double *stored,
                    InternalLinearization &out) const override;
 
     const MaterialConstants &network_a() const { return a; }
-    const ViscousNetwork    &network_b() const { return b; }
+    /// The first branch (network B of the two-network model).
+    const ViscousNetwork              &network_b() const { return b.front(); }
+    const std::vector<ViscousNetwork> &branches() const { return b; }
+    unsigned int n_branches() const { return static_cast<unsigned int>(b.size()); }
 
   private:
-    MaterialConstants a;
-    ViscousNetwork    b;
-    MaterialConstants spring_b; ///< network B's spring as a Gent law (no voltage)
+    MaterialConstants           a;
+    std::vector<ViscousNetwork> b;
+    std::vector<SpringLaw>      spring; ///< of each branch
   };
 } // namespace cdea

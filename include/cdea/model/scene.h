@@ -29,6 +29,7 @@ namespace cdea
     /// studies' models) builds this law.
     std::string                   material_model = LawSettings().model;
     std::map<std::string, double> law_constants;
+    std::map<std::string, std::string> law_texts; ///< the laws' text entries (lists, names)
     double            mass    = 0.28; ///< kg
     double            gravity = 9.81; ///< m/s^2
     /// n+1 increasing ring edges r/a for n rings; first 1, last b/a.
@@ -44,7 +45,8 @@ namespace cdea
     /// Index of the ring that holds reference radius R (edges belong to the
     /// ring outside them, the last edge to the last ring).
     unsigned int ring_of(double R) const;
-    /// The settings of the scene's law (material_model, material, law_constants).
+    /// The settings of the scene's law (material_model, material, law_constants,
+    /// law_texts).
     LawSettings law_settings() const;
     /// The scene's law, built from law_settings() (InputError if a constant
     /// is outside the law's range).
