@@ -27,7 +27,7 @@ PY
 }
 
 # 1. A second run onto the same file fails at once; the first goes on.
-"$exe" run verylong.prm > a.out 2> a.err &
+( with_sigint "$exe" run verylong.prm ) > a.out 2> a.err &
 first=$!
 wait_for_steps a.out 5
 start=$(date +%s.%N)
