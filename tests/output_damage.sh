@@ -5,6 +5,7 @@
 # file left is checked (h5py reads every file).
 source "$(dirname "$0")/script_helpers.bash"
 source "$(dirname "$0")/long_runs.bash"
+source "$(dirname "$0")/python_forks.bash"
 
 prm long.prm 0.003
 prm other.prm 0.003 281

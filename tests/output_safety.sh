@@ -4,6 +4,7 @@
 # `cdea recover` with nothing to recover. Every file is read back with h5py.
 source "$(dirname "$0")/script_helpers.bash"
 source "$(dirname "$0")/long_runs.bash"
+source "$(dirname "$0")/python_forks.bash"
 
 prm short.prm 0.25
 prm long.prm 0.003
