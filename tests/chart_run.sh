@@ -6,6 +6,7 @@
 # input with exit 1 naming the parameter and no file left, and
 # postprocess/plot_chart.py with measurements laid on the charts.
 source "$(dirname "$0")/script_helpers.bash"
+source "$(dirname "$0")/python_forks.bash"
 
 "$exe" chart "$src/prm/pump-time.prm" --set 'Output/Directory=out' > visco.txt 2> visco_err.txt
 rc=$?

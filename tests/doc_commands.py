@@ -204,6 +204,10 @@ def python_server(path, build):
                     sys.argv = ["-c"] + argv[2:]
                     sys.path[:0] = [""] + extra
                     exec(compile(argv[1], "<string>", "exec"), {"__name__": "__main__"})
+                elif argv and argv[0] == "-":  # the script on stdin
+                    sys.argv = argv
+                    sys.path[:0] = [""] + extra
+                    exec(compile(sys.stdin.read(), "<stdin>", "exec"), {"__name__": "__main__"})
                 else:
                     sys.argv = argv
                     sys.path[:0] = [os.path.dirname(os.path.abspath(argv[0]))] + extra

@@ -15,6 +15,12 @@ prm() {
   printf 'subsection Solver\n  set Voltage increment (kV) = %s\nend\n%b' "$2" "${4:-}" >> "$1"
 }
 
+# with_sigint COMMAND...: COMMAND with SIGINT's default action; a background job
+# of a script starts with SIGINT ignored, and cdea keeps an ignored signal
+# ignored (as under nohup), so that `kill -INT` would not stop it. Use as
+# `( with_sigint "$exe" run ... ) > out &`.
+with_sigint() { trap - INT; exec "$@"; }
+
 steps_printed() { grep -cE '^ +[0-9]+ +(pre-stretch|dead load|voltage) ' "$1"; }
 
 wait_for_steps() { # FILE N: until N step lines are printed (at most 60 s)

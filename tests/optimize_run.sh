@@ -11,6 +11,7 @@
 # exits 2 and leaves nothing; SIGTERM stops the starts and writes the best
 # layout so far (exit 2).
 source "$(dirname "$0")/script_helpers.bash"
+source "$(dirname "$0")/python_forks.bash"
 
 cat > paper.prm <<'EOF'
 subsection Optimization

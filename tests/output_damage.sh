@@ -5,6 +5,7 @@
 # file left is checked (h5py reads every file).
 source "$(dirname "$0")/script_helpers.bash"
 source "$(dirname "$0")/long_runs.bash"
+source "$(dirname "$0")/python_forks.bash"
 
 prm long.prm 0.003
 prm other.prm 0.003 281
@@ -82,7 +83,7 @@ rm -rf out; mkdir out; : > out/long.h5.journal
 # 2. The lock file deleted while a run writes: a second run must not take
 #    the first's live journal (the journal's own flock); the first finishes.
 rm -rf out
-"$exe" run verylong.prm > a.out 2> a.err & first=$!
+( with_sigint "$exe" run verylong.prm ) > a.out 2> a.err & first=$!
 wait_for_steps a.out 5
 rm -f out/long.h5.lock
 "$exe" run other.prm > b.out 2> b.err; rc=$?

@@ -4,6 +4,7 @@
 # `cdea recover` with nothing to recover. Every file is read back with h5py.
 source "$(dirname "$0")/script_helpers.bash"
 source "$(dirname "$0")/long_runs.bash"
+source "$(dirname "$0")/python_forks.bash"
 
 prm short.prm 0.25
 prm long.prm 0.003
@@ -27,7 +28,7 @@ PY
 }
 
 # 1. A second run onto the same file fails at once; the first goes on.
-"$exe" run verylong.prm > a.out 2> a.err &
+( with_sigint "$exe" run verylong.prm ) > a.out 2> a.err &
 first=$!
 wait_for_steps a.out 5
 start=$(date +%s.%N)

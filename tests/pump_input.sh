@@ -7,6 +7,7 @@
 # before the end of the load stage, level_drop = volume_change / (20 x 20);
 # postprocess/plot_pump.py plots it.
 source "$(dirname "$0")/script_helpers.bash"
+source "$(dirname "$0")/python_forks.bash"
 
 # case NAME COMMAND "sed expression on prm/pump.prm" "text the message must contain"
 case_() {

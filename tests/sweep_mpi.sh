@@ -8,6 +8,7 @@
 # postprocess/plot_map.py on the result. Needs mpirun (Debian: openmpi-bin) and
 # python3 with h5py.
 source "$(dirname "$0")/script_helpers.bash"
+source "$(dirname "$0")/python_forks.bash"
 
 command -v mpirun > /dev/null || { echo "FAIL mpirun not found (Debian: openmpi-bin)"; exit 1; }
 # Root (containers, CI) needs the explicit permission; allow more ranks than

@@ -11,6 +11,7 @@
 #  - postprocess/plot_time.py on them;
 #  - the other commands refuse Time/Enabled = true.
 source "$(dirname "$0")/script_helpers.bash"
+source "$(dirname "$0")/python_forks.bash"
 
 # A short viscoelastic ramp-hold on the default scene; cases append to it.
 base() {
@@ -29,14 +30,17 @@ end
 EOF
 }
 
-# bad NAME "extra prm lines" "text the message must contain"
+# bad NAME "extra prm lines" "text the message must contain" ["another text"]
+# (one run for texts of the same input)
 bad() {
-  local name=$1 extra=$2 expect=$3
+  local name=$1 extra=$2 expect
   { base "$name"; printf '%b\n' "$extra"; } > "$name.prm"
   "$exe" run "$name.prm" > "$name.out" 2> "$name.err"
   local rc=$? ok=1
   [ $rc -eq 1 ] || { echo "FAIL $name: exit code $rc, expected 1"; ok=0; }
-  grep -qF -- "$expect" "$name.err" || { echo "FAIL $name: stderr lacks '$expect':"; cat "$name.err"; ok=0; }
+  for expect in "${@:3}"; do
+    grep -qF -- "$expect" "$name.err" || { echo "FAIL $name: stderr lacks '$expect':"; cat "$name.err"; ok=0; }
+  done
   [ ! -e "out-$name" ] || { echo "FAIL $name: output was created"; ok=0; }
   [ $ok -eq 1 ] && echo "ok   $name: $(head -c 160 "$name.err")" || failures=$((failures + 1))
 }
@@ -63,7 +67,6 @@ bad fields-interval "$(sub Time 'Fields interval (s) = -1')" "Time/Fields interv
 bad frequency       "$(sub Time 'Waveform = square\n  set Frequency (Hz) = 0')" "Time/Frequency (Hz) must be positive"
 bad rise            "$(sub Time 'Waveform = square\n  set Rise time (s) = 2')" "Time/Rise time (s) must be shorter than half a period"
 bad table-missing   "$(sub Time 'Waveform = table')" "Time/Table file must be given"
-bad table-absent    "$(sub Time 'Waveform = table\n  set Table file = nowhere.csv')" "Time/Table file: cannot read 'nowhere.csv'"
 printf '0, 0\n1, 2\n0.5, 3\n' > decreasing.csv
 bad table-order     "$(sub Time 'Waveform = table\n  set Table file = decreasing.csv')" "decreasing.csv', line 3: times must be >= 0 and increase strictly"
 printf 'time_s, kV\n0, 0\n1, 2, 3\n' > columns.csv
@@ -78,13 +81,14 @@ bad table-text      "$(sub Time 'Waveform = table\n  set Table file = text.csv')
 printf '0.5, 3x\n1, 2\n' > first-row.csv
 bad table-first-row "$(sub Time 'Waveform = table\n  set Table file = first-row.csv')" "first-row.csv', line 1: '3x' is not a number"
 here=$(pwd -P)
-bad table-relative  "$(sub Time 'Waveform = table\n  set Table file = nowhere.csv')" "cannot read 'nowhere.csv' (relative to the working directory: $here/nowhere.csv)"
+bad table-absent    "$(sub Time 'Waveform = table\n  set Table file = nowhere.csv')" "Time/Table file: cannot read 'nowhere.csv'" \
+                    "cannot read 'nowhere.csv' (relative to the working directory: $here/nowhere.csv)"
 mkdir -p folder.csv
 bad table-directory "$(sub Time 'Waveform = table\n  set Table file = folder.csv')" "cannot read 'folder.csv' (relative to the working directory: $here/folder.csv): it is a directory"
 # Run length: more than 1e6 steps is refused, naming the entries that set it.
 printf '0, 0\n1e300, 2\n' > forever.csv
-bad steps-table     "$(sub Time 'Waveform = table\n  set Table file = forever.csv')" "over Time/Time step (s) = 0.02"
-bad steps-table-src "$(sub Time 'Waveform = table\n  set Table file = forever.csv')" "the last time in Time/Table file"
+bad steps-table     "$(sub Time 'Waveform = table\n  set Table file = forever.csv')" "over Time/Time step (s) = 0.02" \
+                    "the last time in Time/Table file"
 bad steps-hold      "$(sub Time 'Hold time (s) = 1e6')" "the run would take 5e+07 time steps, more than 1e+06: its duration 1e+06 s (Time/Ramp time (s) + Time/Hold time (s))"
 bad steps-rest      "$(sub Time 'Rest time before voltage (s) = 3e5')" "+ Time/Rest time before voltage (s)) over Time/Time step (s)"
 bad steps-cycles    "$(sub Time 'Waveform = sine\n  set Cycles = 10000000\n  set Frequency (Hz) = 0.5')" "(Time/Cycles / Time/Frequency (Hz))"
@@ -121,7 +125,7 @@ run table     "$(sub Time 'Waveform = table\n  set Table file = stairs.csv\n  se
 printf 'subsection Material\n  set Model = elastic\nend\n' > elastic-extra
 run elastic   "$(cat elastic-extra)"
 
-/usr/bin/python3 - <<'PY' || failures=$((failures + 1))
+"$PYTHON" - <<'PY' || failures=$((failures + 1))
 import sys
 import h5py
 import numpy as np
@@ -174,7 +178,7 @@ sys.exit(1 if failures else 0)
 PY
 
 for name in ramp-hold square table; do
-  if /usr/bin/python3 "$src/postprocess/plot_time.py" "out-$name/$name.h5" --out plots --min-hold 0.1 > "plot-$name.out" 2>&1 \
+  if "$PYTHON" "$src/postprocess/plot_time.py" "out-$name/$name.h5" --out plots --min-hold 0.1 > "plot-$name.out" 2>&1 \
      && [ -s "plots/${name}_time.png" ]; then
     echo "ok   plot_time.py $name"
   else
@@ -183,11 +187,11 @@ for name in ramp-hold square table; do
 done
 grep -q "cycle  level B" plot-square.out && echo "ok   square: per-cycle levels" || { echo "FAIL square cycles"; failures=$((failures + 1)); }
 grep -q "hold  voltages" plot-table.out && echo "ok   table: holds" || { echo "FAIL table holds"; failures=$((failures + 1)); }
-/usr/bin/python3 "$src/postprocess/plot_time.py" "out-elastic/elastic.h5" --out plots --elastic out-elastic/elastic.h5 > holds.out 2>&1 \
+"$PYTHON" "$src/postprocess/plot_time.py" "out-elastic/elastic.h5" --out plots --elastic out-elastic/elastic.h5 > holds.out 2>&1 \
   && [ -s plots/elastic_holds.png ] && echo "ok   plot_time.py --elastic" || { echo "FAIL --elastic: $(cat holds.out)"; failures=$((failures + 1)); }
-/usr/bin/python3 "$src/postprocess/plot_time.py" --response plots/response.png out-square/square.h5 out-sine/sine.h5 > response.out 2>&1 \
+"$PYTHON" "$src/postprocess/plot_time.py" --response plots/response.png out-square/square.h5 out-sine/sine.h5 > response.out 2>&1 \
   && [ -s plots/response.png ] && echo "ok   plot_time.py --response" || { echo "FAIL --response: $(cat response.out)"; failures=$((failures + 1)); }
-/usr/bin/python3 "$src/postprocess/plot_time.py" "$src/prm/default.prm" > notime.out 2>&1 \
+"$PYTHON" "$src/postprocess/plot_time.py" "$src/prm/default.prm" > notime.out 2>&1 \
   && { echo "FAIL plot_time.py accepts a non-HDF5 file"; failures=$((failures + 1)); } || echo "ok   plot_time.py refuses a non-HDF5 file"
 
 echo "$failures failed"
