@@ -12,6 +12,13 @@
 // jobs on a shared machine), and the work the program reports (evaluations or
 // iterations, equilibrium solves, its own time).
 //
+// Every run's answer is checked (exit code 1 otherwise): the help names the
+// commands; two rings reach the two-ring optimum of bench_partitioning
+// (9.617312 mm, doc/optimization.md section 3) to 1e-5; RINGS rings lie
+// between it and the straight cone (shooting/straight_cone.h), the limit of
+// any partitioning; the fit recovers the synthetic data's mu = 25.1 kPa and
+// Jlim = 270 within three of its own standard errors.
+//
 //   build/benchmarks/bench_optimize [RUNS [RINGS [STARTS]]]      (defaults 5 8 8)
 //   build/benchmarks/bench_optimize --write-fit-data FILE.csv    (the example data)
 //
@@ -19,7 +26,9 @@
 // doc/optimization.md.
 
 #include <cdea/design/fit.h>
+#include <cdea/design/sweep.h>
 #include <cdea/base/mpi_session.h>
+#include <cdea/shooting/straight_cone.h>
 
 #include "bench_common.h"
 
@@ -32,6 +41,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <random>
@@ -101,8 +111,11 @@ namespace
   /// The benchmark's temporary folder (removed by main and on failure).
   std::filesystem::path output_folder;
 
+  /// What a run's output must say; throws cdea_bench::Broken otherwise.
+  using OutputCheck = std::function<void(const std::string &)>;
+
   void time_command(const std::string &what, const std::vector<std::string> &args,
-                    const std::string &log, const int runs)
+                    const std::string &log, const int runs, const OutputCheck &check)
   {
     std::vector<double> wall, cpu;
     std::string         work;
@@ -119,9 +132,21 @@ namespace
             std::filesystem::remove_all(output_folder);
             std::exit(1);
           }
+        const std::string output = slurp(log);
+        try
+          {
+            check(output);
+          }
+        catch (const cdea_bench::Broken &e)
+          {
+            std::cerr << "bench_optimize: check failed: " << e.what() << "; the output:\n"
+                      << output;
+            std::filesystem::remove_all(output_folder);
+            std::exit(1);
+          }
         wall.push_back(t.wall);
         cpu.push_back(t.cpu);
-        work = work_of(slurp(log)) + (status == 2 ? " (NOT converged)" : "");
+        work = work_of(output) + (status == 2 ? " (NOT converged)" : "");
       }
     std::cout << std::left << std::setw(44) << what << std::right << std::fixed
               << std::setprecision(3) << std::setw(9) << cdea_bench::median(wall) << std::setw(9)
@@ -164,6 +189,39 @@ namespace
       }
   }
 
+  /// The number after @p label in @p output (NaN if absent).
+  double number_after(const std::string &output, const std::string &label)
+  {
+    const std::size_t at = output.find(label);
+    return at == std::string::npos ? std::nan("") :
+                                     std::strtod(output.c_str() + at + label.size(), nullptr);
+  }
+
+  /// The optimum's stroke (mm) as `cdea optimize` prints it.
+  double optimum_stroke(const std::string &output)
+  {
+    const std::size_t at = output.find("Optimum (start");
+    return at == std::string::npos ? std::nan("") : number_after(output.substr(at), "stroke ");
+  }
+
+  /// The fitted value and standard error of @p parameter, as `cdea fit`
+  /// prints them: "name  start  fitted  std.error  rel.".
+  std::pair<double, double> fitted(const std::string &output, const std::string &parameter)
+  {
+    std::smatch       m;
+    const std::regex  row("\\n" + parameter + R"(\s+\S+\s+(\S+)\s+(\S+)\s+\S+)");
+    cdea_bench::require(std::regex_search(output, m, row), "fit: no row for " + parameter);
+    return {std::stod(m[1].str()), std::stod(m[2].str())};
+  }
+
+  void check_fit(const std::string &output, const std::string &parameter, const double truth)
+  {
+    const auto [value, error] = fitted(output, parameter);
+    cdea_bench::require(std::abs(value - truth) <= 3. * error && error < 0.1 * truth,
+                        "fit: " + parameter + " " + std::to_string(value) + " +- " +
+                          std::to_string(error) + ", synthetic value " + std::to_string(truth));
+  }
+
   void write_file(const std::filesystem::path &path, const std::string &text)
   {
     std::ofstream(path) << text;
@@ -198,9 +256,17 @@ int main(int argc, char **argv)
     std::filesystem::temp_directory_path() / ("cdea-bench-optimize-" + std::to_string(getpid()));
   output_folder = out;
   std::filesystem::create_directories(out);
+  // The bounds of the answers: the two-ring optimum and the straight cone.
+  constexpr double two_ring_stroke = 9.617312; // mm, bench_partitioning part 1
+  double           cone_stroke     = 0.;
   {
     const MpiSession mpi(argc, argv);
     write_fit_data((out / "fit.csv").string());
+    const Scene scene;
+    cone_stroke = (shooting::straight_cone(scene).displacement -
+                   zero_voltage_displacement(scene, FeDiscretization(), NewtonSettings(),
+                                             SteppingSettings())) *
+                  1e3;
   }
   write_file(out / "two.prm", optimize_prm(2, starts, out.string(), "two"));
   write_file(out / "many.prm", optimize_prm(rings, starts, out.string(), "many"));
@@ -213,20 +279,47 @@ int main(int argc, char **argv)
                                 out.string() + "\n  set Base name = fit\nend\n");
 
   const std::string exe = CDEA_EXECUTABLE;
+  const auto help_check = [](const std::string &output) {
+    cdea_bench::require(output.find("cdea optimize") != std::string::npos &&
+                          output.find("cdea fit") != std::string::npos,
+                        "cdea --help names neither optimize nor fit");
+  };
+  const auto two_check = [&](const std::string &output) {
+    const double stroke = optimum_stroke(output);
+    cdea_bench::require(std::abs(stroke / two_ring_stroke - 1.) < 1e-5,
+                        "optimize, two rings: stroke " + std::to_string(stroke) +
+                          " mm, not the two-ring optimum " + std::to_string(two_ring_stroke));
+  };
+  const auto many_check = [&](const std::string &output) {
+    const double stroke = optimum_stroke(output);
+    cdea_bench::require(stroke > two_ring_stroke && stroke < cone_stroke,
+                        "optimize, " + std::to_string(rings) + " rings: stroke " +
+                          std::to_string(stroke) + " mm, not between two rings (" +
+                          std::to_string(two_ring_stroke) + ") and the straight cone (" +
+                          std::to_string(cone_stroke) + ")");
+  };
+  const auto fit_check = [](const std::string &output) {
+    check_fit(output, "shear modulus \\(kPa\\)", 25.1);
+    check_fit(output, "Jlim", 270.);
+  };
   std::cout << "bench_optimize: " << runs << " run(s) of each command; wall and CPU times in s\n"
             << std::left << std::setw(44) << "command" << std::right << std::setw(9) << "median"
             << std::setw(9) << "min" << std::setw(9) << "CPU" << "   work reported\n";
-  time_command("cdea --help (start-up only)", {exe, "--help"}, (out / "help.log").string(), runs);
+  time_command("cdea --help (start-up only)", {exe, "--help"}, (out / "help.log").string(), runs,
+               help_check);
   time_command("optimize: 2 rings all free, " + std::to_string(starts) + " starts",
-               {exe, "optimize", (out / "two.prm").string()}, (out / "two.log").string(), runs);
+               {exe, "optimize", (out / "two.prm").string()}, (out / "two.log").string(), runs,
+               two_check);
   if (rings > 2) // (the smoke run of ctest skips it)
     time_command("optimize: " + std::to_string(rings) + " rings all free, " +
                    std::to_string(starts) + " starts",
                  {exe, "optimize", (out / "many.prm").string()}, (out / "many.log").string(),
-                 runs);
+                 runs, many_check);
   time_command("fit: mu and Jlim to 20 points", {exe, "fit", (out / "fit.prm").string(),
                                                  (out / "fit.csv").string()},
-               (out / "fit.log").string(), runs);
+               (out / "fit.log").string(), runs, fit_check);
+  std::cout << "checked: the two-ring optimum, the bounds of " << rings
+            << " rings, the fitted mu and Jlim\n";
   std::filesystem::remove_all(out);
   return 0;
 }

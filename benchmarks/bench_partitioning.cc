@@ -17,6 +17,15 @@
 //     field of the states with the paper's 40.5 % (1.8, 5 kV) and 20.3 %
 //     (2.0, 5.5 kV).
 //
+// Checked (exit code 1 otherwise): every stroke of parts 1 and 2 below the
+// straight cone (shooting/straight_cone.h), the limit of any partitioning;
+// the graded strokes growing with M, their Newton residuals below 1e-10, their
+// extrapolation within 2 % of the straight cone, and the optimizer on the
+// smallest M's rings at the graded stroke to 1e-6; part 3's optimizer on the
+// red line to 0.01 percentage points; part 4's states at the paper's
+// increases found, with the fields of doc/optimization.md (59.19 and
+// 58.75 MV/m) to 0.01 MV/m.
+//
 //   build/benchmarks/bench_partitioning [--max-rings N] [--starts S] [--field MV/m]
 //        [--graded M,M,...] [--rv-step D] [--out DIR]   (defaults 8 4 59 16,32,64,128 0.05)
 //
@@ -27,7 +36,9 @@
 #include <cdea/design/optimize.h>
 #include <cdea/design/sweep.h>
 #include <cdea/numerics/bracketed_root.h>
-#include <cdea/numerics/dormand_prince.h>
+#include <cdea/shooting/straight_cone.h>
+
+#include "bench_common.h"
 
 #include <Eigen/LU>
 
@@ -40,6 +51,7 @@
 #include <sstream>
 
 using namespace cdea;
+using cdea_bench::require;
 
 namespace
 {
@@ -164,89 +176,6 @@ namespace
     return g;
   }
 
-  /// Part 2, continuous: with s2 = 0 everywhere the paper's eqs. (4) and (5)
-  /// make R s1 sin(theta) and R s1 cos(theta) constant, so theta is constant:
-  /// the film is a straight cone. With e = eps Phi^2 / H^2 chosen pointwise so
-  /// that s2 = s2_el - e l1^2 l2 = 0, s1 = s1_el - s2_el l2 / l1 =: sigma. For
-  /// a tension C = R sigma cos(theta) (tan(theta) = F / (2 pi H C)) the
-  /// meridian follows r' = l1 cos(theta) with sigma(l1, r/R) = C / (R
-  /// cos(theta)); C is shot so that r(B) = b, and the displacement is
-  /// tan(theta) (b - a). Also the largest voltage the profile needs.
-  struct ConeLimit
-  {
-    bool   ok = false;
-    double displacement = none, theta = none, max_voltage = 0.;
-  };
-
-  ConeLimit cone_limit()
-  {
-    const GentDielectric law(base.material, 0.);
-    const double         A = base.inner_reference_radius(), B = base.outer_reference_radius();
-    const double         H = base.material.thickness, eps = base.material.permittivity;
-    const double         F = base.dead_load();
-    const auto sigma = [&](const double l1, const double l2) {
-      const NominalStress s = law.stress(l1, l2);
-      return s.s1 - s.s2 * l2 / l1;
-    };
-    // l1 with sigma(l1, l2) = T: scanned up from 1 (sigma grows with l1 there).
-    const auto meridian_stretch = [&](const double l2, const double T) {
-      double lo = 1., hi = 1.;
-      while (law.gent_margin(hi * 1.05, l2) > 0. && sigma(hi, l2) < T)
-        lo = hi, hi *= 1.05;
-      if (!(sigma(hi, l2) >= T) || !(sigma(lo, l2) <= T))
-        return none;
-      BracketedRootSettings settings;
-      settings.x_tolerance = 1e-14;
-      return find_bracketed_root([&](const double l1) { return sigma(l1, l2) - T; }, lo,
-                                 sigma(lo, l2) - T, hi, sigma(hi, l2) - T, settings)
-        .x;
-    };
-    using Integrator = shooting::DormandPrince45<1>;
-    typename Integrator::Control control;
-    control.rtol = control.atol = 1e-12;
-    const Integrator integrator(control);
-    double           max_voltage = 0.;
-    const auto       shoot = [&](const double C) {
-      const double theta = std::atan(F / (2. * M_PI * H * C));
-      const auto   rhs   = [&](const double R, const Integrator::State &y, Integrator::State &dy) {
-        const double l2 = y[0] / R;
-        const double l1 = meridian_stretch(l2, C / (R * std::cos(theta)));
-        if (!std::isfinite(l1))
-          return false;
-        dy[0] = l1 * std::cos(theta);
-        const double s2 = law.stress(l1, l2).s2;
-        max_voltage     = std::max(max_voltage, H * std::sqrt(std::max(s2, 0.) / (eps * l1 * l1 * l2)));
-        return true;
-      };
-      const auto r = integrator.integrate(rhs, A, B, Integrator::State(base.disk_radius), 0.,
-                                          [](const auto &, double, const auto &) {});
-      return r.ok ? r.y[0] - base.frame_radius : none;
-    };
-    // The tension C: scanned in factors of 1.2 for a sign change of r(B) - b.
-    double c0 = 1., f0 = shoot(c0);
-    for (double c1 = 1.2; c1 < 1e4; c1 *= 1.2)
-      {
-        const double f1 = shoot(c1);
-        if (std::isfinite(f0) && std::isfinite(f1) && (f0 < 0.) != (f1 < 0.))
-          {
-            BracketedRootSettings settings;
-            settings.x_tolerance = 1e-13 * c1;
-            const double C       = find_bracketed_root(shoot, c0, f0, c1, f1, settings).x;
-            max_voltage          = 0.;
-            shoot(C);
-            ConeLimit limit;
-            limit.ok           = true;
-            limit.theta        = std::atan(F / (2. * M_PI * H * C));
-            limit.displacement = std::tan(limit.theta) * (base.frame_radius - base.disk_radius);
-            limit.max_voltage  = max_voltage;
-            return limit;
-          }
-        c0 = c1;
-        f0 = f1;
-      }
-    return {};
-  }
-
   /// Part 4: the outer voltage where f(evaluation) changes sign, marching
   /// up from the inner voltage in 50 V steps (NaN if a fold comes first).
   std::pair<double, LayoutEvaluation> line(const double rv, const double inner,
@@ -308,7 +237,7 @@ namespace
   }
 } // namespace
 
-int main(int argc, char **argv)
+int run(int argc, char **argv)
 {
   const MpiSession         mpi(argc, argv);
   unsigned int             max_rings = 8, starts = 4;
@@ -346,7 +275,8 @@ int main(int argc, char **argv)
   std::cout << std::setprecision(7);
 
   // The continuous graded limit first: part 1 measures the distance to it.
-  const ConeLimit cone      = cone_limit();
+  const shooting::StraightCone cone = shooting::straight_cone(base);
+  require(cone.ok, "the straight cone: no tension C found");
   const double    zero_disp = zero_voltage_displacement(base, FeDiscretization(),
                                                      NewtonSettings(), SteppingSettings());
   const double    cone_stroke = (cone.displacement - zero_disp) * 1e3;
@@ -369,6 +299,8 @@ int main(int argc, char **argv)
         {
           const RingsResult r = optimize_rings(N, limit, N == 1 ? 1 : starts);
           const double      stroke = r.best.at_best.stroke * 1e3;
+          require(stroke < cone_stroke, std::to_string(N) + " rings: stroke " +
+                                          std::to_string(stroke) + " mm above the straight cone");
           if (N == 1)
             one = one_ring[std::isinf(limit) ? 0 : 1] = stroke;
           if (std::isinf(limit))
@@ -402,6 +334,7 @@ int main(int argc, char **argv)
         return best_voltages[k];
     return best_voltages.empty() ? 5e3 : best_voltages.back();
   };
+  double graded_front_stroke = none; // the smallest M without the field limit (m)
   for (const double limit : {std::numeric_limits<double>::infinity(), field})
     {
       std::vector<double> strokes;
@@ -409,6 +342,13 @@ int main(int argc, char **argv)
         {
           const auto   t = std::chrono::steady_clock::now();
           const Graded g = graded(M, limit, from_best);
+          if (M == graded_M.front() && std::isinf(limit))
+            graded_front_stroke = g.stroke;
+          require(g.residual < 1e-10 && g.stroke * 1e3 < cone_stroke &&
+                    (strokes.empty() || g.stroke * 1e3 > strokes.back()),
+                  "graded limit, M = " + std::to_string(M) + ": residual " +
+                    std::to_string(g.residual) + ", stroke " + std::to_string(g.stroke * 1e3) +
+                    " mm not between the smaller M's and the straight cone");
           strokes.push_back(g.stroke * 1e3);
           std::cout << "  " << (std::isinf(limit) ? "s2 >= 0      " : "s2, E <= lim ") << "M = "
                     << std::setw(3) << M << ": stroke " << g.stroke * 1e3 << " mm, "
@@ -429,6 +369,9 @@ int main(int argc, char **argv)
           std::cout << "  extrapolated (observed order " << p << "): " << extrapolated
                     << " mm, gain over one ring "
                     << 100. * (extrapolated / one_ring[std::isinf(limit) ? 0 : 1] - 1.) << " %\n";
+          require(!std::isinf(limit) || std::abs(extrapolated / cone_stroke - 1.) < 0.02,
+                  "graded limit: extrapolated " + std::to_string(extrapolated) +
+                    " mm, not within 2 % of the straight cone");
         }
       if (std::isinf(limit))
         {
@@ -456,6 +399,10 @@ int main(int argc, char **argv)
           LayoutEvaluator   evaluator(base, s, FeDiscretization(), NewtonSettings(), SteppingSettings());
           const auto        t = std::chrono::steady_clock::now();
           const StartResult r = optimize_from(base, s, evaluator, 0, start);
+          require(std::abs(r.at_best.stroke / graded_front_stroke - 1.) < 1e-6,
+                  "the optimizer on the " + std::to_string(M) + " equal rings: stroke " +
+                    std::to_string(r.at_best.stroke * 1e3) + " mm, graded " +
+                    std::to_string(graded_front_stroke * 1e3));
           std::cout << "  optimizer on the " << M << " equal rings: stroke "
                     << r.at_best.stroke * 1e3 << " mm (" << r.status << "), " << r.evaluations
                     << " evaluations, " << std::setprecision(3) << seconds_since(t) << " s"
@@ -500,6 +447,9 @@ int main(int argc, char **argv)
               << best_increase << " % at r_v/a = " << best_rv << "\n  difference "
               << increase - best_increase << " percentage points\n"
               << std::setprecision(7);
+    require(std::abs(increase - best_increase) < 0.01,
+            "the paper's case: optimizer and red line differ by " +
+              std::to_string(increase - best_increase) + " percentage points");
   }
 
   // 4. The field question.
@@ -544,7 +494,9 @@ int main(int argc, char **argv)
                 << "; with E <= " << field_MV << " MV/m at the edge " << top_field
                 << " % at r_v/a = " << rv_field << '\n';
     }
-  for (const auto &[rv, inner, target] : {std::tuple{1.8, 5e3, 40.5}, std::tuple{2.0, 5.5e3, 20.3}})
+  // The fields of doc/optimization.md (section 3, "The field question").
+  for (const auto &[rv, inner, target, field_MV_doc] :
+       {std::tuple{1.8, 5e3, 40.5, 59.19}, std::tuple{2.0, 5.5e3, 20.3, 58.75}})
     {
       const double both = stroke_both_at(inner);
       const auto [v, e] = line(rv, inner, [&](const LayoutEvaluation &x) {
@@ -554,7 +506,16 @@ int main(int argc, char **argv)
                 << inner * 1e-3 << " kV): outer " << v * 1e-3 << " kV, E at the outer ring's "
                 << "inner edge " << e.points.field[edge(e)] * 1e-6 << " MV/m, s2 there "
                 << e.points.s2[edge(e)] * 1e-3 << " kPa\n";
+      require(e.ok && std::abs(e.points.field[edge(e)] * 1e-6 - field_MV_doc) < 0.01,
+              "the paper's " + std::to_string(target) + " %: no state, or a field other than " +
+                std::to_string(field_MV_doc) + " MV/m");
     }
-  std::cout << "CSV files in " << out_dir << '\n';
+  std::cout << "CSV files in " << out_dir << "\nchecked: the bounds, the graded limit, the red "
+               "line and the paper's fields\n";
   return 0;
+}
+
+int main(int argc, char **argv)
+{
+  return cdea_bench::guarded("bench_partitioning", [&] { return run(argc, argv); });
 }

@@ -26,6 +26,11 @@
 //   build/benchmarks/bench_time "" 1 1 1 1
 // OLD_RUNS (default 1; 0 leaves part 2 out) runs of the old scheme;
 // --reference computes the reference in-process even where one is stored.
+//
+// Checked (exit code 1 otherwise): every timed run completes, reaches the
+// waveform's end time (to 1e-9 s, as tests/test_python_time.py asks of the
+// program) and reports the same steps and Newton iterations as the first (the
+// runs time the same work); every process exits with 0.
 
 #include <cdea/base/format.h>
 #include <cdea/input/solver_settings.h>
@@ -143,6 +148,12 @@ namespace
     m.iterations = result.newton_iterations;
     if (!m.completed)
       std::cerr << "bench_time: run did not complete: " << result.message << '\n';
+    else if (std::abs(run.stepper->time() - end) > 1e-9)
+      {
+        std::cerr << "bench_time: check failed: the run ended at t = " << run.stepper->time()
+                  << " s, the waveform ends at " << end << " s\n";
+        m.completed = false;
+      }
     if (p.time.waveform == WaveformKind::square)
       {
         m.stroke_mm = z.mean(0) - z.mean(1);
@@ -215,6 +226,15 @@ namespace
           return m;
         if (k == 0)
           first = m;
+        else if (m.rows != first.rows || m.iterations != first.iterations)
+          {
+            std::cerr << "bench_time: check failed: run " << k << " took " << m.rows
+                      << " steps and " << m.iterations << " Newton iterations, the first "
+                      << first.rows << " and " << first.iterations << '\n';
+            Measured failed = m;
+            failed.completed = false;
+            return failed;
+          }
         run_time.push_back(m.wall);
         run_cpu.push_back(m.cpu);
         per_step.push_back(m.wall / m.rows);
