@@ -9,7 +9,6 @@
 #include <cdea/solver/esdirk_step.h>
 #include <cdea/solver/load_stepper.h>
 #include <cdea/solver/time_stepper.h>
-#include <cdea/base/format.h>
 
 #include <Eigen/Dense>
 

@@ -17,9 +17,9 @@
 // Newton on P(x) - x = 0 with Jacobian-free GMRES on (I - dP/dx), the
 // directional derivatives as differences of period maps on a frozen step
 // sequence (the one the error control chose for the current iterate), so
-// that P is smooth in x. Start: Steady state/Start periods of plain
-// integration from the time run's start (pre-stretch and weight,
-// film relaxed). Converged when the weighted defect max_i |P(x)_i - x_i| /
+// that P is smooth in x. Start: the relaxed equilibrium (network B carries
+// nothing) at the waveform's voltages at t = 0, then Steady state/Start
+// periods of plain integration. Converged when the weighted defect max_i |P(x)_i - x_i| /
 // s_i is below Steady state/Tolerance, and one more period integrated with
 // error control from the found state (its own step sequence) moves it by
 // less than the tolerance too. Weights s_i: the half swing over the period of
@@ -70,7 +70,8 @@ namespace cdea
     std::string message;           ///< why it failed (empty if converged)
     double      seconds = 0.;
 
-    /// |electrical - dissipated - stored change| / dissipated.
+    /// |electrical - dissipated - stored change| / dissipated (not finite
+    /// without dissipation: an elastic film).
     double energy_defect() const;
   };
 
