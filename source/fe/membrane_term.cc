@@ -10,8 +10,7 @@ namespace cdea
     , two_pi_H(2. * M_PI * scene.material.thickness)
     , voltages(scene.n_rings(), 0.)
   {
-    for (unsigned int i = 0; i < mesh.dofs_per_cell(); ++i)
-      (mesh.component[i] == 0 ? r_dofs : z_dofs).push_back(i);
+    g_masked.resize(2 * mesh.dofs_per_cell());
     set_law(std::move(law));
   }
 
@@ -107,8 +106,9 @@ namespace cdea
   //    + s1 ((dr'_i dr'_j + dz'_i dz'_j) - dl1_i dl1_j) / l1]
   // = u_i dl1_j + v_i dl2_j + [same component] c g_i g_j with
   // u = w ((t11 - s1/l1) dl1 + t12 dl2), v = w (t12 dl1 + t22 dl2), c = w s1/l1.
-  // dl2_j = 0 for a z dof: those columns take u_i dl1_j (+ c g_i g_j for a z
-  // row) alone, the same numbers as the whole sum with its zero terms.
+  // The bracket as g masked by the row's component (g_j or 0), dl2_j = 0 for
+  // a z dof: every row is one contiguous loop over j with the same numbers
+  // as the sum without its zero terms (only a zero's sign may differ).
   void MembraneTerm::add_point_tangent(const LawResponse &law, const PointKinematics &p,
                                        const double w, const CellScratch &s, double *K) const
   {
@@ -117,25 +117,20 @@ namespace cdea
     const double         c  = w * law.stress.s1 / p.l1;
     const double         a1 = w * t.s11 - c, a2 = w * t.s12, a3 = w * t.s22;
     const double        *dl1 = s.dl1.data(), *dl2 = s.dl2.data(), *g = s.gradient.data();
-    for (const unsigned int i : r_dofs)
+    const auto          &comp = mesh.component;
+    for (unsigned int j = 0; j < n; ++j)
       {
-        const double u = a1 * dl1[i] + a2 * dl2[i], v = a2 * dl1[i] + a3 * dl2[i];
-        const double cg = c * g[i];
-        double      *row = K + i * n;
-        for (const unsigned int j : r_dofs)
-          row[j] += u * dl1[j] + v * dl2[j] + cg * g[j];
-        for (const unsigned int j : z_dofs)
-          row[j] += u * dl1[j];
+        g_masked[j]     = comp[j] == 0 ? g[j] : 0.;
+        g_masked[n + j] = comp[j] == 0 ? 0. : g[j];
       }
-    for (const unsigned int i : z_dofs)
+    for (unsigned int i = 0; i < n; ++i)
       {
-        const double u = a1 * dl1[i] + a2 * dl2[i], v = a2 * dl1[i] + a3 * dl2[i];
-        const double cg = c * g[i];
-        double      *row = K + i * n;
-        for (const unsigned int j : r_dofs)
-          row[j] += u * dl1[j] + v * dl2[j];
-        for (const unsigned int j : z_dofs)
-          row[j] += u * dl1[j] + cg * g[j];
+        const double  u = a1 * dl1[i] + a2 * dl2[i], v = a2 * dl1[i] + a3 * dl2[i];
+        const double  cg = c * g[i];
+        const double *gm  = g_masked.data() + (comp[i] == 0 ? 0 : n);
+        double       *row = K + i * n;
+        for (unsigned int j = 0; j < n; ++j)
+          row[j] += u * dl1[j] + v * dl2[j] + cg * gm[j];
       }
   }
 

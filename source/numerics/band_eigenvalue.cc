@@ -266,6 +266,7 @@ namespace cdea
                                            const Eigen::VectorXd &g, const bool with_eigenvalue)
   {
     steps = n_factorizations = 0;
+    scale_of_spectrum        = nan;
     TangentStability result;
     if (S.size() == 0 || !finite(S) || (k != 0. && !g.allFinite()))
       return result;
@@ -298,7 +299,7 @@ namespace cdea
     // the smallest (a start vector that holds little of the lowest mode may
     // converge to the next one first). If not, again from the spread vector
     // with a shift below the one it missed.
-    const double scale = std::max(std::abs(S.gershgorin_lower()), std::abs(S.gershgorin_upper()));
+    const double scale = spectrum_scale(S);
     double       lambda = nan;
     for (int round = 0; round < 4; ++round)
       {
@@ -319,6 +320,16 @@ namespace cdea
           }
       }
     return lambda;
+  }
+
+  double StabilityCheck::spectrum_scale(const SymmetricBand &S)
+  {
+    if (std::isnan(scale_of_spectrum))
+      {
+        const auto [lower, upper] = S.gershgorin_bounds();
+        scale_of_spectrum         = std::max(std::abs(lower), std::abs(upper));
+      }
+    return scale_of_spectrum;
   }
 
   bool StabilityCheck::definite_above(const SymmetricBand &S, const double k,
@@ -363,7 +374,7 @@ namespace cdea
     // 1 + k g^T B^-1 g < 0. A singular B is taken as B - delta I, delta at
     // round-off: its zero eigenvalue becomes negative, and a positive
     // definite B + k g g^T stays so.
-    const double scale = std::max(std::abs(S.gershgorin_lower()), std::abs(S.gershgorin_upper()));
+    const double scale = spectrum_scale(S);
     for (const double delta : {0., 1e2 * eps * scale + std::numeric_limits<double>::min()})
       {
         ++n_factorizations;
@@ -395,8 +406,7 @@ namespace cdea
             start    = bottom.vector + 1e-2 * spread;
           }
       }
-    const double scale =
-      std::max(std::abs(S.gershgorin_lower()), std::abs(S.gershgorin_upper()));
+    const double scale = spectrum_scale(S);
     double distance = std::max({1e-3 * std::abs(estimate), 1e-13 * scale,
                                 std::numeric_limits<double>::min()});
     for (int attempt = 0; attempt < 64; ++attempt, distance *= 16.)
@@ -420,8 +430,7 @@ namespace cdea
     double gamma = 0.;
     if (k != 0.)
       {
-        const double scale = std::max(std::abs(S.gershgorin_lower()), std::abs(S.gershgorin_upper())) +
-                             k * g.squaredNorm();
+        const double scale = spectrum_scale(S) + k * g.squaredNorm();
         double distance = std::max(1e-13 * scale, std::abs(cholesky.shift()));
         for (int attempt = 0; attempt < 64; ++attempt, distance *= 8.)
           {

@@ -105,63 +105,131 @@ namespace cdea
     return upper;
   }
 
-  // Right-looking, as LAPACK's dpbtf2: u_jj = sqrt(a_jj), the row of U
-  // right of it a_jk / u_jj, then the trailing block less u_j u_j^T.
+  std::pair<double, double> SymmetricBand::gershgorin_bounds() const
+  {
+    double lower = std::numeric_limits<double>::infinity();
+    double upper = -lower;
+    for_each_row(ab, n, kd, [&](const double d, const double off) {
+      lower = std::min(lower, d - off);
+      upper = std::max(upper, d + off);
+    });
+    return {lower, upper};
+  }
+
+  namespace
+  {
+    /// The bandwidth of a kernel: KD if it is fixed at compile time (the FE
+    /// tangents' bandwidths 2p + 1, so that the loops over a column unroll),
+    /// else the run-time @p kd (KD = 0). Same operations in the same order
+    /// either way.
+    template <unsigned int KD>
+    unsigned int band_width(const unsigned int kd)
+    {
+      return KD != 0 ? KD : kd;
+    }
+
+    /// Right-looking, as LAPACK's dpbtf2: u_jj = sqrt(a_jj), the row of U
+    /// right of it a_jk / u_jj, then the trailing block less u_j u_j^T.
+    /// U(i, j) at ab[(kd + i - j) + j (kd + 1)].
+    template <unsigned int KD>
+    bool cholesky_in_place(double *ab, const unsigned int n, const unsigned int kd_run,
+                           const double shift, double *r)
+    {
+      const unsigned int kd = band_width<KD>(kd_run);
+      const std::size_t  ld = kd + 1;
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          double      *diagonal = ab + kd + j * ld;
+          const double d        = *diagonal - shift;
+          if (!(d > 0.))
+            return false;
+          const double root = std::sqrt(d);
+          *diagonal         = root;
+          const unsigned int kn = std::min(kd, n - 1 - j);
+          // U(j, j + c) at diagonal[c kd].
+          for (unsigned int c = 1; c <= kn; ++c)
+            r[c] = diagonal[c * kd] /= root;
+          for (unsigned int c = 1; c <= kn; ++c)
+            {
+              double *column = diagonal + c * kd; // column[r] = U(j + r, j + c)
+              for (unsigned int i = 1; i <= c; ++i)
+                column[i] -= r[i] * r[c];
+            }
+        }
+      return true;
+    }
+
+    /// U^T y = b (column j of U holds U(j - kd .. j, j): a dot product per
+    /// row), then U x = y from the last row up (an update per column).
+    template <unsigned int KD>
+    void cholesky_solve(const double *ab, const unsigned int n, const unsigned int kd_run,
+                        double *b)
+    {
+      const unsigned int kd = band_width<KD>(kd_run);
+      const std::size_t  ld = kd + 1;
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          const double *column = ab + j * ld + kd - j; // column[i] = U(i, j)
+          double        sum    = b[j];
+          if (j >= kd)
+            for (unsigned int i = j - kd; i < j; ++i)
+              sum -= column[i] * b[i];
+          else
+            for (unsigned int i = 0; i < j; ++i)
+              sum -= column[i] * b[i];
+          b[j] = sum / column[j];
+        }
+      for (unsigned int j = n; j-- > 0;)
+        {
+          const double *column = ab + j * ld + kd - j;
+          const double  x      = b[j] / column[j];
+          b[j]                 = x;
+          if (j >= kd)
+            for (unsigned int i = j - kd; i < j; ++i)
+              b[i] -= column[i] * x;
+          else
+            for (unsigned int i = 0; i < j; ++i)
+              b[i] -= column[i] * x;
+        }
+    }
+  } // namespace
+
   bool BandCholesky::factorize(const SymmetricBand &S, const double shift)
   {
     n      = S.size();
     kd     = S.bandwidth();
     shift_ = shift;
     ab.assign(S.data(), S.data() + std::size_t(kd + 1) * n);
-    const std::size_t ld = kd + 1;
-    // U(i, j) at ab[(kd + i - j) + j ld].
-    const auto u = [&](const unsigned int i, const unsigned int j) -> double & {
-      return ab[(kd + i - j) + j * ld];
-    };
-    std::vector<double> &row = work;
-    row.resize(kd + 1);
-    for (unsigned int j = 0; j < n; ++j)
+    work.resize(kd + 1);
+    switch (kd)
       {
-        const double d = u(j, j) - shift;
-        if (!(d > 0.))
-          return false;
-        const double root = std::sqrt(d);
-        u(j, j)           = root;
-        const unsigned int kn = std::min(kd, n - 1 - j);
-        for (unsigned int c = 1; c <= kn; ++c)
-          row[c] = u(j, j + c) /= root;
-        for (unsigned int c = 1; c <= kn; ++c)
-          {
-            double *column = &u(j, j + c); // column[r] = U(j + r, j + c)
-            for (unsigned int r = 1; r <= c; ++r)
-              column[r] -= row[r] * row[c];
-          }
+        case 5:
+          return cholesky_in_place<5>(ab.data(), n, kd, shift, work.data());
+        case 7:
+          return cholesky_in_place<7>(ab.data(), n, kd, shift, work.data());
+        case 9:
+          return cholesky_in_place<9>(ab.data(), n, kd, shift, work.data());
+        case 11:
+          return cholesky_in_place<11>(ab.data(), n, kd, shift, work.data());
+        default:
+          return cholesky_in_place<0>(ab.data(), n, kd, shift, work.data());
       }
-    return true;
   }
 
-  // U^T y = b (column j of U holds U(j - kd .. j, j): a dot product per
-  // row), then U x = y from the last row up (an update per column).
   void BandCholesky::solve(double *b) const
   {
-    const std::size_t ld = kd + 1;
-    for (unsigned int j = 0; j < n; ++j)
+    switch (kd)
       {
-        const double      *column = ab.data() + j * ld + kd - j; // column[i] = U(i, j)
-        const unsigned int lo     = j > kd ? j - kd : 0;
-        double             sum    = b[j];
-        for (unsigned int i = lo; i < j; ++i)
-          sum -= column[i] * b[i];
-        b[j] = sum / column[j];
-      }
-    for (unsigned int j = n; j-- > 0;)
-      {
-        const double      *column = ab.data() + j * ld + kd - j;
-        const unsigned int lo     = j > kd ? j - kd : 0;
-        const double       x      = b[j] / column[j];
-        b[j]                      = x;
-        for (unsigned int i = lo; i < j; ++i)
-          b[i] -= column[i] * x;
+        case 5:
+          return cholesky_solve<5>(ab.data(), n, kd, b);
+        case 7:
+          return cholesky_solve<7>(ab.data(), n, kd, b);
+        case 9:
+          return cholesky_solve<9>(ab.data(), n, kd, b);
+        case 11:
+          return cholesky_solve<11>(ab.data(), n, kd, b);
+        default:
+          return cholesky_solve<0>(ab.data(), n, kd, b);
       }
   }
 

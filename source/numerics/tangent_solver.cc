@@ -25,8 +25,12 @@ namespace cdea
     /// pivoting by rows, multipliers scaled by the pivot's reciprocal, the
     /// trailing band updated column by column; the rows of fill-in zeroed as
     /// they come into use. Pivots 0-based; false if a pivot is zero.
-    bool band_lu(double *ab, const unsigned int n, const unsigned int bw, int *pivots)
+    template <unsigned int BW>
+    bool band_lu(double *ab, const unsigned int n, const unsigned int bw_run, int *pivots)
     {
+      // BW: the bandwidth fixed at compile time (the loops over a column
+      // unroll), 0: bw_run. Same operations in the same order either way.
+      const unsigned int bw = BW != 0 ? BW : bw_run;
       const std::size_t  ld = 3 * bw + 1;
       const unsigned int kv = 2 * bw;
       bool               regular = true;
@@ -63,7 +67,12 @@ namespace cdea
             {
               double      *target = ab + (kv - c) + (j + c) * ld; // target[i] = A(j + i, j + c)
               const double factor = -target[0];
-              if (factor != 0.)
+              if (factor == 0.)
+                continue;
+              if (km == bw)
+                for (unsigned int i = 1; i <= bw; ++i)
+                  target[i] += column[i] * factor;
+              else
                 for (unsigned int i = 1; i <= km; ++i)
                   target[i] += column[i] * factor;
             }
@@ -73,9 +82,11 @@ namespace cdea
 
     /// dgbtrs for one right-hand side: the row interchanges and L column by
     /// column, then U from the last row up (dtbsv).
-    void band_lu_solve(const double *ab, const unsigned int n, const unsigned int bw,
+    template <unsigned int BW>
+    void band_lu_solve(const double *ab, const unsigned int n, const unsigned int bw_run,
                        const int *pivots, double *b)
     {
+      const unsigned int bw = BW != 0 ? BW : bw_run;
       const std::size_t  ld = 3 * bw + 1;
       const unsigned int kv = 2 * bw;
       for (unsigned int j = 0; j + 1 < n; ++j)
@@ -84,7 +95,10 @@ namespace cdea
           if (unsigned(pivots[j]) != j)
             std::swap(b[pivots[j]], b[j]);
           const double factor = -b[j];
-          if (factor != 0.)
+          if (factor != 0. && lm == bw)
+            for (unsigned int i = 1; i <= bw; ++i)
+              b[j + i] += ab[kv + i + j * ld] * factor;
+          else if (factor != 0.)
             for (unsigned int i = 1; i <= lm; ++i)
               b[j + i] += ab[kv + i + j * ld] * factor;
         }
@@ -94,8 +108,12 @@ namespace cdea
             b[j] /= ab[kv + j * ld];
             const double       x  = b[j];
             const unsigned int lo = j > kv ? j - kv : 0;
-            for (unsigned int i = j; i-- > lo;)
-              b[i] -= x * ab[(kv + i - j) + j * ld];
+            if (j - lo == kv)
+              for (unsigned int i = j; i-- > j - kv;)
+                b[i] -= x * ab[(kv + i - j) + j * ld];
+            else
+              for (unsigned int i = j; i-- > lo;)
+                b[i] -= x * ab[(kv + i - j) + j * ld];
           }
     }
   } // namespace
@@ -107,7 +125,23 @@ namespace cdea
     pivots.resize(n);
     if (K.bandwidth() <= widest_inline_band)
       {
-        factorized = band_lu(lu.data(), n, kl, pivots.data());
+        switch (kl)
+          {
+            case 5:
+              factorized = band_lu<5>(lu.data(), n, kl, pivots.data());
+              break;
+            case 7:
+              factorized = band_lu<7>(lu.data(), n, kl, pivots.data());
+              break;
+            case 9:
+              factorized = band_lu<9>(lu.data(), n, kl, pivots.data());
+              break;
+            case 11:
+              factorized = band_lu<11>(lu.data(), n, kl, pivots.data());
+              break;
+            default:
+              factorized = band_lu<0>(lu.data(), n, kl, pivots.data());
+          }
         return factorized;
       }
     int info = 0;
@@ -122,7 +156,24 @@ namespace cdea
       return false;
     if (lu.bandwidth() <= widest_inline_band)
       {
-        band_lu_solve(lu.data(), lu.size(), lu.bandwidth(), pivots.data(), b.data());
+        const unsigned int n = lu.size(), bw = lu.bandwidth();
+        switch (bw)
+          {
+            case 5:
+              band_lu_solve<5>(lu.data(), n, bw, pivots.data(), b.data());
+              break;
+            case 7:
+              band_lu_solve<7>(lu.data(), n, bw, pivots.data(), b.data());
+              break;
+            case 9:
+              band_lu_solve<9>(lu.data(), n, bw, pivots.data(), b.data());
+              break;
+            case 11:
+              band_lu_solve<11>(lu.data(), n, bw, pivots.data(), b.data());
+              break;
+            default:
+              band_lu_solve<0>(lu.data(), n, bw, pivots.data(), b.data());
+          }
         return true;
       }
     const int  n = lu.size(), kl = lu.bandwidth(), ldab = lu.leading_dimension(), nrhs = 1;

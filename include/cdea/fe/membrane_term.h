@@ -83,8 +83,9 @@ namespace cdea
 
     const Discretization              &mesh;
     const double                       two_pi_H;
-    /// The local dofs of r and of z.
-    std::vector<unsigned int>          r_dofs, z_dofs;
+    /// The shape gradients masked by component (r dofs, then z dofs), work
+    /// storage of add_point_tangent().
+    mutable std::vector<double> g_masked;
     std::shared_ptr<const MembraneLaw> law_;
     std::vector<double>                voltages;
     double                             dt     = 0.;

@@ -59,9 +59,17 @@ namespace cdea
 
     NominalStress stress(double l1, double l2) const;
     StressTangent tangent(double l1, double l2) const;
+    /// stress() and tangent() at once, their common terms computed once
+    /// (the same numbers).
+    void stress_and_tangent(double l1, double l2, NominalStress &s, StressTangent &t) const;
 
     /// g = 1 - (I - 3) / Jlim; the law is defined only while g > 0.
-    double gent_margin(double l1, double l2) const;
+    /// (Inline: called at every quadrature point, up to three times.)
+    double gent_margin(const double l1, const double l2) const
+    {
+      const double I = l1 * l1 + l2 * l2 + 1. / (l1 * l1 * l2 * l2);
+      return 1. - (I - 3.) / jlim;
+    }
 
     /// True electric field E = Phi l1 l2 / H (V/m).
     double electric_field(double l1, double l2) const;

@@ -77,6 +77,10 @@ namespace cdea
     Eigen::VectorXd warm;
     double          warm_value = std::numeric_limits<double>::quiet_NaN();
     unsigned int    steps = 0, n_factorizations = 0;
+    /// max(|lower|, |upper|) of S's Gershgorin bounds, once per compute()
+    /// (NaN until asked for).
+    double scale_of_spectrum = std::numeric_limits<double>::quiet_NaN();
+    double spectrum_scale(const SymmetricBand &S);
 
     /// Factor S - sigma I (Cholesky) for a sigma that is >= 0 if S is
     /// positive definite: just below the last eigenvalue if that is

@@ -9,6 +9,7 @@
 
 #include <cdea/numerics/band_matrix.h>
 
+#include <utility>
 #include <vector>
 
 namespace cdea
@@ -43,6 +44,8 @@ namespace cdea
     /// Gershgorin bounds: every eigenvalue lies in [lower, upper].
     double gershgorin_lower() const;
     double gershgorin_upper() const;
+    /// Both, in one pass: {lower, upper}.
+    std::pair<double, double> gershgorin_bounds() const;
 
   private:
     unsigned int        n = 0, kd = 0;
