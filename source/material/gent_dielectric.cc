@@ -56,4 +56,23 @@ namespace cdea
             k * I_12 + kk * I_1 * I_2 - 2. * eps_phi2_h2 * l1 * l2,
             k * I_22 + kk * I_2 * I_2 - eps_phi2_h2 * l1 * l1};
   }
+
+  void GentDielectric::stress_and_tangent(const double l1, const double l2, NominalStress &s,
+                                          StressTangent &t) const
+  {
+    const double g    = gent_margin(l1, l2);
+    const double q    = 1. / (l1 * l1 * l2 * l2);
+    const double I_1  = 2. * (l1 - q / l1);
+    const double I_2  = 2. * (l2 - q / l2);
+    const double I_11 = 2. + 6. * q / (l1 * l1);
+    const double I_22 = 2. + 6. * q / (l2 * l2);
+    const double I_12 = 4. * q / (l1 * l2);
+    const double k    = 0.5 * mu / g;
+    const double kk   = 0.5 * mu / (jlim * g * g);
+    s = {0.5 * mu * I_1 / g - eps_phi2_h2 * l1 * l2 * l2,
+         0.5 * mu * I_2 / g - eps_phi2_h2 * l1 * l1 * l2};
+    t = {k * I_11 + kk * I_1 * I_1 - eps_phi2_h2 * l2 * l2,
+         k * I_12 + kk * I_1 * I_2 - 2. * eps_phi2_h2 * l1 * l2,
+         k * I_22 + kk * I_2 * I_2 - eps_phi2_h2 * l1 * l1};
+  }
 } // namespace cdea

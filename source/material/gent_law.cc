@@ -17,10 +17,10 @@ namespace cdea
       return false;
     if (request & law_energy)
       out.energy = law.energy(in.l1, in.l2);
-    if (request & (law_stress | law_tangent))
-      out.stress = law.stress(in.l1, in.l2);
     if (request & law_tangent)
-      out.tangent = law.tangent(in.l1, in.l2);
+      law.stress_and_tangent(in.l1, in.l2, out.stress, out.tangent);
+    else if (request & law_stress)
+      out.stress = law.stress(in.l1, in.l2);
     out.tension       = TensionState::taut;
     out.natural_width = in.l2;
     return true;
