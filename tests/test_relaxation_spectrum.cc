@@ -276,6 +276,12 @@ namespace
     has({{"Branch shear moduli (kPa)", "30"}, {"Branch relaxation times (s)", "1"}, {"Branch Jlim", "1, 2"}},
         "Material/Branch Jlim must be empty or list as many values as");
     has({{"Branch relaxation times (s)", "1"}}, "Material/Branch shear moduli (kPa) must list 1 to 20");
+    std::string many = "1";
+    for (int k = 0; k < 20; ++k)
+      many += ", 1";
+    has({{"Branch shear moduli (kPa)", many}, {"Branch relaxation times (s)", many}},
+        "Material/Branch shear moduli (kPa) must list 1 to 20 shear moduli when "
+        "Material/Branch relaxation times (s) or Material/Branch Jlim is set, got 21");
     has({{"Branch law", "viscoelastic"}}, "Material/Branch law must name an elastic law");
     has({{"Branch law", "steel"}}, "got 'steel'");
     has({{"Branch shear moduli (kPa)", "1, x"}, {"Branch relaxation times (s)", "1, 2"}}, "Material/Branch shear moduli (kPa)");

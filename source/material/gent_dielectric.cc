@@ -50,6 +50,7 @@ namespace cdea
             k * I_12 + kk * I_1 * I_2 - 2. * eps_phi2_h2 * l1 * l2,
             k * I_22 + kk * I_2 * I_2 - eps_phi2_h2 * l1 * l1};
   }
+
   void GentDielectric::stress_and_tangent(const double l1, const double l2, NominalStress &s,
                                           StressTangent &t) const
   {

@@ -263,8 +263,7 @@ namespace cdea
         !step.current)
       return false;
     out.energy        = request & law_energy ? law_a.energy(in.l1, in.l2) : 0.;
-    out.stress        = law_a.stress(in.l1, in.l2);
-    out.tangent       = law_a.tangent(in.l1, in.l2);
+    law_a.stress_and_tangent(in.l1, in.l2, out.stress, out.tangent);
     out.tension       = TensionState::taut;
     out.natural_width = in.l2;
 

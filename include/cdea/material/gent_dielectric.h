@@ -59,8 +59,8 @@ namespace cdea
 
     NominalStress stress(double l1, double l2) const;
     StressTangent tangent(double l1, double l2) const;
-    /// stress() and tangent() at once, their common terms computed once
-    /// (the same numbers).
+    /// stress() and tangent() in one pass (the same expressions, so the
+    /// same numbers), for the time laws that need both at every call.
     void stress_and_tangent(double l1, double l2, NominalStress &s, StressTangent &t) const;
 
     /// g = 1 - (I - 3) / Jlim; the law is defined only while g > 0.
