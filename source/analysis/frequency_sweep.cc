@@ -174,8 +174,9 @@ namespace cdea
   // Each frequency is solved from scratch (PeriodicSteadyState::solve builds
   // a new model, start and step sequence), so the ranks can take any of them
   // and give the serial run's numbers bit for bit.
-  FrequencySweepResult frequency_sweep(const RunInput &input, const FrequencySweepSettings &s,
-                                       const std::function<void(const SteadyPeriod *)> &on_frequency)
+  FrequencySweepResult
+  frequency_sweep(const RunInput &input, const FrequencySweepSettings &s,
+                  const std::function<void(const SteadyPeriod *)> &on_frequency)
   {
     const auto           clock_start = std::chrono::steady_clock::now();
     FrequencySweepResult r;

@@ -47,8 +47,9 @@ namespace cdea
   /// @p on_frequency is called once per frequency as it is done: with its
   /// period if rank 0 computed it, with nullptr if another rank did (its
   /// period comes with the gather).
-  FrequencySweepResult frequency_sweep(const RunInput &input, const FrequencySweepSettings &s,
-                                       const std::function<void(const SteadyPeriod *)> &on_frequency);
+  FrequencySweepResult
+  frequency_sweep(const RunInput &input, const FrequencySweepSettings &s,
+                  const std::function<void(const SteadyPeriod *)> &on_frequency);
 
   /// <Base name>_frequency_sweep.h5 of @p r.
   void write_frequency_sweep_file(const std::string &path, const std::string &parameter_text,
