@@ -1,8 +1,11 @@
 #include <cdea/analysis/frequency_sweep.h>
+#include <cdea/base/byte_pack.h>
 #include <cdea/base/format.h>
+#include <cdea/base/mpi_session.h>
 #include <cdea/base/text.h>
 #include <cdea/output/hdf5_writer.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -102,21 +105,132 @@ namespace cdea
     }
   } // namespace
 
-  FrequencySweepResult frequency_sweep(const RunInput &input, const FrequencySweepSettings &s,
-                                       const std::function<void(const SteadyPeriod &)> &on_frequency)
+  namespace
+  {
+    // Periods as bytes for the gather (base/byte_pack.h).
+
+    void pack(BytePacker &out, const std::size_t index, const SteadyPeriod &s)
+    {
+      out.put(std::uint64_t(index));
+      for (const double x : {s.frequency, s.defect, s.check_move, s.stroke_amplitude,
+                             s.mean_displacement, s.first_harmonic.real(),
+                             s.first_harmonic.imag(), s.volume_swing, s.electrical_work,
+                             s.weight_work, s.dissipated, s.stored_change, s.s2_min, s.seconds})
+        out.put(x);
+      for (const unsigned int c : {unsigned(s.converged), unsigned(s.loss_of_tension),
+                                   s.newton_iterations, s.krylov_iterations, s.period_maps,
+                                   s.steps_per_period})
+        out.put(std::uint64_t(c));
+      out.put(s.message);
+    }
+
+    std::pair<std::size_t, SteadyPeriod> unpack(ByteUnpacker &in)
+    {
+      SteadyPeriod      s;
+      const std::size_t index = in.get_uint();
+      for (double *x : {&s.frequency, &s.defect, &s.check_move, &s.stroke_amplitude,
+                        &s.mean_displacement})
+        *x = in.get_double();
+      const double re = in.get_double(), im = in.get_double();
+      s.first_harmonic = {re, im};
+      for (double *x : {&s.volume_swing, &s.electrical_work, &s.weight_work, &s.dissipated,
+                        &s.stored_change, &s.s2_min, &s.seconds})
+        *x = in.get_double();
+      s.converged       = in.get_uint() != 0;
+      s.loss_of_tension = in.get_uint() != 0;
+      for (unsigned int *c :
+           {&s.newton_iterations, &s.krylov_iterations, &s.period_maps, &s.steps_per_period})
+        *c = static_cast<unsigned int>(in.get_uint());
+      s.message = in.get_string();
+      return {index, std::move(s)};
+    }
+
+    /// Rank 0: every rank's periods, @p n of them in frequency order; the
+    /// other ranks get none. Collective.
+    std::vector<SteadyPeriod> gather_periods(const BytePacker &local, const std::size_t n)
+    {
+      const std::vector<std::string> packed = mpi::gather_bytes(local.bytes);
+      if (mpi::rank() != 0)
+        return {};
+      std::vector<SteadyPeriod> periods(n);
+      std::vector<bool>         seen(n, false);
+      for (const std::string &bytes : packed)
+        for (ByteUnpacker in(bytes); !in.done();)
+          {
+            auto [index, period] = unpack(in);
+            if (index >= n || seen[index])
+              throw std::runtime_error("bad frequency index in the gather of the ranks' results");
+            seen[index]    = true;
+            periods[index] = std::move(period);
+          }
+      if (std::find(seen.begin(), seen.end(), false) != seen.end())
+        throw std::runtime_error("a frequency is missing after the gather of the ranks' results");
+      return periods;
+    }
+
+    constexpr int progress_tag = 7402;
+  } // namespace
+
+  // Each frequency is solved from scratch (PeriodicSteadyState::solve builds
+  // a new model, start and step sequence), so the ranks can take any of them
+  // and give the serial run's numbers bit for bit.
+  FrequencySweepResult
+  frequency_sweep(const RunInput &input, const FrequencySweepSettings &s,
+                  const std::function<void(const SteadyPeriod *)> &on_frequency)
   {
     const auto           clock_start = std::chrono::steady_clock::now();
     FrequencySweepResult r;
     r.usable_factor = s.usable_factor;
     PeriodicSteadyState steady(input.parameters, input.scene, s.steady);
+    // On every rank (the same numbers there): an error here ends every rank alike.
     r.quasi_static_amplitude = steady.quasi_static_amplitude();
-    for (const double f : s.frequencies)
+    const std::size_t n = s.frequencies.size();
+    const std::vector<std::size_t> mine = mpi::items_of_rank(n, mpi::rank(), mpi::size());
+    const bool distributed = mpi::size() > 1, root = mpi::rank() == 0;
+    mpi::CountChannel progress(progress_tag);
+    std::uint64_t     others = n - mine.size();
+    // Rank 0: the other ranks' finished frequencies, as they are counted.
+    auto take_counts = [&](const bool wait) {
+      std::uint64_t count = 0;
+      while (others > 0)
+        {
+          if (wait)
+            count = progress.receive();
+          else if (!progress.try_receive(count))
+            return;
+          others -= std::min(count, others);
+          for (; count > 0; --count)
+            if (on_frequency)
+              on_frequency(nullptr);
+        }
+    };
+    BytePacker local;
+    for (const std::size_t i : mine)
       {
-        r.periods.push_back(steady.solve(f));
-        r.all_converged = r.all_converged && r.periods.back().converged;
-        if (on_frequency)
-          on_frequency(r.periods.back());
+        SteadyPeriod period = steady.solve(s.frequencies[i]);
+        if (root && on_frequency)
+          on_frequency(&period);
+        if (!distributed)
+          {
+            r.periods.push_back(std::move(period));
+            continue;
+          }
+        pack(local, i, period);
+        if (root)
+          take_counts(false);
+        else
+          progress.send(1);
       }
+    if (distributed)
+      {
+        if (root)
+          take_counts(true);
+        else
+          progress.wait_for_sends();
+        r.periods = gather_periods(local, n);
+      }
+    for (const SteadyPeriod &period : r.periods)
+      r.all_converged = r.all_converged && period.converged;
     usable_band(r);
     r.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();

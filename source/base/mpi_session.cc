@@ -69,6 +69,15 @@ namespace cdea
       return initialized() ? dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) : 1;
     }
 
+    std::vector<std::size_t> items_of_rank(const std::size_t n, const unsigned int rank,
+                                           const unsigned int size)
+    {
+      std::vector<std::size_t> items;
+      for (std::size_t i = rank; i < n; i += std::max(1u, size))
+        items.push_back(i);
+      return items;
+    }
+
     std::vector<std::string> gather_bytes(const std::string &bytes)
     {
       if (size() == 1)

@@ -2,11 +2,14 @@
 // waveform at each frequency of subsection Frequency sweep
 // (analysis/frequency_sweep.h), a line per frequency as it is done (with the
 // time left, base/progress.h), the usable band, and
-// <Base name>_frequency_sweep.h5. 0 written, 1 bad input, 2 a frequency
+// <Base name>_frequency_sweep.h5. Under mpirun the frequencies are dealt
+// round-robin to the ranks; rank 0 reports the progress, then prints the
+// table and writes the file. 0 written, 1 bad input, 2 a frequency
 // without a steady state (the file is written with it flagged) or not written.
 
 #include <cdea/analysis/frequency_sweep.h>
 #include <cdea/base/format.h>
+#include <cdea/base/mpi_session.h>
 #include <cdea/base/progress.h>
 #include <cdea/base/run_control.h>
 #include <cdea/commands/command.h>
@@ -37,24 +40,41 @@ namespace cdea
 
       int run(Invocation &invocation) override
       {
+        const bool root = invocation.root, distributed = mpi::size() > 1;
+        if (root && !distributed)
+          print_header();
+        const auto  start = std::chrono::steady_clock::now();
+        std::size_t done  = 0;
+        // Several ranks: a progress report on rank 0, the rows after the gather.
+        Progress             progress(settings.frequencies.size(), root && distributed,
+                                      "frequencies");
         FrequencySweepResult r;
-        print_header();
-        const auto start = std::chrono::steady_clock::now();
-        std::size_t done = 0;
         try
           {
-            r = frequency_sweep(input, settings, [&](const SteadyPeriod &s) {
-              ++done;
+            r = frequency_sweep(input, settings, [&](const SteadyPeriod *s) {
+              if (distributed)
+                return progress.add(1);
               const double elapsed =
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-              print_row(s, done, elapsed);
+              print_row(*s, ++done, elapsed);
             });
           }
         catch (const std::runtime_error &e)
           {
-            std::cerr << "cdea: " << e.what() << '\n';
+            if (root)
+              std::cerr << "cdea: " << e.what() << '\n';
             invocation.output.give_up();
             return exit_not_complete;
+          }
+        if (distributed)
+          progress.finish();
+        if (!root)
+          return exit_success;
+        if (distributed)
+          {
+            print_header();
+            for (const SteadyPeriod &s : r.periods)
+              print_row(s, 0, 0.);
           }
         print_summary(r);
         try
@@ -80,27 +100,32 @@ namespace cdea
         std::cout << "Periodic steady states of the " << to_string(input.parameters.time.waveform)
                   << " wave at " << settings.frequencies.size()
                   << " frequencies (tolerance " << format_number(settings.steady.tolerance, 3)
-                  << ")\n"
+                  << ")";
+        if (mpi::size() > 1)
+          std::cout << " on " << mpi::size() << " ranks (frequencies round-robin)";
+        std::cout << '\n'
                   << std::setw(10) << "f (Hz)" << std::setw(13) << "stroke (mm)" << std::setw(12)
                   << "mean (mm)" << std::setw(15) << "volume (mm^3)" << std::setw(15)
                   << "dissip. (mJ)" << std::setw(13) << "min s2 (kPa)" << std::setw(8)
                   << "Newton" << std::setw(7) << "maps" << std::setw(9) << "time (s)"
-                  << "  progress\n";
+                  << (mpi::size() > 1 ? "\n" : "  progress\n");
       }
 
+      /// A row of the table; with the progress column if @p done > 0.
       void print_row(const SteadyPeriod &s, const std::size_t done, const double elapsed) const
       {
-        const std::size_t n    = settings.frequencies.size();
-        const double      left = elapsed / done * (n - done);
+        const std::size_t n = settings.frequencies.size();
         std::cout << std::setw(10) << format_number(s.frequency, 5) << std::setw(13)
                   << format_fixed(s.stroke_amplitude * 1e3, 5) << std::setw(12)
                   << format_fixed(s.mean_displacement * 1e3, 4) << std::setw(15)
                   << format_number(s.volume_swing * 1e9, 6) << std::setw(15)
                   << format_number(s.dissipated * 1e3, 5) << std::setw(13)
                   << format_fixed(s.s2_min * 1e-3, 3) << std::setw(8) << s.newton_iterations
-                  << std::setw(7) << s.period_maps << std::setw(9) << format_fixed(s.seconds, 2)
-                  << "  " << done << "/" << n << ", " << format_duration(left) << " left"
-                  << (s.loss_of_tension ? "  LOSS OF TENSION" : "") << std::endl;
+                  << std::setw(7) << s.period_maps << std::setw(9) << format_fixed(s.seconds, 2);
+        if (done > 0)
+          std::cout << "  " << done << "/" << n << ", "
+                    << format_duration(elapsed / done * (n - done)) << " left";
+        std::cout << (s.loss_of_tension ? "  LOSS OF TENSION" : "") << std::endl;
         if (!s.converged)
           std::cerr << "cdea: " << s.message << '\n';
       }

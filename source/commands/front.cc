@@ -87,7 +87,8 @@ namespace cdea
         std::cerr << "cdea: '" << command.name << "' is a serial job, but an MPI launcher "
                   << "started " << mpi::size() << " processes of it (each would "
                   << "write the same results): run it without mpirun or with -np 1; "
-                  << "'cdea sweep' and 'cdea optimize' use several processes\n";
+                  << "'cdea sweep', 'cdea frequency-sweep' and 'cdea optimize' use several "
+                  << "processes\n";
       return true;
     }
 

@@ -4,6 +4,7 @@
 // sweep_settings.cc, one row is continued in sweep_row.cc, the file is
 // written in sweep_file.cc; the command is commands/sweep.cc.
 
+#include <cdea/base/byte_pack.h>
 #include <cdea/base/mpi_session.h>
 #include <cdea/base/run_control.h>
 #include <cdea/design/sweep.h>
@@ -15,7 +16,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 
 namespace cdea
 {
@@ -23,100 +23,30 @@ namespace cdea
   {
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
-    // ---------------------------------------------------------------------
-    // Rows as bytes, for the gather (memcpy: the doubles arrive bit for bit).
+    // Rows as bytes for the gather (base/byte_pack.h).
 
-    class Packer
+    void put_line(BytePacker &out, const SweepLine &l)
     {
-    public:
-      std::string bytes;
-      void put(const double x) { append(&x, sizeof x); }
-      void put(const std::uint64_t x) { append(&x, sizeof x); }
-      void put(const std::string &s)
-      {
-        put(std::uint64_t(s.size()));
-        append(s.data(), s.size());
-      }
-      void put(const std::vector<double> &v)
-      {
-        put(std::uint64_t(v.size()));
-        append(v.data(), v.size() * sizeof(double));
-      }
-      void put(const SweepLine &l)
-      {
-        for (const double x : {l.outer_voltage, l.displacement, l.stroke_increase, l.s2_inner[0],
-                               l.s2_inner[1], l.bracket_width})
-          put(x);
-        put(std::uint64_t(l.evaluations));
-      }
+      for (const double x : {l.outer_voltage, l.displacement, l.stroke_increase, l.s2_inner[0],
+                             l.s2_inner[1], l.bracket_width})
+        out.put(x);
+      out.put(std::uint64_t(l.evaluations));
+    }
 
-    private:
-      void append(const void *p, const std::size_t n)
-      {
-        const char *c = static_cast<const char *>(p);
-        bytes.append(c, n);
-      }
-    };
-
-    class Unpacker
+    SweepLine get_line(ByteUnpacker &in)
     {
-    public:
-      Unpacker(const char *begin, const char *end)
-        : p(begin)
-        , end(end)
-      {}
-      bool done() const { return p == end; }
-      double        get_double() { return get<double>(); }
-      std::uint64_t get_uint() { return get<std::uint64_t>(); }
-      std::string   get_string()
-      {
-        const std::size_t n = get_uint();
-        need(n);
-        std::string s(p, n);
-        p += n;
-        return s;
-      }
-      std::vector<double> get_vector()
-      {
-        const std::size_t   n = get_uint();
-        std::vector<double> v(n);
-        need(n * sizeof(double));
-        std::memcpy(v.data(), p, n * sizeof(double));
-        p += n * sizeof(double);
-        return v;
-      }
-      SweepLine get_line()
-      {
-        SweepLine l;
-        l.outer_voltage   = get_double();
-        l.displacement    = get_double();
-        l.stroke_increase = get_double();
-        l.s2_inner[0]     = get_double();
-        l.s2_inner[1]     = get_double();
-        l.bracket_width   = get_double();
-        l.evaluations     = get_uint();
-        return l;
-      }
+      SweepLine l;
+      l.outer_voltage   = in.get_double();
+      l.displacement    = in.get_double();
+      l.stroke_increase = in.get_double();
+      l.s2_inner[0]     = in.get_double();
+      l.s2_inner[1]     = in.get_double();
+      l.bracket_width   = in.get_double();
+      l.evaluations     = in.get_uint();
+      return l;
+    }
 
-    private:
-      const char *p, *end;
-      void        need(const std::size_t n) const
-      {
-        if (std::size_t(end - p) < n)
-          throw std::runtime_error("cdea sweep: truncated row data in the gather");
-      }
-      template <typename T>
-      T get()
-      {
-        need(sizeof(T));
-        T x;
-        std::memcpy(&x, p, sizeof(T));
-        p += sizeof(T);
-        return x;
-      }
-    };
-
-    void pack(Packer &out, const std::size_t index, const SweepRow &r)
+    void pack(BytePacker &out, const std::size_t index, const SweepRow &r)
     {
       out.put(std::uint64_t(index));
       out.put(r.rv_over_a);
@@ -130,15 +60,15 @@ namespace cdea
       for (const auto *v :
            {&r.displacement, &r.stroke, &r.stroke_increase, &r.s2_inner_ring1, &r.s2_inner_ring2})
         out.put(*v);
-      out.put(r.red);
-      out.put(r.blue);
+      put_line(out, r.red);
+      put_line(out, r.blue);
       for (const unsigned int c : {r.solves, r.newton_iterations, r.base_solves, r.base_iterations,
                                    r.line_solves, r.line_iterations, r.failed_solves,
                                    r.failed_iterations})
         out.put(std::uint64_t(c));
     }
 
-    std::pair<std::size_t, SweepRow> unpack(Unpacker &in)
+    std::pair<std::size_t, SweepRow> unpack(ByteUnpacker &in)
     {
       SweepRow          r;
       const std::size_t index = in.get_uint();
@@ -157,8 +87,8 @@ namespace cdea
       for (auto *v :
            {&r.displacement, &r.stroke, &r.stroke_increase, &r.s2_inner_ring1, &r.s2_inner_ring2})
         *v = in.get_vector();
-      r.red               = in.get_line();
-      r.blue              = in.get_line();
+      r.red               = get_line(in);
+      r.blue              = get_line(in);
       for (unsigned int *c : {&r.solves, &r.newton_iterations, &r.base_solves,
                               &r.base_iterations, &r.line_solves, &r.line_iterations,
                               &r.failed_solves, &r.failed_iterations})
@@ -313,12 +243,12 @@ namespace cdea
 
     /// Every rank's packed rows gathered on rank 0 into @p rows (n of them,
     /// in map order); the other ranks keep their own.
-    void gather_rows(const Packer &local, const std::size_t n, std::vector<SweepRow> &rows)
+    void gather_rows(const BytePacker &local, const std::size_t n, std::vector<SweepRow> &rows)
     {
       const std::vector<std::string> packed = mpi::gather_bytes(local.bytes);
       if (mpi::rank() != 0)
         {
-          Unpacker in(local.bytes.data(), local.bytes.data() + local.bytes.size());
+          ByteUnpacker in(local.bytes);
           while (!in.done())
             rows.push_back(unpack(in).second);
           return;
@@ -327,7 +257,7 @@ namespace cdea
       std::vector<bool> seen(n, false);
       for (const std::string &bytes : packed)
         {
-          Unpacker in(bytes.data(), bytes.data() + bytes.size());
+          ByteUnpacker in(bytes);
           while (!in.done())
             {
               auto [index, row] = unpack(in);
@@ -363,7 +293,7 @@ namespace cdea
     const std::vector<std::size_t> mine = rows_of_rank(n, mpi::rank(), mpi::size());
     const bool                     distributed = mpi::size() > 1;
     ProgressRelay progress(std::uint64_t(n - mine.size()) * m, on_points);
-    Packer        local;
+    BytePacker    local;
     for (const std::size_t i : mine)
       {
         SweepRow row = map_row(context, settings.ring_edge_values[i], progress);

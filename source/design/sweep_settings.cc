@@ -1,6 +1,7 @@
 // The input of `cdea sweep`: the value lists and the subsection Sweep, turned
 // into SweepSettings; the rows of each MPI rank.
 
+#include <cdea/base/mpi_session.h>
 #include <cdea/design/sweep.h>
 #include <cdea/fe/load_term.h>
 #include <cdea/input/parameters.h>
@@ -113,9 +114,6 @@ namespace cdea
   std::vector<std::size_t> rows_of_rank(const std::size_t n_rows, const unsigned int rank,
                                         const unsigned int size)
   {
-    std::vector<std::size_t> rows;
-    for (std::size_t i = rank; i < n_rows; i += std::max(1u, size))
-      rows.push_back(i);
-    return rows;
+    return mpi::items_of_rank(n_rows, rank, size);
   }
 } // namespace cdea

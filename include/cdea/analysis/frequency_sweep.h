@@ -41,9 +41,15 @@ namespace cdea
     bool   all_converged = true;
   };
 
-  /// The sweep; @p on_frequency is called after each frequency (progress).
-  FrequencySweepResult frequency_sweep(const RunInput &input, const FrequencySweepSettings &s,
-                                       const std::function<void(const SteadyPeriod &)> &on_frequency);
+  /// The sweep. Collective over MPI_COMM_WORLD: the frequencies are dealt
+  /// round-robin to the ranks (mpi::items_of_rank), each solved from scratch,
+  /// and rank 0 gathers them (the other ranks return no periods). On rank 0,
+  /// @p on_frequency is called once per frequency as it is done: with its
+  /// period if rank 0 computed it, with nullptr if another rank did (its
+  /// period comes with the gather).
+  FrequencySweepResult
+  frequency_sweep(const RunInput &input, const FrequencySweepSettings &s,
+                  const std::function<void(const SteadyPeriod *)> &on_frequency);
 
   /// <Base name>_frequency_sweep.h5 of @p r.
   void write_frequency_sweep_file(const std::string &path, const std::string &parameter_text,

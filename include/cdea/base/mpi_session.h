@@ -33,6 +33,10 @@ namespace cdea
     unsigned int rank();
     unsigned int size();
 
+    /// The items (of @p n, by index) that rank @p rank of @p size works on:
+    /// dealt round-robin, item i to rank i mod size.
+    std::vector<std::size_t> items_of_rank(std::size_t n, unsigned int rank, unsigned int size);
+
     /// Every rank's @p bytes on rank 0, one string per rank in rank order
     /// (bit for bit); the other ranks get an empty vector. Without MPI, or
     /// on one rank: {bytes}. Collective.
