@@ -30,6 +30,17 @@
 
 namespace cdea_bench
 {
+  /// A line of /proc/self/status in MiB ("VmRSS", "VmHWM").
+  inline double status_mib(const std::string &key)
+  {
+    std::ifstream status("/proc/self/status");
+    std::string   line;
+    while (std::getline(status, line))
+      if (line.rfind(key + ":", 0) == 0)
+        return std::stod(line.substr(key.size() + 1)) / 1024.;
+    return 0.;
+  }
+
   /// Median of the samples (the mean of the two middle ones for an even
   /// count); NaN for none.
   inline double median(std::vector<double> v)

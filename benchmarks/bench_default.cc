@@ -30,17 +30,6 @@ using namespace cdea_bench;
 
 namespace
 {
-  /// A line of /proc/self/status in MiB ("VmRSS", "VmHWM").
-  double status_mib(const std::string &key)
-  {
-    std::ifstream status("/proc/self/status");
-    std::string   line;
-    while (std::getline(status, line))
-      if (line.rfind(key + ":", 0) == 0)
-        return std::stod(line.substr(key.size() + 1)) / 1024.;
-    return 0.;
-  }
-
   int benchmark(const std::string &file, const int runs, const int process_runs)
   {
     const double     baseline = status_mib("VmRSS"); // the libraries, before any model

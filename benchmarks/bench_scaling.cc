@@ -55,17 +55,6 @@ using namespace cdea_bench;
 
 namespace
 {
-  /// A line of /proc/self/status in MiB ("VmRSS", "VmHWM").
-  double status_mib(const std::string &key)
-  {
-    std::ifstream status("/proc/self/status");
-    std::string   line;
-    while (std::getline(status, line))
-      if (line.rfind(key + ":", 0) == 0)
-        return std::stod(line.substr(key.size() + 1)) / 1024.;
-    return 0.;
-  }
-
   /// Resets VmHWM to the current resident size (Linux: clear_refs 5).
   void reset_peak_memory()
   {
