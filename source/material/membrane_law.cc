@@ -18,4 +18,18 @@ namespace cdea
     out.rate_l.clear();
     return true;
   }
+
+  bool MembraneLaw::evolving_parameter_derivative(const LawInput &input, const double *stored,
+                                                  const LawParameter parameter,
+                                                  NominalStress &d_stress, double *d_rate) const
+  {
+    (void)d_rate;
+    if (n_evolving() > 0)
+      return false;
+    std::vector<double> scratch(stored ? stored : nullptr,
+                                stored ? stored + n_internal_variables() : nullptr);
+    const InternalStep step{stored, scratch.data(), 0., TimeScheme::backward_euler};
+    double             d_energy = 0.;
+    return parameter_derivative(input, step, parameter, d_energy, d_stress);
+  }
 } // namespace cdea

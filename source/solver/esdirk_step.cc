@@ -159,6 +159,8 @@ namespace cdea
     p.dissipation_rate = model.dissipation_rate();
     p.charges          = model.charges();
     stages.push_back(std::move(p));
+    if (on_stage)
+      on_stage(i, h);
     return report;
   }
 

@@ -138,6 +138,7 @@ namespace cdea
     /// Sensitivities use the tangent of the converged state (fe/sensitivities.h).
     friend class StateSensitivity;
     friend class LinearizedDynamics;
+    friend class TimeSensitivity;
     class Impl;
     class Continuation;
     std::unique_ptr<Impl>                impl;

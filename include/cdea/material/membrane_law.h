@@ -292,6 +292,15 @@ namespace cdea
     /// the tangent with the internal variables held, no evolving variables.
     virtual bool linearize(const LawInput &input, const double *stored,
                            InternalLinearization &out) const;
+    /// At the point linearize() sees (stretches and @p stored internal
+    /// variables held): d(stress)/dp and the n_evolving() values d(rate)/dp
+    /// of the evolution equation's rate (into @p d_rate), for sensitivities
+    /// through time; false if the law cannot tell. The default serves a law
+    /// without evolving variables (parameter_derivative() at dt = 0, no rate)
+    /// and refuses one with them.
+    virtual bool evolving_parameter_derivative(const LawInput &input, const double *stored,
+                                               LawParameter parameter, NominalStress &d_stress,
+                                               double *d_rate) const;
 
   private:
     std::vector<InternalVariable> internal;

@@ -125,6 +125,12 @@ namespace cdea
     /// rate_y is block diagonal, a 2 x 2 block per branch.
     bool linearize(const LawInput &input, const double *stored,
                    InternalLinearization &out) const override;
+    /// Network A's constants as parameter_derivative(), no rate; branch k's
+    /// mu_k = own_constant(2(k-1)) (Pa) and tau_k = own_constant(2(k-1)+1)
+    /// (s): source/material/two_network_parameters.cc.
+    bool evolving_parameter_derivative(const LawInput &input, const double *stored,
+                                       LawParameter parameter, NominalStress &d_stress,
+                                       double *d_rate) const override;
 
     const MaterialConstants &network_a() const { return a; }
     /// The first branch (network B of the two-network model).

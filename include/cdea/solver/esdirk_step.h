@@ -99,6 +99,12 @@ namespace cdea
     /// Forget the last steps' stages as predictors (after a jump in the state).
     void clear_history() { previous.clear(); }
 
+    /// Called after every converged implicit stage with its index i (>= 1)
+    /// and h, while the model still holds the stage (its solution, tangent,
+    /// time step gamma h and internal variables from the stage's start): for
+    /// sensitivities through the stages (fe/time_sensitivity.h). None: not called.
+    std::function<void(unsigned int, double)> on_stage;
+
   private:
     TransientModel                                     &model;
     EsdirkStepSettings                                  settings;

@@ -1,0 +1,289 @@
+// Forward sensitivities through the stages of a quasi-static time run (see
+// time_sensitivity.h).
+
+#include <cdea/fe/time_sensitivity.h>
+
+#include "membrane_model_impl.h"
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <limits>
+
+namespace cdea
+{
+  class TimeSensitivity::Data
+  {
+  public:
+    using Matrix = Eigen::MatrixXd;
+
+    MembraneModel::Impl      &m;
+    std::vector<LawParameter> parameters;
+    unsigned int              P = 0, ne = 0, n_points = 0;
+    double                    voltage_reference = 1.;
+
+    /// The state derivatives: du and dy (points x ne rows) at the accepted
+    /// state, dK of each stage of the step being taken (dK[0]: the rate at
+    /// its start), and the last stage's du and dY.
+    Matrix du, dy, du_trial, dY_trial;
+    std::vector<Matrix> dK;
+
+    /// One point of a stage: its variations and what the second pass needs.
+    struct Point
+    {
+      const unsigned int *dofs = nullptr;
+      double              w    = 0.;
+      std::vector<double> dl1, dl2;
+      Matrix              f_y, f_l, f_p, Z, G; ///< G = gamma h A^-1 f_l
+    };
+    std::vector<Point> points;
+
+    Data(MembraneModel::Impl &m, std::vector<LawParameter> list, const unsigned int stages,
+         const double reference)
+      : m(m)
+      , parameters(std::move(list))
+      , P(parameters.size())
+      , ne(m.membrane.law().n_evolving())
+      , voltage_reference(reference)
+      , dK(stages)
+    {}
+
+    /// S_p (2 x P) and f_p (ne x P) at @p v; false with @p message.
+    bool explicit_derivatives(const VariationPoint &v, Matrix &S_p, Matrix &f_p,
+                              std::string &message) const
+    {
+      const MembraneLaw  &law = m.membrane.law();
+      std::vector<double> rate(ne);
+      S_p.setZero(2, P);
+      f_p.setZero(ne, P);
+      for (unsigned int j = 0; j < P; ++j)
+        {
+          NominalStress ds{0., 0.};
+          if (!law.evolving_parameter_derivative(v.input, v.stored, parameters[j], ds,
+                                                 rate.data()))
+            {
+              message = "the material law gives no derivative with respect to parameter " +
+                        std::to_string(int(parameters[j])) + " at a point of cell " +
+                        std::to_string(v.cell);
+              return false;
+            }
+          // d/dPhi of V(t) Phi / reference is V(t) / reference times d/dV.
+          const double factor =
+            parameters[j] == LawParameter::voltage ? v.input.voltage / voltage_reference : 1.;
+          S_p(0, j) = factor * ds.s1;
+          S_p(1, j) = factor * ds.s2;
+          for (unsigned int r = 0; r < ne; ++r)
+            f_p(r, j) = factor * rate[r];
+        }
+      return true;
+    }
+
+    /// The law's linearization at @p v as matrices; false with @p message.
+    bool linearization(const VariationPoint &v, Matrix &S_y, Matrix &f_y, Matrix &f_l,
+                       std::string &message) const
+    {
+      InternalLinearization lin;
+      if (!m.membrane.law().linearize(v.input, v.stored, lin))
+        {
+          message = "the material law cannot be linearized at a point of cell " +
+                    std::to_string(v.cell);
+          return false;
+        }
+      S_y = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic,
+                                           Eigen::RowMajor>>(lin.stress_y.data(), 2, ne);
+      f_y = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic,
+                                           Eigen::RowMajor>>(lin.rate_y.data(), ne, ne);
+      f_l = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic,
+                                           Eigen::RowMajor>>(lin.rate_l.data(), ne, 2);
+      return true;
+    }
+
+    /// Adds -w B^T E (E: 2 x P) of the point to @p rhs.
+    static void add_force(const VariationPoint &v, const Matrix &E, Matrix &rhs)
+    {
+      for (std::size_t i = 0; i < v.dl1.size(); ++i)
+        rhs.row(v.dofs[i]) -= v.w * (v.dl1[i] * E.row(0) + v.dl2[i] * E.row(1));
+    }
+
+    /// dl = B du of a point (2 x P).
+    static Matrix stretch_change(const Point &p, const Matrix &u)
+    {
+      Matrix dl = Matrix::Zero(2, u.cols());
+      for (std::size_t i = 0; i < p.dl1.size(); ++i)
+        {
+          dl.row(0) += p.dl1[i] * u.row(p.dofs[i]);
+          dl.row(1) += p.dl2[i] * u.row(p.dofs[i]);
+        }
+      return dl;
+    }
+
+    /// u = K^-1 rhs with the model's factored tangent; false if singular.
+    bool solve(const Matrix &rhs, Matrix &u, std::string &message)
+    {
+      u.resize(rhs.rows(), P);
+      Eigen::VectorXd column;
+      for (unsigned int j = 0; j < P; ++j)
+        {
+          m.solve_tangent(rhs.col(j), column);
+          if (!column.allFinite())
+            {
+              message = "the tangent of the state is singular";
+              return false;
+            }
+          u.col(j) = column;
+        }
+      return true;
+    }
+  };
+
+  TimeSensitivity::TimeSensitivity(MembraneModel &model, std::vector<LawParameter> parameters,
+                                   const unsigned int stages, const double voltage_reference)
+    : data(std::make_unique<Data>(*model.impl, std::move(parameters), stages, voltage_reference))
+  {}
+
+  TimeSensitivity::~TimeSensitivity() = default;
+
+  bool TimeSensitivity::start_relaxed(std::string &message)
+  {
+    Data                &d = *data;
+    MembraneModel::Impl &m = d.m;
+    // The tangent with the internal variables relaxed (network A alone).
+    const double              dt = m.membrane.time_step();
+    const TimeScheme          scheme = m.membrane.time_scheme();
+    const std::vector<double> old = m.membrane.internal_old, current = m.membrane.internal_current;
+    m.membrane.set_time_step(std::numeric_limits<double>::infinity(), scheme);
+    const bool assembled = m.assemble_constrained(m.solution, assemble_residual | assemble_tangent);
+    m.membrane.set_time_step(dt, scheme);
+    m.membrane.internal_old     = old;
+    m.membrane.internal_current = current;
+    if (!assembled)
+      {
+        message = "the start of the run lies outside the material's range";
+        return false;
+      }
+    Data::Matrix rhs = Data::Matrix::Zero(m.mesh.n_dofs(), d.P), S_p, f_p;
+    bool         ok  = true;
+    m.for_each_variation_point([&](const VariationPoint &v) {
+      if (ok && (ok = d.explicit_derivatives(v, S_p, f_p, message)))
+        Data::add_force(v, S_p, rhs);
+    });
+    for (const unsigned int i : m.mesh.constrained)
+      rhs.row(i).setZero();
+    ok = ok && d.solve(rhs, d.du, message);
+    m.tangent_is_current = false;
+    if (!ok)
+      return false;
+    // f(l, y, p) = 0 at every point: dy = -f_y^-1 (f_l dl + f_p).
+    std::vector<Data::Matrix> blocks;
+    Data::Matrix              S_y, f_y, f_l;
+    m.for_each_variation_point([&](const VariationPoint &v) {
+      if (!ok)
+        return;
+      if (d.ne == 0)
+        {
+          blocks.emplace_back(0, d.P);
+          return;
+        }
+      Data::Point p;
+      p.dofs = v.dofs;
+      p.dl1  = v.dl1;
+      p.dl2  = v.dl2;
+      ok     = d.linearization(v, S_y, f_y, f_l, message) &&
+           d.explicit_derivatives(v, S_p, f_p, message);
+      if (ok)
+        blocks.push_back(-f_y.partialPivLu().solve(f_l * Data::stretch_change(p, d.du) + f_p));
+    });
+    if (!ok)
+      return false;
+    d.n_points = blocks.size();
+    d.dy.setZero(Eigen::Index(d.n_points) * d.ne, d.P);
+    for (unsigned int q = 0; q < d.n_points; ++q)
+      d.dy.middleRows(Eigen::Index(q) * d.ne, d.ne) = blocks[q];
+    // The rate is 0 at every relaxed point, and so is its derivative.
+    for (Data::Matrix &k : d.dK)
+      k.setZero(d.dy.rows(), d.P);
+    return true;
+  }
+
+  bool TimeSensitivity::stage(const unsigned int i, const std::vector<double> &a_row,
+                              const double h, const double gh, std::string &message)
+  {
+    Data                &d = *data;
+    MembraneModel::Impl &m = d.m;
+    if (!m.tangent_is_current &&
+        !m.assemble_constrained(m.solution, assemble_residual | assemble_tangent))
+      {
+        message = "the stage lies outside the material's range";
+        return false;
+      }
+    m.tangent_is_current = true;
+    // dYhat = dy_n + h sum_j a_ij dK_j.
+    Data::Matrix dYhat = d.dy;
+    for (unsigned int j = 0; j < i; ++j)
+      if (a_row[j] != 0.)
+        dYhat += h * a_row[j] * d.dK[j];
+
+    Data::Matrix rhs = Data::Matrix::Zero(m.mesh.n_dofs(), d.P), S_p, S_y;
+    const Data::Matrix I = Data::Matrix::Identity(d.ne, d.ne);
+    d.points.resize(d.n_points);
+    unsigned int q  = 0;
+    bool         ok = true;
+    m.for_each_variation_point([&](const VariationPoint &v) {
+      if (!ok)
+        return;
+      Data::Point &p = d.points[q];
+      p.dofs         = v.dofs;
+      p.w            = v.w;
+      p.dl1          = v.dl1;
+      p.dl2          = v.dl2;
+      ok             = d.explicit_derivatives(v, S_p, p.f_p, message) &&
+           (d.ne == 0 || d.linearization(v, S_y, p.f_y, p.f_l, message));
+      if (!ok)
+        return;
+      if (d.ne > 0)
+        {
+          const auto A = (I - gh * p.f_y).partialPivLu();
+          p.Z          = A.solve(dYhat.middleRows(Eigen::Index(q) * d.ne, d.ne) + gh * p.f_p);
+          p.G          = gh * A.solve(p.f_l);
+          S_p += S_y * p.Z;
+        }
+      Data::add_force(v, S_p, rhs);
+      ++q;
+    });
+    for (const unsigned int c : m.mesh.constrained)
+      rhs.row(c).setZero();
+    if (!ok || !d.solve(rhs, d.du_trial, message))
+      return false;
+    // The internal variables and their rates, point by point.
+    d.dY_trial.resize(d.dy.rows(), d.P);
+    Data::Matrix &dK = d.dK[i];
+    dK.resize(d.dy.rows(), d.P);
+    for (unsigned int k = 0; k < d.n_points && d.ne > 0; ++k)
+      {
+        const Data::Point &p  = d.points[k];
+        const Data::Matrix dl = Data::stretch_change(p, d.du_trial);
+        const Data::Matrix dY = p.Z + p.G * dl;
+        d.dY_trial.middleRows(Eigen::Index(k) * d.ne, d.ne) = dY;
+        dK.middleRows(Eigen::Index(k) * d.ne, d.ne)         = p.f_y * dY + p.f_l * dl + p.f_p;
+      }
+    return true;
+  }
+
+  void TimeSensitivity::accept(const unsigned int last)
+  {
+    Data &d = *data;
+    d.du    = d.du_trial;
+    d.dy    = d.dY_trial;
+    d.dK[0] = d.dK[last];
+  }
+
+  double TimeSensitivity::displacement(Eigen::VectorXd &gradient) const
+  {
+    const Data                &d = *data;
+    const MembraneModel::Impl &m = d.m;
+    const double dz = m.solution[m.mesh.z_inner] - m.solution[m.mesh.z_outer];
+    gradient        = (dz >= 0. ? 1. : -1.) *
+               (d.du.row(m.mesh.z_inner) - d.du.row(m.mesh.z_outer)).transpose();
+    return std::abs(dz);
+  }
+} // namespace cdea
