@@ -167,8 +167,10 @@ namespace cdea
         while (next_sample < times.size() && times[next_sample] <= t * (1. + 1e-12) + 1e-300)
           {
             Eigen::VectorXd gradient;
-            out.displacement.push_back(sensitivity->displacement(gradient));
-            out.jacobian.row(out.displacement.size() - 1) = gradient.transpose();
+            out.displacement.push_back(sensitivity ? sensitivity->displacement(gradient) :
+                                                     model->displacement());
+            if (sensitivity)
+              out.jacobian.row(out.displacement.size() - 1) = gradient.transpose();
             ++next_sample;
           }
       }
@@ -198,10 +200,12 @@ namespace cdea
       if (!(peak > 0.) &&
           std::find(parameters.begin(), parameters.end(), LawParameter::voltage) != parameters.end())
         return fail(message, "the voltage as a parameter needs a waveform with a peak above 0 V");
-      sensitivity = std::make_unique<TimeSensitivity>(*model, parameters,
-                                                      tableau ? tableau->stages() : 2, peak);
+      // No parameters: the run alone, with the same steps.
+      if (!parameters.empty())
+        sensitivity = std::make_unique<TimeSensitivity>(*model, parameters,
+                                                        tableau ? tableau->stages() : 2, peak);
       std::string why;
-      if (!sensitivity->start_relaxed(why))
+      if (sensitivity && !sensitivity->start_relaxed(why))
         return fail(message, why);
       if (tableau)
         set_up_esdirk();
@@ -221,7 +225,7 @@ namespace cdea
           return settings.waveform.rates_on_piece(t, inside);
         });
       esdirk->on_stage = [this](const unsigned int i, const double h) {
-        if (stages_ok)
+        if (stages_ok && sensitivity)
           stages_ok = sensitivity->stage(i, tableau->a[i], h, tableau->gamma * h, stage_message);
       };
       point                  = TimePoint();
@@ -257,7 +261,8 @@ namespace cdea
       model->set_time_step(0., TimeScheme::backward_euler);
       point       = esdirk->end();
       point.state = model->state();
-      sensitivity->accept(tableau->stages() - 1);
+      if (sensitivity)
+        sensitivity->accept(tableau->stages() - 1);
       if (error_control)
         control.accept_with_factor(
           h, std::clamp(0.9 * std::pow(std::max(esdirk->error_ratio(), 1e-10), -1. / k), 0.2, 5.));
@@ -285,11 +290,12 @@ namespace cdea
         }
       const FixedStage s = fixed_stage(settings.method);
       std::string      why;
-      if (!sensitivity->stage(1, s.a_row, h, s.gamma * h, why))
+      if (sensitivity && !sensitivity->stage(1, s.a_row, h, s.gamma * h, why))
         return fail(message, why);
       model->accept_time_step();
       model->set_time_step(0., dashpot_scheme(settings.method));
-      sensitivity->accept(1);
+      if (sensitivity)
+        sensitivity->accept(1);
       control.accept(h, solved.iterations);
       accepted(t_next);
       return true;

@@ -12,6 +12,47 @@
 
 namespace cdea
 {
+  namespace
+  {
+    /// B <- A^-1 B for a small square A (overwritten) by Gaussian elimination
+    /// with partial pivoting: the points' systems have a few rows, where
+    /// Eigen's blocked solvers cost more than the arithmetic. False if A is
+    /// singular.
+    bool solve_small(Eigen::MatrixXd &A, Eigen::Ref<Eigen::MatrixXd> B)
+    {
+      const Eigen::Index n = A.rows();
+      for (Eigen::Index k = 0; k < n; ++k)
+        {
+          Eigen::Index pivot = k;
+          for (Eigen::Index i = k + 1; i < n; ++i)
+            if (std::abs(A(i, k)) > std::abs(A(pivot, k)))
+              pivot = i;
+          if (!(A(pivot, k) != 0.))
+            return false;
+          if (pivot != k)
+            {
+              A.row(k).swap(A.row(pivot));
+              B.row(k).swap(B.row(pivot));
+            }
+          for (Eigen::Index i = k + 1; i < n; ++i)
+            {
+              const double f = A(i, k) / A(k, k);
+              if (f == 0.)
+                continue;
+              A.row(i).tail(n - k) -= f * A.row(k).tail(n - k);
+              B.row(i) -= f * B.row(k);
+            }
+        }
+      for (Eigen::Index k = n - 1; k >= 0; --k)
+        {
+          for (Eigen::Index j = k + 1; j < n; ++j)
+            B.row(k) -= A(k, j) * B.row(j);
+          B.row(k) /= A(k, k);
+        }
+      return true;
+    }
+  } // namespace
+
   class TimeSensitivity::Data
   {
   public:
@@ -37,6 +78,10 @@ namespace cdea
       Matrix              f_y, f_l, f_p, Z, G; ///< G = gamma h A^-1 f_l
     };
     std::vector<Point> points;
+    /// Work storage of the points, kept from point to point and stage to stage.
+    mutable std::vector<double>           rate;
+    mutable InternalLinearization         lin;
+    Matrix                                A, ZG, S_p, S_y, dl, dY, dYhat, rhs;
 
     Data(MembraneModel::Impl &m, std::vector<LawParameter> list, const unsigned int stages,
          const double reference)
@@ -52,8 +97,8 @@ namespace cdea
     bool explicit_derivatives(const VariationPoint &v, Matrix &S_p, Matrix &f_p,
                               std::string &message) const
     {
-      const MembraneLaw  &law = m.membrane.law();
-      std::vector<double> rate(ne);
+      const MembraneLaw &law = m.membrane.law();
+      rate.resize(ne);
       S_p.setZero(2, P);
       f_p.setZero(ne, P);
       for (unsigned int j = 0; j < P; ++j)
@@ -82,7 +127,6 @@ namespace cdea
     bool linearization(const VariationPoint &v, Matrix &S_y, Matrix &f_y, Matrix &f_l,
                        std::string &message) const
     {
-      InternalLinearization lin;
       if (!m.membrane.law().linearize(v.input, v.stored, lin))
         {
           message = "the material law cannot be linearized at a point of cell " +
@@ -106,15 +150,14 @@ namespace cdea
     }
 
     /// dl = B du of a point (2 x P).
-    static Matrix stretch_change(const Point &p, const Matrix &u)
+    static void stretch_change(const Point &p, const Matrix &u, Matrix &dl)
     {
-      Matrix dl = Matrix::Zero(2, u.cols());
+      dl.setZero(2, u.cols());
       for (std::size_t i = 0; i < p.dl1.size(); ++i)
         {
           dl.row(0) += p.dl1[i] * u.row(p.dofs[i]);
           dl.row(1) += p.dl2[i] * u.row(p.dofs[i]);
         }
-      return dl;
     }
 
     /// u = K^-1 rhs with the model's factored tangent; false if singular.
@@ -191,7 +234,10 @@ namespace cdea
       ok     = d.linearization(v, S_y, f_y, f_l, message) &&
            d.explicit_derivatives(v, S_p, f_p, message);
       if (ok)
-        blocks.push_back(-f_y.partialPivLu().solve(f_l * Data::stretch_change(p, d.du) + f_p));
+        {
+          Data::stretch_change(p, d.du, d.dl);
+          blocks.push_back(-f_y.partialPivLu().solve(f_l * d.dl + f_p));
+        }
     });
     if (!ok)
       return false;
@@ -218,13 +264,12 @@ namespace cdea
       }
     m.tangent_is_current = true;
     // dYhat = dy_n + h sum_j a_ij dK_j.
-    Data::Matrix dYhat = d.dy;
+    d.dYhat = d.dy;
     for (unsigned int j = 0; j < i; ++j)
       if (a_row[j] != 0.)
-        dYhat += h * a_row[j] * d.dK[j];
+        d.dYhat += h * a_row[j] * d.dK[j];
 
-    Data::Matrix rhs = Data::Matrix::Zero(m.mesh.n_dofs(), d.P), S_p, S_y;
-    const Data::Matrix I = Data::Matrix::Identity(d.ne, d.ne);
+    d.rhs.setZero(m.mesh.n_dofs(), d.P);
     d.points.resize(d.n_points);
     unsigned int q  = 0;
     bool         ok = true;
@@ -236,23 +281,33 @@ namespace cdea
       p.w            = v.w;
       p.dl1          = v.dl1;
       p.dl2          = v.dl2;
-      ok             = d.explicit_derivatives(v, S_p, p.f_p, message) &&
-           (d.ne == 0 || d.linearization(v, S_y, p.f_y, p.f_l, message));
+      ok             = d.explicit_derivatives(v, d.S_p, p.f_p, message) &&
+           (d.ne == 0 || d.linearization(v, d.S_y, p.f_y, p.f_l, message));
       if (!ok)
         return;
       if (d.ne > 0)
         {
-          const auto A = (I - gh * p.f_y).partialPivLu();
-          p.Z          = A.solve(dYhat.middleRows(Eigen::Index(q) * d.ne, d.ne) + gh * p.f_p);
-          p.G          = gh * A.solve(p.f_l);
-          S_p += S_y * p.Z;
+          // A = I - gamma h f_y; Z = A^-1 (dYhat + gamma h f_p), G = gamma h A^-1 f_l.
+          d.A = -gh * p.f_y;
+          d.A.diagonal().array() += 1.;
+          d.ZG.resize(d.ne, d.P + 2);
+          d.ZG.leftCols(d.P)  = d.dYhat.middleRows(Eigen::Index(q) * d.ne, d.ne) + gh * p.f_p;
+          d.ZG.rightCols(2)   = gh * p.f_l;
+          if (!(ok = solve_small(d.A, d.ZG)))
+            {
+              message = "the stage's update of the internal variables is singular";
+              return;
+            }
+          p.Z = d.ZG.leftCols(d.P);
+          p.G = d.ZG.rightCols(2);
+          d.S_p += d.S_y.lazyProduct(p.Z);
         }
-      Data::add_force(v, S_p, rhs);
+      Data::add_force(v, d.S_p, d.rhs);
       ++q;
     });
     for (const unsigned int c : m.mesh.constrained)
-      rhs.row(c).setZero();
-    if (!ok || !d.solve(rhs, d.du_trial, message))
+      d.rhs.row(c).setZero();
+    if (!ok || !d.solve(d.rhs, d.du_trial, message))
       return false;
     // The internal variables and their rates, point by point.
     d.dY_trial.resize(d.dy.rows(), d.P);
@@ -260,11 +315,12 @@ namespace cdea
     dK.resize(d.dy.rows(), d.P);
     for (unsigned int k = 0; k < d.n_points && d.ne > 0; ++k)
       {
-        const Data::Point &p  = d.points[k];
-        const Data::Matrix dl = Data::stretch_change(p, d.du_trial);
-        const Data::Matrix dY = p.Z + p.G * dl;
-        d.dY_trial.middleRows(Eigen::Index(k) * d.ne, d.ne) = dY;
-        dK.middleRows(Eigen::Index(k) * d.ne, d.ne)         = p.f_y * dY + p.f_l * dl + p.f_p;
+        const Data::Point &p = d.points[k];
+        Data::stretch_change(p, d.du_trial, d.dl);
+        d.dY = p.Z + p.G.lazyProduct(d.dl);
+        d.dY_trial.middleRows(Eigen::Index(k) * d.ne, d.ne) = d.dY;
+        dK.middleRows(Eigen::Index(k) * d.ne, d.ne) =
+          p.f_p + p.f_y.lazyProduct(d.dY) + p.f_l.lazyProduct(d.dl);
       }
     return true;
   }
