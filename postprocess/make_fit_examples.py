@@ -36,10 +36,14 @@ def true_sets():
 
 def true_values(kind):
     """The fit's free parameters in the order of the prm files (SI): the DMA
-    fit frees every modulus and time, the creep fit the moduli."""
+    fit frees every modulus and time, the creep fit mu_A and the moduli of
+    branches 2 and 3 (prm/fit-creep.prm says why)."""
     values = [TRUE["mu_A"] * 1e3]
-    for mu, tau in zip(TRUE["mu"], TRUE["tau"]):
-        values += [mu * 1e3, tau] if kind == "dma" else [mu * 1e3]
+    for k, (mu, tau) in enumerate(zip(TRUE["mu"], TRUE["tau"])):
+        if kind == "dma":
+            values += [mu * 1e3, tau]
+        elif k > 0:
+            values += [mu * 1e3]
     return values
 
 
