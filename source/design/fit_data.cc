@@ -65,7 +65,12 @@ namespace cdea
   FitDataKind fit_data_kind(const std::string &file)
   {
     std::istringstream in(read_data_file(file));
-    std::string        line;
+    return fit_data_kind(in);
+  }
+
+  FitDataKind fit_data_kind(std::istream &in)
+  {
+    std::string line;
     for (unsigned int number = 1; std::getline(in, line); ++number)
       {
         line = csv_content(line, number);

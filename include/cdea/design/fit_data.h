@@ -31,6 +31,8 @@ namespace cdea
   /// creep, anything else displacement-voltage points. InputError if the file
   /// cannot be read.
   FitDataKind fit_data_kind(const std::string &file);
+  /// The same from CSV text @p in (read to its header line).
+  FitDataKind fit_data_kind(std::istream &in);
 
   /// A DMA table: frequency (Hz), storage and loss modulus of uniaxial
   /// tension (Pa), weight (of both moduli of a row).
