@@ -84,8 +84,11 @@ namespace
         const Eigen::VectorXd fd = (Eu - Ed) / (2. * h);
         worst = std::max(worst, (fd - J.col(Eigen::Index(j))).norm() / (J.col(Eigen::Index(j)).norm() + 1e-30));
       }
-    check(worst < 1e-6, "exact DMA derivatives against central differences: " +
-                          std::to_string(worst));
+    std::ostringstream text;
+    text << "exact DMA derivatives against central differences: largest relative "
+            "difference of a column "
+         << worst;
+    check(worst < 1e-6, text.str());
   }
 
   void check_recovery(const unsigned int seed)
