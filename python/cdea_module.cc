@@ -558,6 +558,7 @@ namespace
 } // namespace
 
 void bind_design(py::module_ &); // python/design_bindings.cc: optimize, fit
+void bind_viscous_fit(py::module_ &); // python/viscous_fit_bindings.cc: fit_viscoelastic
 
 PYBIND11_MODULE(cdea, m)
 {
@@ -582,4 +583,5 @@ PYBIND11_MODULE(cdea, m)
   m.def("mpi_initialized", &mpi::initialized,
         "True once this process has started MPI (only the Trilinos KLU solver does)");
   bind_design(m);
+  bind_viscous_fit(m);
 }

@@ -90,6 +90,26 @@ paraview) # doc/usage.md: prm/default.prm with ParaView output
   [ -n "$n" ] && [ "$(ls results/paraview_vtu | wc -l)" = "$n" ] && [ "$(grep -c "<DataSet" results/paraview.pvd)" = "$n" ] \
     && has "one VTU file per step" "ParaView: $n steps in results/paraview.pvd" out \
     || fail "ParaView files: $(ls results/paraview_vtu | wc -l) VTU, $n steps" ;;
+fit-dma) # doc/materials.md, "Fits": 7 constants from the DMA table, each near its truth
+  "$exe" fit prm/fit-dma.prm prm/fit-dma.csv > out 2> err; rc=$?
+  [ $rc -eq 0 ] && ok "exit 0" || fail "exit $rc: $(cat err)"
+  has "converged" "Converged:" out
+  near "shear modulus (kPa), true 25.1" "$(value 'shear modulus \(kPa\) +20 +' out)" 25.1147 0.0001
+  near "branch 1 modulus (Pa), true 25000" "$(value 'Branch 1 shear modulus \(Pa\) +30000 +' out)" 25111.2 0.1
+  near "branch 3 time (s), true 20" "$(value 'Branch 3 relaxation time \(s\) +30 +' out)" 20.1038 0.0001
+  near "rms residual (kPa), noise 0.3" "$(value 'weighted rms residual' out)" 0.2442 0.0001
+  grep -q "Branch shear moduli (kPa) *= 25.111" results/fit-dma_fit.prm && ok "fitted moduli in the Branch list" \
+    || fail "results/fit-dma_fit.prm: $(grep Branch results/fit-dma_fit.prm)" ;;
+fit-creep) # doc/materials.md, "Fits": one Gauss-Newton step from the true constants
+  # (the whole fit from the file's start values takes 6 iterations, about 4 s
+  # of CPU with the finite-difference Jacobian) lands on the fit's optimum.
+  "$exe" fit prm/fit-creep.prm prm/fit-creep.csv --set 'Material/Shear modulus (kPa)=25.1' \
+    --set 'Material/Branch shear moduli (kPa)=25, 15, 5' --set 'Calibration/Max iterations=1' > out 2> err; rc=$?
+  [ $rc -eq 2 ] && ok "one iteration: exit 2" || fail "exit $rc: $(cat err)"
+  near "shear modulus (kPa)" "$(value 'shear modulus \(kPa\) +25.1 +' out)" 25.1001 0.0001
+  near "branch 2 modulus (Pa), true 15000" "$(value 'Branch 2 shear modulus \(Pa\) +15000 +' out)" 15262 5
+  near "branch 3 modulus (Pa), true 5000" "$(value 'Branch 3 shear modulus \(Pa\) +5000 +' out)" 4993.6 1
+  near "rms residual (mm), noise 0.005" "$(value 'weighted rms residual' out)" 0.004261 0.000002 ;;
 *) fail "no example '$1'" ;;
 esac
 finish

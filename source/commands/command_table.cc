@@ -66,7 +66,10 @@ namespace cdea
        optimize_job},
       {"fit", {"FILE.prm DATA.csv"},
        {"calibrate material constants to measured displacements\n"
-        "(subsection Calibration), <Base name>_fit.h5"},
+        "(subsection Calibration), <Base name>_fit.h5; the CSV\n"
+        "header tells the data: V1_kV.. + displacement_mm points,\n"
+        "time_s + V1_kV.. + displacement_mm a creep curve,\n"
+        "frequency_Hz + storage_kPa + loss_kPa a DMA table"},
        reads_parameters | stops_on_signals | in_python, Ranks::one, Output::claimed_first,
        fit_job},
       {"chart", {"FILE.prm"},

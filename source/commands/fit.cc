@@ -7,6 +7,7 @@
 #include <cdea/base/format.h>
 #include <cdea/base/run_control.h>
 #include <cdea/commands/command.h>
+#include <cdea/commands/fit_viscous.h>
 #include <cdea/design/fit.h>
 #include <cdea/input/validation.h>
 
@@ -41,6 +42,14 @@ namespace cdea
       void check(Invocation &invocation) override
       {
         const std::string &data_file = invocation.arguments.at(1);
+        if (const FitDataKind kind = fit_data_kind(data_file);
+            kind != FitDataKind::displacement_voltage)
+          {
+            // A DMA table or a creep curve: the viscoelastic film's fit.
+            viscous = viscous_fit_job(kind);
+            viscous->check(invocation);
+            return;
+          }
         base     = invocation.parameters.scene();
         settings = fit_settings(invocation.parameters);
         data     = read_calibration_data(data_file, base.n_rings(), voltage_ceiling(base));
@@ -54,6 +63,8 @@ namespace cdea
 
       int run(Invocation &invocation) override
       {
+        if (viscous)
+          return viscous->run(invocation);
         const auto start = std::chrono::steady_clock::now();
         print_banner(invocation.arguments.at(1));
         const Calibrated c =
@@ -86,6 +97,7 @@ namespace cdea
       Scene           base;
       FitSettings     settings;
       CalibrationData data;
+      std::unique_ptr<ViscousFitJob> viscous; ///< a DMA or creep fit
 
       void print_banner(const std::string &data_file) const
       {
@@ -169,9 +181,8 @@ namespace cdea
                            c.curve_mm, c.solves);
             if (r.fitted.size() > 0)
               {
-                std::vector<ParameterChange> changes;
-                for (std::size_t j = 0; j < settings.free.size(); ++j)
-                  changes.push_back(fitted_entry(settings.free[j], r.values[j]));
+                const std::vector<ParameterChange> changes =
+                  fitted_entries(base, settings.free, r.values);
                 write_changed_parameters(invocation.input, prm_path, changes,
                                          "# Written by cdea fit: the parameter file with the "
                                          "fitted values.\n");

@@ -15,28 +15,26 @@ namespace cdea
   namespace
   {
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-    /// Residuals in mm.
-    constexpr double residual_unit = 1e-3;
     /// Condition number of the column-scaled Jacobian above which the data
     /// do not determine the parameters (no standard errors), and above which
     /// they determine them poorly (a warning).
     constexpr double singular_condition = 1e10, weak_condition = 1e4;
 
     /// The scaled problem: q_j = p_j / p0_j, residuals sqrt(w) (model -
-    /// measured) in mm.
-    class DisplacementResiduals final : public ceres::CostFunction
+    /// measured) in the observations' unit (mm for displacements).
+    class ObservationResiduals final : public ceres::CostFunction
     {
     public:
-      DisplacementResiduals(DisplacementModel &model, const CalibrationData &data,
-                            const std::vector<double> &scale, unsigned int &evaluations,
-                            std::string &failure)
+      ObservationResiduals(const FitFunction &model, const FitObservations &data,
+                           const std::vector<double> &scale, unsigned int &evaluations,
+                           std::string &failure)
         : model(model)
         , data(data)
         , scale(scale)
         , evaluations(evaluations)
         , failure(failure)
       {
-        set_num_residuals(int(data.size()));
+        set_num_residuals(int(data.measured.size()));
         mutable_parameter_block_sizes()->push_back(int(scale.size()));
       }
 
@@ -52,7 +50,7 @@ namespace cdea
         ++evaluations;
         try
           {
-            if (!model.evaluate(values, d, want ? &J : nullptr, &failure))
+            if (!model(values, d, want ? &J : nullptr, &failure))
               return false;
           }
         catch (const std::exception &e)
@@ -61,20 +59,20 @@ namespace cdea
             failure = e.what();
             return false;
           }
-        for (std::size_t i = 0; i < data.size(); ++i)
+        for (Eigen::Index i = 0; i < data.measured.size(); ++i)
           {
             const double root_w = std::sqrt(data.weight[i]);
-            residuals[i]        = root_w * (d[i] - data.displacement[i]) / residual_unit;
+            residuals[i]        = root_w * (d[i] - data.measured[i]) / data.unit;
             if (want)
               for (std::size_t j = 0; j < K; ++j)
-                jacobians[0][i * K + j] = root_w * J(i, j) * scale[j] / residual_unit;
+                jacobians[0][i * K + j] = root_w * J(i, j) * scale[j] / data.unit;
           }
         return true;
       }
 
     private:
-      DisplacementModel         &model;
-      const CalibrationData     &data;
+      const FitFunction         &model;
+      const FitObservations     &data;
       const std::vector<double> &scale;
       unsigned int              &evaluations;
       std::string               &failure; ///< why the last failed evaluation failed
@@ -246,7 +244,23 @@ namespace cdea
                 DisplacementModel &model,
                 const std::function<void(unsigned int, double, const std::vector<double> &)> &progress)
   {
-    const std::size_t K = settings.free.size(), M = data.size();
+    // Residuals in mm.
+    FitObservations observations{
+      Eigen::Map<const Eigen::VectorXd>(data.displacement.data(), Eigen::Index(data.size())),
+      Eigen::Map<const Eigen::VectorXd>(data.weight.data(), Eigen::Index(data.size())), 1e-3};
+    const FitFunction function = [&model](const std::vector<double> &values, Eigen::VectorXd &d,
+                                          Eigen::MatrixXd *J, std::string *message) {
+      return model.evaluate(values, d, J, message);
+    };
+    return fit_observations(base, observations, settings, function, progress);
+  }
+
+  FitResult fit_observations(
+    const Scene &base, const FitObservations &data, const FitSettings &settings,
+    const FitFunction                                                            &model,
+    const std::function<void(unsigned int, double, const std::vector<double> &)> &progress)
+  {
+    const std::size_t K = settings.free.size(), M = std::size_t(data.measured.size());
     FitResult         r;
     for (const auto &p : settings.free)
       r.initial.push_back(parameter_value(base, p));
@@ -270,7 +284,7 @@ namespace cdea
     std::string    failure;
     ceres::Problem problem;
     problem.AddResidualBlock(
-      new DisplacementResiduals(model, data, scale, r.evaluations, failure), nullptr, q.data());
+      new ObservationResiduals(model, data, scale, r.evaluations, failure), nullptr, q.data());
     set_bounds(problem, q, base, settings, scale);
     ceres::Solver::Options options = solver_options(settings);
     Progress               callback(progress, q, scale);
@@ -294,13 +308,13 @@ namespace cdea
     // Residuals and the Jacobian at the optimum.
     Eigen::VectorXd d;
     Eigen::MatrixXd J;
-    if (!model.evaluate(r.values, d, &J, &r.status))
+    if (!model(r.values, d, &J, &r.status))
       {
         r.converged = false;
         return r;
       }
     r.fitted    = d;
-    r.residuals = d - Eigen::Map<const Eigen::VectorXd>(data.displacement.data(), M);
+    r.residuals = d - data.measured;
     Eigen::VectorXd root_w(M);
     double          sum_w = 0.;
     for (std::size_t i = 0; i < M; ++i)

@@ -4,6 +4,7 @@
 #include <cdea/base/file_reading.h>
 #include <cdea/base/format.h>
 #include <cdea/design/fit.h>
+#include <cdea/design/fit_data.h>
 #include <cdea/fe/load_term.h>
 #include <cdea/input/parameters.h>
 #include <cdea/input/solver_settings.h>
@@ -25,25 +26,6 @@ namespace cdea
     /// evaluation, so more points than this are no calibration data.
     constexpr std::size_t max_data_points     = 10000;
     constexpr std::size_t max_data_file_bytes = std::size_t(64) << 20;
-
-    /// Fields of one CSV line, blanks around each removed; a ',' at the end
-    /// of the line ends in an empty field.
-    std::vector<std::string> fields_of(const std::string &line)
-    {
-      std::vector<std::string> fields;
-      for (const std::string &field : split_list(line, ','))
-        {
-          std::size_t b = 0, e = field.size();
-          while (b < e && std::isspace(static_cast<unsigned char>(field[b])))
-            ++b;
-          while (e > b && std::isspace(static_cast<unsigned char>(field[e - 1])))
-            --e;
-          fields.push_back(field.substr(b, e - b));
-        }
-      if (!line.empty() && line.back() == ',')
-        fields.emplace_back();
-      return fields;
-    }
 
     std::string lower_case(std::string s)
     {
@@ -139,18 +121,6 @@ namespace cdea
       data.weight.push_back(w);
     }
 
-    /// One line of the file without its comment, line end and (on the
-    /// first line) UTF-8 byte order mark.
-    std::string content_of(std::string line, const unsigned int number)
-    {
-      if (number == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0)
-        line.erase(0, 3);
-      if (const auto hash = line.find('#'); hash != std::string::npos)
-        line.erase(hash);
-      if (!line.empty() && line.back() == '\r')
-        line.pop_back();
-      return line;
-    }
   } // namespace
 
   CalibrationData read_calibration_data(std::istream &in, const std::string &file,
@@ -162,10 +132,10 @@ namespace cdea
     std::string                line;
     for (unsigned int number = 1; std::getline(in, line); ++number)
       {
-        line = content_of(line, number);
+        line = csv_content(line, number);
         if (line.find_first_not_of(" \t") == std::string::npos)
           continue;
-        const auto        fields = fields_of(line);
+        const auto        fields = csv_fields(line);
         const std::string where  = file + ", line " + std::to_string(number);
         if (column.empty())
           {
@@ -253,12 +223,23 @@ namespace cdea
   FitSettings fit_settings(const Parameters &p)
   {
     require_quasi_static_elastic(p, "fit");
+    FitSettings s = free_parameter_settings(p);
+    if (p.wrinkling.model != WrinklingModel::check)
+      throw InputError("cdea fit supports Wrinkling/Model = check only (the displacement of "
+                       "the actuator under its dead load)");
+    require_load_term_support(p, supports_sensitivities, "fit",
+                              "it fits the displacement of the actuator under its dead load");
+    return s;
+  }
+
+  FitSettings free_parameter_settings(const Parameters &p)
+  {
     const std::string name  = "Calibration/Free parameters";
     const auto        law   = p.scene().law();
     FitSettings       s;
     for (const std::string &item : split_list(p.calibration.free_parameters_text, ','))
       {
-        const auto           fields = fields_of(item);
+        const auto           fields = csv_fields(item);
         const std::string    key    = lower_case(fields.empty() ? "" : fields[0]);
         const SceneParameter free   = free_parameter(key, name, *law, p.material_law.model);
         for (const auto &f : s.free)
@@ -270,11 +251,6 @@ namespace cdea
       throw InputError(name + ": no parameter given (any of " + allowed_names(*law) + ")");
     s.max_iterations = p.calibration.max_iterations;
     s.tolerance      = p.calibration.tolerance;
-    if (p.wrinkling.model != WrinklingModel::check)
-      throw InputError("cdea fit supports Wrinkling/Model = check only (the displacement of "
-                       "the actuator under its dead load)");
-    require_load_term_support(p, supports_sensitivities, "fit",
-                              "it fits the displacement of the actuator under its dead load");
     return s;
   }
 

@@ -70,9 +70,13 @@ namespace cdea
         case ParameterKind::law_constant:
           {
             const auto it = scene.law_constants.find(p.entry);
-            if (it == scene.law_constants.end())
-              throw std::invalid_argument("the scene's law has no constant '" + p.entry + "'");
-            return it->second;
+            if (it != scene.law_constants.end())
+              return it->second;
+            // A constant that is no number entry (a branch's modulus): the law's value.
+            for (const LawConstant &c : scene.law()->own_constants())
+              if (c.entry == p.entry && !std::isnan(c.value))
+                return c.value;
+            throw std::invalid_argument("the scene's law has no constant '" + p.entry + "'");
           }
       }
     return 0.;

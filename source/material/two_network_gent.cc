@@ -514,6 +514,7 @@ namespace cdea
         check_branch(settings.material.shear_modulus / 1e3, mu_b, jlim, tau, names);
         branches.push_back({mu_b * 1e3, jlim, tau});
       }
+    set_branch_constants(settings.constants, settings.material.shear_modulus, branches);
     std::vector<SpringLaw> springs = make_springs(settings, branches);
     return std::make_shared<TwoNetworkGentLaw>(settings.material, std::move(branches),
                                                std::move(springs));

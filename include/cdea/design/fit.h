@@ -62,6 +62,11 @@ namespace cdea
     double                      tolerance      = 1e-10;
   };
 
+  /// Subsection Calibration's free parameters (names as fit_settings()
+  /// accepts them, checked against the law of Material/Model), iterations and
+  /// tolerance; nothing about the kind of data.
+  FitSettings free_parameter_settings(const Parameters &p);
+
   /// Subsection Calibration checked; throws InputError naming the parameter
   /// and, for a name the law of Material/Model does not have (or Jlim under
   /// a law without the Gent limit), the names this law allows.
@@ -158,6 +163,26 @@ namespace cdea
     unsigned int        iterations = 0, evaluations = 0;
   };
 
+  /// Observations of any kind (displacements, moduli) in SI units, their
+  /// weights, and the unit residuals and costs are measured in (1e-3: mm).
+  struct FitObservations
+  {
+    Eigen::VectorXd measured, weight;
+    double          unit = 1.;
+  };
+
+  /// The model of the observations at given parameter values (SI) and its
+  /// Jacobian (if asked); false with why in the message.
+  using FitFunction = std::function<bool(const std::vector<double> &, Eigen::VectorXd &,
+                                         Eigen::MatrixXd *, std::string *)>;
+
+  /// The least-squares fit itself (Ceres, bounds, standard errors and
+  /// correlations, as fit() describes) of @p model to @p data.
+  FitResult fit_observations(
+    const Scene &base, const FitObservations &data, const FitSettings &settings,
+    const FitFunction                                                            &model,
+    const std::function<void(unsigned int, double, const std::vector<double> &)> &progress = {});
+
   /// Fit the free parameters of @p settings, starting from their values in
   /// @p base. @p progress (if set) is told about every iteration.
   FitResult fit(const Scene &base, const CalibrationData &data, const FitSettings &settings,
@@ -167,6 +192,14 @@ namespace cdea
 
   /// The parameter file entry that holds @p value of @p parameter.
   ParameterChange fitted_entry(const SceneParameter &parameter, double value);
+
+  /// The entries of the parameter file that hold @p values of @p free
+  /// (fitted_entry(), and for a branch's modulus or relaxation time the
+  /// lists Material/Branch shear moduli (kPa) and Branch relaxation times
+  /// (s) of every branch).
+  std::vector<ParameterChange> fitted_entries(const Scene &base,
+                                              const std::vector<SceneParameter> &free,
+                                              const std::vector<double>         &values);
 
   /// <Base name>_fit.h5 (layout in doc/optimization.md), replaced only once
   /// complete; @p curve_kV, @p curve_mm: the model along the data.

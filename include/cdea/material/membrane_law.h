@@ -113,6 +113,10 @@ namespace cdea
     std::string entry; ///< "Mooney-Rivlin C2 (kPa)"
     double      lower = -std::numeric_limits<double>::infinity();
     double      upper = std::numeric_limits<double>::infinity();
+    /// The law's value of a constant that is no number entry of its own (an
+    /// element of a list entry, such as a branch's modulus); NaN: the entry
+    /// holds it.
+    double value = std::numeric_limits<double>::quiet_NaN();
   };
 
   /// The limit of a law's range as messages name it ("the Gent limit") and

@@ -53,7 +53,9 @@
 
 #include <cdea/material/membrane_law.h>
 
+#include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace cdea
@@ -74,6 +76,17 @@ namespace cdea
   /// At most this many branches (the entries' check): 4 internal variables
   /// each at every quadrature point.
   constexpr unsigned int max_viscous_branches = 20;
+
+  /// The name of branch @p k's (from 1) modulus ("Branch 1 shear modulus
+  /// (Pa)") or relaxation time ("Branch 1 relaxation time (s)") as a law
+  /// constant (LawSettings::constants, a fit's free parameter).
+  std::string branch_constant_entry(unsigned int k, bool relaxation_time);
+
+  /// @p branches with the values of branch_constant_entry() that @p
+  /// constants holds (SI), each checked as the list entries are; InputError
+  /// for a branch beyond the list.
+  void set_branch_constants(const std::map<std::string, double> &constants,
+                            double network_a_shear_modulus, std::vector<ViscousNetwork> &branches);
 
   class TwoNetworkGentLaw final : public MembraneLaw
   {
@@ -104,6 +117,11 @@ namespace cdea
     bool parameter_derivative(const LawInput &input, const InternalStep &step,
                               LawParameter parameter, double &d_energy,
                               NominalStress &d_stress) const override;
+
+    /// The branches' moduli and relaxation times in the order [mu_1 (Pa),
+    /// tau_1 (s), mu_2, tau_2, ...]: own_constant(2 (k - 1)) is mu_k,
+    /// own_constant(2 (k - 1) + 1) tau_k (two_network_constants.cc).
+    std::vector<LawConstant> own_constants() const override;
 
     /// Network A's limit (spring B's depends on the viscous stretches).
     double max_hoop_stretch(double l1) const override;

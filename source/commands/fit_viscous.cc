@@ -1,0 +1,210 @@
+// The DMA and creep fits of `cdea fit` (commands/fit.cc hands them here by
+// the data file's header): each iteration printed, the fitted values with
+// their standard errors and correlations, the residuals, <Base name>_fit.h5
+// and <Base name>_fit.prm. Exit codes as the fit of displacement points.
+
+#include <cdea/base/format.h>
+#include <cdea/base/run_control.h>
+#include <cdea/commands/fit_viscous.h>
+#include <cdea/design/viscous_fit.h>
+#include <cdea/input/validation.h>
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+
+namespace cdea
+{
+  namespace
+  {
+    /// A parameter in the unit of the table (kPa for network A's modulus).
+    double shown(const SceneParameter &p, const double value)
+    {
+      return p.kind == ParameterKind::shear_modulus ? value * 1e-3 : value;
+    }
+
+    std::string shown_label(const SceneParameter &p)
+    {
+      return p.kind == ParameterKind::shear_modulus ? "shear modulus (kPa)" : label(p);
+    }
+
+    class ViscousFit final : public ViscousFitJob
+    {
+    public:
+      explicit ViscousFit(const FitDataKind kind)
+        : kind(kind)
+      {}
+
+      void check(Invocation &invocation) override
+      {
+        const Parameters  &p    = invocation.parameters;
+        const std::string &file = invocation.arguments.at(1);
+        settings                = viscous_fit_settings(p, kind);
+        std::size_t rows        = 0;
+        if (kind == FitDataKind::dma)
+          rows = 2 * (dma = read_dma_data(file)).size();
+        else
+          {
+            const Scene scene = p.scene();
+            creep = read_creep_data(file, scene.n_rings(), voltage_ceiling(scene));
+            require_waveform_match(p, creep, file);
+            rows = creep.size();
+          }
+        if (rows < settings.free.size())
+          throw InputError(file + ": " + std::to_string(rows) + " observations for " +
+                           std::to_string(settings.free.size()) +
+                           " free parameters (Calibration/Free parameters)");
+      }
+
+      int run(Invocation &invocation) override
+      {
+        const Parameters &p     = invocation.parameters;
+        const auto        start = std::chrono::steady_clock::now();
+        print_banner(invocation.arguments.at(1));
+        const auto progress = [&](unsigned int k, double cost, const std::vector<double> &v) {
+          std::cout << std::setw(5) << k << std::setw(16) << format_number(cost, 8);
+          for (std::size_t j = 0; j < v.size(); ++j)
+            std::cout << "  " << format_number(shown(settings.free[j], v[j]), 8);
+          std::cout << std::endl;
+        };
+        const FitResult r = kind == FitDataKind::dma ? fit_dma(p.scene(), dma, settings, progress) :
+                                                       fit_creep(p, creep, settings, progress);
+        if (!r.started)
+          {
+            invocation.output.give_up();
+            std::cerr << "cdea: " << r.status << " (nothing was written)\n";
+            return exit_input_error;
+          }
+        print_values(r);
+        print_residuals(r);
+        for (const auto &w : r.warnings)
+          std::cout << "WARNING: " << w << '\n';
+        std::cout << r.iterations << " iterations, " << r.evaluations << " evaluations, "
+                  << std::setprecision(3)
+                  << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+                  << " s\n";
+        return write_and_report(invocation, r);
+      }
+
+    private:
+      const FitDataKind kind;
+      FitSettings       settings;
+      DmaData           dma;
+      CreepData         creep;
+
+      void print_banner(const std::string &file) const
+      {
+        std::cout << "cdea " << CDEA_VERSION << " fit: "
+                  << (kind == FitDataKind::dma ? std::to_string(dma.size()) + " DMA rows" :
+                                                 std::to_string(creep.size()) + " creep samples")
+                  << " of " << file << "; free:";
+        for (const auto &f : settings.free)
+          std::cout << "  " << label(f);
+        std::cout << "\n" << std::setw(5) << "iter" << std::setw(16)
+                  << (kind == FitDataKind::dma ? "cost (kPa^2)" : "cost (mm^2)") << "  parameters\n";
+      }
+
+      void print_values(const FitResult &r) const
+      {
+        std::cout << "\n" << (r.converged ? "Converged" : "NOT converged") << ": " << r.status
+                  << "\n" << std::left << std::setw(30) << "parameter" << std::right
+                  << std::setw(16) << "start" << std::setw(16) << "fitted" << std::setw(16)
+                  << "std. error" << std::setw(10) << "rel." << '\n';
+        const std::size_t K = settings.free.size();
+        for (std::size_t j = 0; j < K; ++j)
+          {
+            const SceneParameter &f = settings.free[j];
+            const double          e = shown(f, r.standard_errors[j]), v = shown(f, r.values[j]);
+            std::cout << std::left << std::setw(30) << shown_label(f) << std::right
+                      << std::setw(16) << format_number(shown(f, r.initial[j]), 8)
+                      << std::setw(16) << format_number(v, 8) << std::setw(16)
+                      << format_number(e, 3) << std::setw(10) << format_number(e / std::abs(v), 2)
+                      << '\n';
+          }
+        if (K < 2)
+          return;
+        std::cout << "correlation:\n";
+        for (std::size_t i = 0; i < K; ++i)
+          {
+            std::cout << "  " << std::left << std::setw(28) << label(settings.free[i]) << std::right;
+            for (std::size_t j = 0; j < K; ++j)
+              std::cout << std::setw(9) << format_fixed(r.correlation(i, j), 4);
+            std::cout << '\n';
+          }
+      }
+
+      void print_residuals(const FitResult &r) const
+      {
+        if (r.fitted.size() == 0)
+          return;
+        const bool is_dma = kind == FitDataKind::dma;
+        std::cout << "residuals (model - measured):\n"
+                  << (is_dma ? "  frequency (Hz)   storage (kPa)      model   loss (kPa)      model\n" :
+                               "      time (s)   measured (mm)     model (mm)  residual (mm)\n");
+        const std::size_t M = is_dma ? dma.size() : creep.size();
+        for (std::size_t i = 0; i < M; ++i)
+          if (is_dma)
+            std::cout << std::setw(16) << format_number(dma.frequency[i], 4) << std::setw(16)
+                      << format_fixed(dma.storage[i] * 1e-3, 4) << std::setw(11)
+                      << format_fixed(r.fitted[Eigen::Index(2 * i)] * 1e-3, 4) << std::setw(13)
+                      << format_fixed(dma.loss[i] * 1e-3, 4) << std::setw(11)
+                      << format_fixed(r.fitted[Eigen::Index(2 * i + 1)] * 1e-3, 4) << '\n';
+          else
+            std::cout << std::setw(14) << format_number(creep.times[i], 6) << std::setw(16)
+                      << format_fixed(creep.displacement[i] * 1e3, 6) << std::setw(15)
+                      << format_fixed(r.fitted[Eigen::Index(i)] * 1e3, 6) << std::setw(15)
+                      << format_number(r.residuals[Eigen::Index(i)] * 1e3, 3) << '\n';
+        std::cout << "weighted rms residual "
+                  << (is_dma ? format_number(r.rms * 1e-3, 4) + " kPa" :
+                               format_number(r.rms * 1e3, 4) + " mm")
+                  << ", condition number of the scaled Jacobian " << format_number(r.condition, 3)
+                  << '\n';
+      }
+
+      int write_and_report(const Invocation &invocation, const FitResult &r) const
+      {
+        const Parameters  &p        = invocation.parameters;
+        const std::string &h5_path  = invocation.output.path;
+        const std::string  prm_path = p.output.directory + "/" + p.output.base_name + "_fit.prm";
+        try
+          {
+            if (kind == FitDataKind::dma)
+              write_dma_fit_file(h5_path, invocation.parameter_text, dma, settings, r);
+            else
+              write_creep_fit_file(h5_path, invocation.parameter_text, creep, settings, r);
+            if (r.fitted.size() > 0)
+              write_changed_parameters(invocation.input, prm_path,
+                                       fitted_entries(p.scene(), settings.free, r.values),
+                                       "# Written by cdea fit: the parameter file with the "
+                                       "fitted values.\n");
+          }
+        catch (const std::exception &e)
+          {
+            std::cerr << "cdea: the results cannot be written: " << e.what()
+                      << " (older files of this name stay as they were)\n";
+            return exit_not_complete;
+          }
+        std::cout << "wrote " << h5_path << (r.fitted.size() ? " and " + prm_path : "") << '\n';
+        if (const int signal = StopOnSignals::requested())
+          {
+            std::cerr << "cdea: interrupted by " << signal_name(signal)
+                      << "; the values reached are in " << h5_path << '\n';
+            return exit_not_complete;
+          }
+        if (!r.converged)
+          {
+            std::cerr << "cdea: the fit did not converge (" << r.status
+                      << "); the last values are in " << h5_path << '\n';
+            return exit_not_complete;
+          }
+        return exit_success;
+      }
+    };
+  } // namespace
+
+  std::unique_ptr<ViscousFitJob> viscous_fit_job(const FitDataKind kind)
+  {
+    return std::make_unique<ViscousFit>(kind);
+  }
+} // namespace cdea
