@@ -49,6 +49,9 @@ namespace cdea
         m << "; the residual has stalled near the tolerance, at the round-off level "
              "of this discretization: Solver/Residual tolerance may be below what it "
              "can reach";
+      else if (!settings.exact_tangent)
+        m << "; the material's tangent is inexact, so its Newton direction need not "
+             "decrease the residual";
       return m.str();
     }
   } // namespace

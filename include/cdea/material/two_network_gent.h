@@ -56,7 +56,8 @@
 // thinning). The local update then solves the exact stage residual (no longer
 // stationarity of a potential), and the tangent is the condensed one above
 // with eta held at the update's value: symmetric but inexact, so the global
-// Newton converges linearly (tangent_is_exact() false).
+// Newton converges linearly (tangent_is_exact() false); evaluate()'s energy
+// is then Psi with eta held, not a potential of the stress.
 
 #include <cdea/material/membrane_law.h>
 #include <cdea/material/viscosity.h>
