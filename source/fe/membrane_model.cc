@@ -192,6 +192,7 @@ namespace cdea
     NewtonSettings settings = impl->newton_settings;
     settings.residual_scale = impl->residual_scale();
     settings.update_scale   = impl->scene.disk_radius;
+    settings.exact_tangent  = impl->membrane.law().tangent_is_exact();
     LineSearchNewton newton(settings);
     SolveReport      report = newton.solve(*impl, impl->solution);
     // Newton's last evaluation was at the converged state: a term may reject

@@ -128,11 +128,13 @@ namespace cdea
 
   TwoNetworkGentLaw::TwoNetworkGentLaw(const MaterialConstants    &network_a,
                                        std::vector<ViscousNetwork> branches,
-                                       std::vector<SpringLaw>      springs)
+                                       std::vector<SpringLaw>      springs,
+                                       ShearThinning               thinning)
     : MembraneLaw(branch_variables(branches.size()))
     , a(network_a)
     , b(std::move(branches))
     , spring(springs_of(b, std::move(springs), network_a))
+    , thinning(thinning)
   {}
 
   namespace
@@ -140,25 +142,42 @@ namespace cdea
     /// The viscous log-strains e at the end of a step dt > 0 from e0 (and the
     /// rate q0 for the trapezoidal rule): G(e) = c M^-1 (e - e0) - f + W_e =
     /// 0, c = 1/dt (backward Euler) or 2/dt (trapezoidal, with f = M^-1 q0);
-    /// H = c M^-1 + W_ee. Newton from @p e with step halving while outside
-    /// the spring's range, until the update is below 1e-13 (then e and the
-    /// spring there, @p w, with its energy if @p with_energy, are kept).
+    /// H = c M^-1 + W_ee, M of the viscosity @p eta (eta_0 = mu tau, or with
+    /// @p thinning its value at e, and H the exact unsymmetric dG/de of
+    /// branch_residual()). Newton from @p e with step halving while outside
+    /// the spring's range, until the update is below 1e-13 (then e, eta and
+    /// the spring there, @p w, with its energy if @p with_energy, are kept).
     /// False if it fails.
-    bool update_viscous_strain(const MembraneLaw &spring, const LawInput &in,
-                               const InternalStep &step, const Matrix2 &M_inv,
-                               const Vector2 &e0, const Vector2 &q0, const bool with_energy,
-                               Vector2 &e, SpringB &w)
+    bool update_viscous_strain(const MembraneLaw &spring, const ShearThinning &thinning,
+                               const LawInput &in, const InternalStep &step, const Vector2 &e0,
+                               const Vector2 &q0, const bool with_energy, Vector2 &e, SpringB &w,
+                               double &eta)
     {
       const bool    trapezoidal = step.scheme == TimeScheme::trapezoidal;
       const double  c           = (trapezoidal ? 2. : 1.) / step.dt;
+      const double  eta0        = eta;
+      const Matrix2 M_inv       = mobility_inverse(eta0);
       const Vector2 f           = trapezoidal ? Vector2(M_inv * q0) : Vector2::Zero();
       if (!w.evaluate(spring, in.l1, in.l2, e, with_energy))
         return false;
       for (unsigned int it = 0; it < 60; ++it)
         {
-          const Vector2 G  = c * M_inv * (e - e0) - f + w.W_e;
-          const Matrix2 H  = c * M_inv + w.W_ee;
-          Vector2       de = -solve(H, G);
+          Vector2 G;
+          Matrix2 H;
+          if (thinning.enabled)
+            {
+              const BranchResidual r = branch_residual(
+                thinning, eta0, c, e, e0, trapezoidal ? q0 : Vector2::Zero(), w.W_e, w.W_ee);
+              G   = r.G;
+              H   = r.jacobian;
+              eta = r.eta;
+            }
+          else
+            {
+              G = c * M_inv * (e - e0) - f + w.W_e;
+              H = c * M_inv + w.W_ee;
+            }
+          Vector2 de = -solve(H, G);
           if (!de.allFinite())
             return false;
           // e is within |de| of the root: keep it and its spring.
@@ -228,10 +247,11 @@ namespace cdea
   {
     /// Branch @p n of network B over @p step (its four stored numbers at
     /// step.old and step.current), added to @p out; false if its update fails.
-    bool add_branch(const ViscousNetwork &n, const MembraneLaw &spring, const LawInput &in,
-                    const InternalStep &step, const unsigned int request, LawResponse &out)
+    bool add_branch(const ViscousNetwork &n, const MembraneLaw &spring,
+                    const ShearThinning &thinning, const LawInput &in, const InternalStep &step,
+                    const unsigned int request, LawResponse &out)
     {
-      const double  eta = n.shear_modulus * n.relaxation_time;
+      double        eta = n.shear_modulus * n.relaxation_time;
       const Vector2 e0(std::log(step.old[0]), std::log(step.old[1]));
       const Vector2 q0(step.old[2], step.old[3]);
       // Start from the last update at this point (the previous Newton iterate
@@ -243,12 +263,14 @@ namespace cdea
       SpringB w;
       if (step.dt > 0.)
         {
-          if (!update_viscous_strain(spring, in, step, mobility_inverse(eta), e0, q0,
-                                     request & law_energy, e, w))
+          if (!update_viscous_strain(spring, thinning, in, step, e0, q0, request & law_energy, e,
+                                     w, eta))
             return false;
         }
       else if (!w.evaluate(spring, in.l1, in.l2, e, request & law_energy))
         return false;
+      else if (thinning.enabled)
+        eta *= thinning.factor(e, -w.W_e);
       add_network_b(w, e, e0, q0, step, mobility(eta), mobility_inverse(eta),
                     request & law_tangent, out);
       return true;
@@ -278,7 +300,7 @@ namespace cdea
     for (std::size_t k = 0; k < b.size(); ++k)
       {
         const InternalStep branch{step.old + 4 * k, step.current + 4 * k, step.dt, step.scheme};
-        if (!add_branch(b[k], *spring[k], in, branch, request, out))
+        if (!add_branch(b[k], *spring[k], thinning, in, branch, request, out))
           return false;
       }
     return true;
@@ -305,7 +327,12 @@ namespace cdea
       {
         const double *o = step.old + 4 * k, *c = step.current + 4 * k;
         const Vector2 de(std::log(c[0] / o[0]), std::log(c[1] / o[1]));
-        sum += de.dot(mobility_inverse(b[k].shear_modulus * b[k].relaxation_time) * de) / step.dt;
+        if (!thinning.enabled)
+          sum += de.dot(mobility_inverse(b[k].shear_modulus * b[k].relaxation_time) * de) / step.dt;
+        else if (step.scheme == TimeScheme::trapezoidal) // the mean of the end powers
+          sum += 0.5 * step.dt * (branch_power(k, o) + branch_power(k, c));
+        else // backward Euler: de / dt is the end rate
+          sum += branch_power(k, c) * step.dt;
       }
     return sum;
   }
@@ -335,11 +362,19 @@ namespace cdea
   {
     double sum = 0.;
     for (std::size_t k = 0; k < b.size(); ++k)
-      {
-        const Vector2 q(stored[4 * k + 2], stored[4 * k + 3]);
-        sum += q.dot(mobility_inverse(b[k].shear_modulus * b[k].relaxation_time) * q);
-      }
+      sum += branch_power(k, stored + 4 * k);
     return sum;
+  }
+
+  // q^T M^-1 q with eta = eta_0 phi, phi the one consistent with the rate q
+  // (ShearThinning::factor_at_rate()).
+  double TwoNetworkGentLaw::branch_power(const std::size_t k, const double *stored) const
+  {
+    const Vector2 q(stored[2], stored[3]);
+    double        eta = b[k].shear_modulus * b[k].relaxation_time;
+    if (thinning.enabled)
+      eta *= thinning.factor_at_rate(Vector2(std::log(stored[0]), std::log(stored[1])), q, eta);
+    return q.dot(mobility_inverse(eta) * q);
   }
 
   // Branch k's evolving variables are y[2k], y[2k + 1]: its 2 x 2 blocks of
@@ -365,8 +400,20 @@ namespace cdea
         t.s11 += w.W_ll(0, 0);
         t.s12 += 0.5 * (w.W_ll(0, 1) + w.W_ll(1, 0));
         t.s22 += w.W_ll(1, 1);
-        const Matrix2 M      = mobility(b[k].shear_modulus * b[k].relaxation_time);
-        const Matrix2 rate_y = -M * w.W_ee, rate_l = -M * w.W_le.transpose();
+        const double eta0 = b[k].shear_modulus * b[k].relaxation_time;
+        const Vector2 e(std::log(stored[4 * k]), std::log(stored[4 * k + 1]));
+        Vector2       phi_e, phi_s;
+        const double  phi = thinning.enabled ? thinning.factor(e, -w.W_e, &phi_e, &phi_s) : 1.;
+        const Matrix2 M   = mobility(eta0 * phi);
+        Matrix2       rate_y = -M * w.W_ee, rate_l = -M * w.W_le.transpose();
+        if (thinning.enabled)
+          {
+            // q = -M W_e with M ~ 1/eta: dq = -M dW_e - q d(eta) / eta, with
+            // d(phi)/de = phi_e - W_ee phi_s and d(phi)/dl = -W_le phi_s (s = -W_e).
+            const Vector2 q = -M * w.W_e;
+            rate_y -= q * (phi_e - w.W_ee * phi_s).transpose() / phi;
+            rate_l += q * (w.W_le * phi_s).transpose() / phi;
+          }
         for (unsigned int i = 0; i < 2; ++i)
           for (unsigned int j = 0; j < 2; ++j)
             {
@@ -403,6 +450,7 @@ namespace cdea
                      "spring): a Material/Model value without internal variables ('elastic' "
                      "is Gent), with Shear modulus mu_k, Jlim Jlim_k and the law's other "
                      "constants from subsection Material.");
+    ShearThinning::declare_parameters(prm);
   }
 
   namespace
@@ -517,7 +565,7 @@ namespace cdea
     set_branch_constants(settings.constants, settings.material.shear_modulus, branches);
     std::vector<SpringLaw> springs = make_springs(settings, branches);
     return std::make_shared<TwoNetworkGentLaw>(settings.material, std::move(branches),
-                                               std::move(springs));
+                                               std::move(springs), ShearThinning::parse(settings));
   }
 
   CDEA_REGISTER_MEMBRANE_LAW(TwoNetworkGentLaw, "viscoelastic",

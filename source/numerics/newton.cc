@@ -49,6 +49,9 @@ namespace cdea
         m << "; the residual has stalled near the tolerance, at the round-off level "
              "of this discretization: Solver/Residual tolerance may be below what it "
              "can reach";
+      else if (!settings.exact_tangent)
+        m << "; the material's tangent is inexact, so its Newton direction need not "
+             "decrease the residual";
       return m.str();
     }
   } // namespace
@@ -103,10 +106,11 @@ namespace cdea
             report.converged = true;
             return report;
           }
-        // Near the solution the error left after a full update u is O(u^2):
+        // Near the solution the error left after a full update u is O(u^2)
+        // (with an exact tangent; an inexact one leaves O(u)):
         // an update below 1e-2 sqrt(update tolerance) already leaves an error
         // far below the tolerance, so another iteration is not needed.
-        if (res < settings.residual_tolerance && alpha == 1. &&
+        if (settings.exact_tangent && res < settings.residual_tolerance && alpha == 1. &&
             upd < std::sqrt(settings.update_tolerance) * 1e-2)
           {
             report.converged = true;
@@ -124,6 +128,9 @@ namespace cdea
     std::ostringstream m;
     m << "Newton did not converge in " << settings.max_iterations
       << " iterations (scaled residual " << res << ")";
+    if (!settings.exact_tangent)
+      m << "; the material's tangent is inexact (Newton converges linearly), so "
+           "Solver/Max Newton iterations may need raising";
     report.message = m.str();
     return report;
   }

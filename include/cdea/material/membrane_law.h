@@ -215,6 +215,10 @@ namespace cdea
     /// law without a limit).
     virtual double max_hoop_stretch(double l1) const = 0;
 
+    /// Whether evaluate()'s tangent is the exact derivative of its stress
+    /// (false: an approximation, with which Newton converges linearly).
+    virtual bool tangent_is_exact() const { return true; }
+
     /// Whether the shooting model and the design studies (sweep, optimize,
     /// fit) can use the law: it is elastic, states its range below and gives
     /// parameter_derivative() for every constant it depends on. A law that

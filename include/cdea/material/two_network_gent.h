@@ -50,8 +50,17 @@
 // the film's Gent law, network B's constants are entries of subsection
 // Material that the law declares itself (one branch, or the lists of
 // "Branch shear moduli (kPa)" etc.).
+//
+// Optionally every dashpot's viscosity thins with the branch's stress and
+// stiffens with its viscous stretch (viscosity.h, Material/Viscosity = shear
+// thinning). The local update then solves the exact stage residual (no longer
+// stationarity of a potential), and the tangent is the condensed one above
+// with eta held at the update's value: symmetric but inexact, so the global
+// Newton converges linearly (tangent_is_exact() false); evaluate()'s energy
+// is then Psi with eta held, not a potential of the stress.
 
 #include <cdea/material/membrane_law.h>
+#include <cdea/material/viscosity.h>
 
 #include <map>
 #include <memory>
@@ -96,7 +105,7 @@ namespace cdea
     /// Network B as @p branches in parallel (at least one), with @p springs
     /// (one per branch; empty: the Gent law of each branch's mu and Jlim).
     TwoNetworkGentLaw(const MaterialConstants &network_a, std::vector<ViscousNetwork> branches,
-                      std::vector<SpringLaw> springs = {});
+                      std::vector<SpringLaw> springs = {}, ShearThinning thinning = {});
 
     /// Network B's entries of subsection Material: "Network B shear modulus
     /// (kPa)", "Network B Jlim", "Relaxation time (s)" (one branch), or the
@@ -125,6 +134,9 @@ namespace cdea
 
     /// Network A's limit (spring B's depends on the viscous stretches).
     double max_hoop_stretch(double l1) const override;
+
+    /// False with a shear-thinning viscosity (the tangent holds eta fixed).
+    bool tangent_is_exact() const override { return !thinning.enabled; }
 
     /// (e - e0)^T M^-1 (e - e0) / dt: the dashpot's work over a step of
     /// either scheme (exact rate times dt for backward Euler, the mean of the
@@ -157,8 +169,12 @@ namespace cdea
     unsigned int n_branches() const { return static_cast<unsigned int>(b.size()); }
 
   private:
+    /// Branch @p k's dashpot power q^T M^-1 q at its four @p stored numbers.
+    double branch_power(std::size_t k, const double *stored) const;
+
     MaterialConstants           a;
     std::vector<ViscousNetwork> b;
     std::vector<SpringLaw>      spring; ///< of each branch
+    ShearThinning               thinning;
   };
 } // namespace cdea

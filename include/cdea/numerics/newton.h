@@ -39,6 +39,11 @@ namespace cdea
     /// layout of tests/optimize_run.sh, whose test expects none), a change
     /// of results to be decided on.
     bool         converge_at_round_off = false;
+    /// The tangent is the residual's exact derivative (quadratic
+    /// convergence): a small full update then ends the iteration early.
+    /// False for an inexact tangent (linear convergence), where only the
+    /// update tolerance does.
+    bool         exact_tangent      = true;
     double       residual_scale     = 1.; ///< force scale of the residual
     double       update_scale       = 1.; ///< length scale of the unknowns
   };
