@@ -200,6 +200,11 @@ namespace cdea
       if (!(peak > 0.) &&
           std::find(parameters.begin(), parameters.end(), LawParameter::voltage) != parameters.end())
         return fail(message, "the voltage as a parameter needs a waveform with a peak above 0 V");
+      // The sensitivity systems use the stage's tangent, which must be exact
+      // (the shear-thinning viscosity's holds eta fixed).
+      if (!parameters.empty() && !model->material_law().tangent_is_exact())
+        return fail(message, "the sensitivities through time need the material's exact tangent; "
+                             "with Material/Viscosity = shear thinning it is not (set it to newtonian to fit)");
       // No parameters: the run alone, with the same steps.
       if (!parameters.empty())
         sensitivity = std::make_unique<TimeSensitivity>(*model, parameters,
