@@ -8,7 +8,8 @@
 # on SIGINT and of fit on SIGHUP (exit 2, the results so far readable, no
 # lock left).
 source "$(dirname "$0")/script_helpers.bash"
-pymodule="$(dirname "$exe")/python"
+source "$(dirname "$0")/cdea_forks.bash"
+pymodule="$(dirname "$real_exe")/python"
 
 # --- overrides --------------------------------------------------------------
 "$exe" run "$src/prm/default.prm" --set 'Loading/Mass (g)=250' --set 'Output/Directory = set' \
