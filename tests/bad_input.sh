@@ -2,6 +2,7 @@
 # Every kind of bad input: one clear message on stderr that names the parameter
 # (or file), a non-zero exit, and no results file created.
 source "$(dirname "$0")/script_helpers.bash"
+source "$(dirname "$0")/cdea_forks.bash"
 
 # case NAME "sed expression on prm/default.prm" "text the message must contain"
 case_() {

@@ -7,8 +7,10 @@
 # postprocess/plot_chart.py with measurements laid on the charts.
 source "$(dirname "$0")/script_helpers.bash"
 source "$(dirname "$0")/python_forks.bash"
+source "$(dirname "$0")/cdea_forks.bash"
 
-"$exe" chart "$src/prm/pump-time.prm" --set 'Output/Directory=out' > visco.txt 2> visco_err.txt
+# (the real executable once: the start of `cdea chart` itself; tests/cdea_forks.bash)
+"$real_exe" chart "$src/prm/pump-time.prm" --set 'Output/Directory=out' > visco.txt 2> visco_err.txt
 rc=$?
 [ $rc -eq 0 ] && [ -s out/pump-time_chart.h5 ] && ok "chart of the viscoelastic film: exit 0, file written" \
   || { fail "exit $rc"; cat visco_err.txt; }

@@ -8,7 +8,9 @@
 # on SIGINT and of fit on SIGHUP (exit 2, the results so far readable, no
 # lock left).
 source "$(dirname "$0")/script_helpers.bash"
-pymodule="$(dirname "$exe")/python"
+source "$(dirname "$0")/python_forks.bash"
+source "$(dirname "$0")/cdea_forks.bash"
+pymodule="$(dirname "$real_exe")/python"
 
 # --- overrides --------------------------------------------------------------
 "$exe" run "$src/prm/default.prm" --set 'Loading/Mass (g)=250' --set 'Output/Directory = set' \
@@ -107,7 +109,8 @@ wait_for() { for _ in $(seq 1200); do grep -q "$1" "$2" 2> /dev/null && return 0
 no_lock() { [ -z "$(find "$1" -name '*.lock' 2> /dev/null)" ]; }
 # A background job of a script starts with SIGINT ignored (and cdea keeps an
 # ignored signal ignored, as under nohup): start it with the default action.
-with_sigint() { exec "$PYTHON" -c 'import os, signal, sys
+# (the interpreter itself: the job's pid must be the process that execs)
+with_sigint() { exec /usr/bin/python3 -c 'import os, signal, sys
 signal.signal(signal.SIGINT, signal.SIG_DFL)
 os.execv(sys.argv[1], sys.argv[1:])' "$@"; }
 

@@ -36,11 +36,13 @@ scripts/, doc/ copied or linked; build/ linked, with build/cdea a wrapper
 that adds the quick overrides), so `results/` starts empty, as in a fresh
 clone.
 
-In the quick mode `/usr/bin/python3` in a block is a shell function that
+In the quick mode `build/cdea` runs in a fork of one loaded cdea program
+(tests/cdea_forks.bash: the fork server and its client; under mpirun the
+executable itself), and `/usr/bin/python3` in a block is a shell function that
 hands the script to a Python process which has numpy, h5py, matplotlib and
 the module cdea loaded already and forks for each script (the same
 interpreter and modules, without their second of start-up each time); the
-full mode starts the interpreter every time, as typed.
+full mode starts the executable and the interpreter every time, as typed.
 
 Usage: doc_commands.py SOURCE_DIR BUILD_DIR [--full] [--keep] [DOC.md ...]
 (default: every document; --full: every block at its full size, and a
@@ -156,19 +158,27 @@ def scratch_copy(src, build, work):
     wrapper = os.path.join(work, "build", "cdea")
     with open(wrapper, "w") as f:
         f.write(f"""#!/bin/bash
-# doc test: cdea with the quick overrides of the block (CDEA_DOC_SET, one a line)
+# doc test: cdea with the quick overrides of the block (CDEA_DOC_SET, one a line),
+# in the quick mode through the fork server (CDEA_FORK_SOCKET; tests/cdea_forks.bash)
+cdea={shlex.quote(os.path.join(build, 'cdea'))}
+[ -n "${{CDEA_FORK_SOCKET:-}}" ] && cdea={shlex.quote(fork_program(build, 'client'))}
 case "$1" in
   run|shoot|compare|sweep|optimize|fit)
     extra=()
     while IFS= read -r item; do [ -n "$item" ] && extra+=(--set "$item"); done <<< "$CDEA_DOC_SET"
-    exec {shlex.quote(os.path.join(build, 'cdea'))} "$@" "${{extra[@]}}" ;;
+    exec "$cdea" "$@" "${{extra[@]}}" ;;
 esac
-exec {shlex.quote(os.path.join(build, 'cdea'))} "$@"
+exec "$cdea" "$@"
 """)
     os.chmod(wrapper, 0o755)
 
 
 PYTHON = "/usr/bin/python3"
+
+
+def fork_program(build, which):
+    """The cdea fork server or client (tests/cdea_fork_server.cc)."""
+    return os.path.join(build, "tests", "cdea_fork_" + which)
 
 
 def python_server(path, build):
@@ -252,8 +262,8 @@ def shell_python(work):
             f"{shlex.quote(client)} \"$@\"; else command {PYTHON}; fi; }}\n")
 
 
-def run_sh(block, work, full, server=None):
-    env = dict(os.environ)
+def run_sh(block, work, full, server=None, cdea_forks=None):
+    env = dict(os.environ, **(cdea_forks or {}))
     if server:
         env["DOC_TEST_PYTHON"] = server
     env["CDEA_DOC_SET"] = "" if full else "\n".join(block.quick)
@@ -379,11 +389,30 @@ def start_server(build, work, blocks):
     return server, path
 
 
+def start_cdea_server(build, work, blocks):
+    """The cdea fork server of the quick mode, if a block runs (the full
+    mode runs the executable itself): its process and what the wrapper
+    build/cdea and the client need in their environment."""
+    if not any(b.kind == "sh" and not b.never and not b.by_hand for b in blocks):
+        return None, None
+    path = os.path.join(os.path.dirname(work), "cdea.socket")
+    server = subprocess.Popen([fork_program(build, "server"), path], stdout=subprocess.DEVNULL)
+    for _ in range(1200):
+        if os.path.exists(path) or server.poll() is not None:
+            break
+        time.sleep(0.05)
+    if not os.path.exists(path):
+        sys.exit("the cdea fork server did not start")
+    return server, {"CDEA_FORK_SOCKET": path,
+                    "CDEA_FORK_EXECUTABLE": os.path.join(build, "cdea")}
+
+
 def run_document(src, build, name, full, keep):
     blocks, lines = parse(os.path.join(src, name), name)
     work = os.path.join(tempfile.mkdtemp(prefix="cdea-doc-"), "repo")
     scratch_copy(src, build, work)
     server, socket_path = (None, None) if full else start_server(build, work, blocks)
+    cdea_server, cdea_forks = (None, None) if full else start_cdea_server(build, work, blocks)
     failures = 0
     for b in blocks:
         start = time.time()
@@ -394,7 +423,7 @@ def run_document(src, build, name, full, keep):
             rc, out = run_pycon(b, work)
             label = "pycon"
         else:
-            rc, out = run_sh(b, work, full, socket_path)
+            rc, out = run_sh(b, work, full, socket_path, cdea_forks)
             label = "quick" if b.quick and not full else "as written"
         problems = [] if rc == 0 else [f"{b.where()}: a command failed (see the status lines "
                                        "at the end of the output)" if b.kind == "sh" and
@@ -413,6 +442,9 @@ def run_document(src, build, name, full, keep):
     if server:
         server.kill()
         server.wait()
+    if cdea_server:
+        cdea_server.terminate()  # it waits for its forks: their CPU time counts here
+        cdea_server.wait()
     if keep:
         print(f"     scratch copy: {work}")
     else:

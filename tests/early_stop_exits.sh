@@ -7,6 +7,7 @@
 # load parameter cannot advance" (a step that cannot change t is an error,
 # not a loop).
 source "$(dirname "$0")/script_helpers.bash"
+source "$(dirname "$0")/cdea_forks.bash"
 
 # arc NAME "extra Solver lines" [MASS]
 arc() {

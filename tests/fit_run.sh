@@ -7,6 +7,7 @@
 # bad data exit 1 with one message naming file, line and column, and write
 # nothing; so do a time run and the viscoelastic law, naming the parameter.
 source "$(dirname "$0")/script_helpers.bash"
+source "$(dirname "$0")/cdea_forks.bash"
 
 sed 's/set Directory           = results/set Directory = out/' "$src/prm/fit-example.prm" > fit.prm
 cp "$src/prm/fit-example.csv" data.csv

@@ -6,6 +6,7 @@
 # and the steady states themselves are tested in-process by
 # tests/test_steady_state.cc.)
 source "$(dirname "$0")/script_helpers.bash"
+source "$(dirname "$0")/cdea_forks.bash"
 
 # case NAME "text the message must contain" --set ...
 case_() {

@@ -5,6 +5,7 @@
 # and sweep; step table columns apart for t >= 1000; a sweep none of whose
 # layouts reaches the inner voltage exits 2 and says so.
 source "$(dirname "$0")/script_helpers.bash"
+source "$(dirname "$0")/cdea_forks.bash"
 
 # bad NAME "sed expression on prm/default.prm" "text the message must contain" [PRM]
 # (with PRM, that file with the edit instead of prm/default.prm)

@@ -11,7 +11,11 @@ After every kill, with older complete results at the same path:
             is left.
 A run that ended before its signal must have exit code 0 and a complete file;
 one killed after writing its file whole (while shutting down) a complete file.
-Usage: kill_runs.py CDEA_EXECUTABLE SOURCE_DIR [KILLS] [SEED]
+Usage: kill_runs.py CDEA_EXECUTABLE SOURCE_DIR [KILLS] [SEED] [HELPER]
+(HELPER: what runs the short run that makes the older results and `cdea
+recover`, by default CDEA_EXECUTABLE; tests/kill_runs.sh gives the fork
+client of tests/cdea_forks.bash. The killed runs are always the executable
+itself: SIGKILL reaches only a real process.)
 """
 import hashlib
 import os
@@ -30,6 +34,7 @@ import numpy as np
 exe, src = sys.argv[1], sys.argv[2]
 kills = int(sys.argv[3]) if len(sys.argv) > 3 else 32
 seed = int(sys.argv[4]) if len(sys.argv) > 4 else 20251123
+helper = sys.argv[5] if len(sys.argv) > 5 else exe
 rng = random.Random(seed)
 work = tempfile.mkdtemp(prefix="cdea-kill-")
 os.chdir(work)
@@ -100,7 +105,7 @@ def fail(what):
 prm("short.prm", 0.25)
 prm("long.prm", 0.003)
 target = "out/long.h5"
-if subprocess.run([exe, "run", "short.prm"], stdout=subprocess.DEVNULL).returncode != 0:
+if subprocess.run([helper, "run", "short.prm"], stdout=subprocess.DEVNULL).returncode != 0:
     sys.exit("the short run failed")
 shutil.copy(target, "older.h5")
 older = sha(target)
@@ -165,7 +170,7 @@ for trial in range(kills):
             else:
                 outcome += f", checkpoint {n} steps"
         if os.path.exists(target + ".journal"):
-            r = subprocess.run([exe, "recover", target], capture_output=True, text=True)
+            r = subprocess.run([helper, "recover", target], capture_output=True, text=True)
             m = re.search(r"are in (\S+)", r.stdout)
             if r.returncode != 0 or not m:
                 fail(tag + f": cdea recover failed: {r.stdout} {r.stderr}")

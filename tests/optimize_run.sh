@@ -12,6 +12,7 @@
 # layout so far (exit 2).
 source "$(dirname "$0")/script_helpers.bash"
 source "$(dirname "$0")/python_forks.bash"
+source "$(dirname "$0")/cdea_forks.bash"
 
 cat > paper.prm <<'EOF'
 subsection Optimization
@@ -122,7 +123,8 @@ if command -v mpirun > /dev/null; then
   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
   export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_btl_vader_single_copy_mechanism=none
   sed 's/Directory = out/Directory = parallel/' paper.prm > parallel.prm
-  timeout 300 mpirun --oversubscribe -np 2 "$exe" optimize parallel.prm > par.txt 2> par_err.txt
+  # (mpirun starts the real executable on each rank)
+  timeout 300 mpirun --oversubscribe -np 2 "$real_exe" optimize parallel.prm > par.txt 2> par_err.txt
   rc=$?
   [ $rc -eq 0 ] && ok "mpirun -np 2 exits 0" || { fail "mpirun exit $rc"; cat par_err.txt; }
   [ "$(grep -c 'Optimum (start' par.txt)" = 1 ] && ok "one summary (rank 0)" || fail "summaries: $(grep -c 'Optimum' par.txt)"

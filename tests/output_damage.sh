@@ -6,6 +6,7 @@
 source "$(dirname "$0")/script_helpers.bash"
 source "$(dirname "$0")/long_runs.bash"
 source "$(dirname "$0")/python_forks.bash"
+source "$(dirname "$0")/cdea_forks.bash"
 
 prm long.prm 0.003
 prm other.prm 0.003 281
@@ -28,7 +29,8 @@ with open(sys.argv[1], 'r+b') as f:
 
 # 1. A killed run leaves a journal and a checkpoint; then the journal is damaged.
 rm -rf out
-CDEA_CHECKPOINT_SECONDS=0.2 "$exe" run verylong.prm > k.out 2> k.err & pid=$!
+# (the real executable: SIGKILL, which a fork client cannot forward)
+CDEA_CHECKPOINT_SECONDS=0.2 "$real_exe" run verylong.prm > k.out 2> k.err & pid=$!
 wait_for_steps k.out 1500; kill -KILL $pid; bounded_wait $pid 2> /dev/null
 printed=$(steps_printed k.out)
 [ -e out/long.h5.journal ] && [ -e out/long.partial.h5 ] || fail "kill left $(ls out)"

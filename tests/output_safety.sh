@@ -5,6 +5,7 @@
 source "$(dirname "$0")/script_helpers.bash"
 source "$(dirname "$0")/long_runs.bash"
 source "$(dirname "$0")/python_forks.bash"
+source "$(dirname "$0")/cdea_forks.bash"
 
 prm short.prm 0.25
 prm long.prm 0.003
@@ -28,7 +29,8 @@ PY
 }
 
 # 1. A second run onto the same file fails at once; the first goes on.
-( with_sigint "$exe" run verylong.prm ) > a.out 2> a.err &
+# (the real executable: its pid is the one the lock file names)
+( with_sigint "$real_exe" run verylong.prm ) > a.out 2> a.err &
 first=$!
 wait_for_steps a.out 5
 start=$(date +%s.%N)
@@ -66,7 +68,8 @@ else fail "two runs started together: exits $r1 and $r2: $(cat c1.err c2.err)"; 
 rm -rf out
 "$exe" run short.prm > /dev/null 2>&1
 old=$(sha256sum < out/long.h5)
-"$exe" run other.prm > k.out 2> k.err & pid=$!
+# (the real executable: SIGKILL, which a fork client cannot forward)
+"$real_exe" run other.prm > k.out 2> k.err & pid=$!
 wait_for_steps k.out 3; kill -KILL $pid; bounded_wait $pid 2> /dev/null
 [ "$(sha256sum < out/long.h5)" = "$old" ] && [ -e out/long.h5.journal ] \
   && ok "re-run killed after $(steps_printed k.out) steps: older file unchanged, journal kept" \

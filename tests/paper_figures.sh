@@ -10,6 +10,8 @@
 # 42.1 mm, doc/pump.md). Also: bad --only, a bad CSV and a CSV naming a figure
 # no points are drawn on give exit 1 and a message, and write nothing.
 source "$(dirname "$0")/script_helpers.bash"
+source "$(dirname "$0")/python_forks.bash"
+source "$(dirname "$0")/cdea_forks.bash"
 
 script="$src/postprocess/paper_figures.py"
 if "$PYTHON" "$script" --quick --cdea "$exe" --work "$work/runs" --out "$work/figs" \

@@ -3,18 +3,12 @@
 # cdea::ResultsFile (written here with h5py): the three PNGs must exist and be
 # non-empty, for one and for two rings and both z sign conventions; a missing
 # file and a file without /summary must give a non-zero exit and a message.
-# Needs CDEA_SOURCE_DIR; python3 with h5py, numpy and matplotlib.
-
-set -u
-PYTHON=${PYTHON:-/usr/bin/python3}
-SOURCE_DIR=${CDEA_SOURCE_DIR:?CDEA_SOURCE_DIR is not set}
-SCRIPT="$SOURCE_DIR/postprocess/plot_run.py"
-TMP=$(mktemp -d "${TMPDIR:-/tmp}/cdea_plot_run.XXXXXX") || exit 1
-trap 'rm -rf "$TMP"' EXIT
-
-failures=0
-fail() { echo "FAIL $*"; failures=$((failures + 1)); }
-ok() { echo "ok   $*"; }
+# Needs CDEA_SOURCE_DIR; python3 with h5py, numpy and matplotlib, whose
+# calls fork from one loaded interpreter (tests/python_forks.bash).
+source "$(dirname "$0")/script_helpers.bash"
+source "$(dirname "$0")/python_forks.bash"
+SCRIPT="$src/postprocess/plot_run.py"
+TMP=$work
 
 if ! "$PYTHON" -c "import h5py, numpy, matplotlib" 2>/dev/null; then
   echo "FAIL python3 lacks h5py, numpy or matplotlib"

@@ -8,6 +8,7 @@
 # ring's voltage, or against t where the path holds the outer voltage.
 source "$(dirname "$0")/script_helpers.bash"
 source "$(dirname "$0")/python_forks.bash"
+source "$(dirname "$0")/cdea_forks.bash"
 
 for prm in default fold-full relaxed-full partitioned-rv1.7; do
   "$exe" run "$src/prm/$prm.prm" > "$prm.out" 2>&1

@@ -8,6 +8,7 @@
 # postprocess/plot_pump.py plots it.
 source "$(dirname "$0")/script_helpers.bash"
 source "$(dirname "$0")/python_forks.bash"
+source "$(dirname "$0")/cdea_forks.bash"
 
 # case NAME COMMAND "sed expression on prm/pump.prm" "text the message must contain"
 case_() {

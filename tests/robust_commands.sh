@@ -6,6 +6,7 @@
 # stdout (exit 2), `cdea recover` on a FIFO, a device, a directory, a live
 # journal, a journal appended to itself and a checkpoint without a journal.
 source "$(dirname "$0")/script_helpers.bash"
+source "$(dirname "$0")/cdea_forks.bash"
 cp -r "$src/prm" prm
 
 expect() { # label expected-exit pattern command...
@@ -102,7 +103,8 @@ mkdir rec/c.h5.journal
 expect "recover: a directory as journal" 1 "the journal rec/c.h5.journal is not a regular file (a directory)" \
   "$exe" recover rec/c.h5
 sed 's/set Directory           = results/set Directory = kill/' prm/default.prm > long.prm
-CDEA_CHECKPOINT_SECONDS=0 "$exe" run long.prm --set 'Solver/Voltage increment (kV)=0.0005' > /dev/null 2>&1 &
+# (the real executable: SIGKILL below; tests/cdea_forks.bash)
+CDEA_CHECKPOINT_SECONDS=0 "$real_exe" run long.prm --set 'Solver/Voltage increment (kV)=0.0005' > /dev/null 2>&1 &
 pid=$!
 for i in $(seq 100); do [ -s kill/default.partial.h5 ] && break; sleep 0.05; done
 rm -f kill/default.h5.lock  # the journal's own flock still marks it live

@@ -5,6 +5,7 @@
 # it, whose DMA table is the Prony series of the three branches to 1e-10; and
 # a bad list refused with exit 1 naming the entry.
 source "$(dirname "$0")/script_helpers.bash"
+source "$(dirname "$0")/cdea_forks.bash"
 
 "$exe" run "$src/prm/spectrum.prm" --set 'Time/Cycles=1' --set 'Output/Directory=out' > run.txt 2>&1
 rc=$?

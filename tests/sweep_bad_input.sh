@@ -5,6 +5,7 @@
 # subsection Sweep is also tested in-process, without the process start-up
 # per case, by tests/test_sweep.cc.)
 source "$(dirname "$0")/script_helpers.bash"
+source "$(dirname "$0")/cdea_forks.bash"
 
 # case NAME "sed expression on prm/sweep-inner5.prm" "text the message must contain"
 case_() {

@@ -12,6 +12,7 @@
 #  - the other commands refuse Time/Enabled = true.
 source "$(dirname "$0")/script_helpers.bash"
 source "$(dirname "$0")/python_forks.bash"
+source "$(dirname "$0")/cdea_forks.bash"
 
 # A short viscoelastic ramp-hold on the default scene; cases append to it.
 base() {
