@@ -45,6 +45,18 @@ namespace cdea
              res * settings.residual_scale <= problem.residual_floor(x);
     }
 
+    /// Converged after the step alpha dx (largest entry @p upd, scaled) to a
+    /// scaled residual @p res: both below their tolerances; or, near the
+    /// solution, where the error left after a full update u is O(u^2), an
+    /// update below @p early_update (1e-2 sqrt(update tolerance)) leaves an
+    /// error far below the tolerance, so another iteration is not needed.
+    bool ends_solve(const NewtonSettings &settings, const double res, const double alpha,
+                    const double upd, const double early_update)
+    {
+      return res < settings.residual_tolerance &&
+             (alpha * upd < settings.update_tolerance || (alpha == 1. && upd < early_update));
+    }
+
     std::string no_decrease_message(const NewtonSettings &settings, const unsigned int k,
                                     const double res)
     {
@@ -114,15 +126,7 @@ namespace cdea
         x.swap(trial);
         r.swap(r_trial);
         res = r.lpNorm<Eigen::Infinity>() / settings.residual_scale;
-        if (res < settings.residual_tolerance && alpha * upd < settings.update_tolerance)
-          {
-            report.converged = true;
-            return report;
-          }
-        // Near the solution the error left after a full update u is O(u^2):
-        // an update below 1e-2 sqrt(update tolerance) already leaves an error
-        // far below the tolerance, so another iteration is not needed.
-        if (res < settings.residual_tolerance && alpha == 1. && upd < early_update)
+        if (ends_solve(settings, res, alpha, upd, early_update))
           {
             report.converged = true;
             return report;
