@@ -59,7 +59,7 @@ namespace
     // steps; then back and along the path in steps.
     solve(full_load(scene, {5e3}, 1.));
     // 12 kV at once, beyond the fold of the voltage path: the line search
-    // shortens Newton's steps many times (about a hundred per law).
+    // shortens Newton's steps many times (about 25 shortened trials here).
     solve(full_load(scene, {12e3}, 1.));
     for (int k = 0; k <= 8; ++k)
       solve(full_load(scene, {5e3 * k / 8.}, k / 8.));
