@@ -78,10 +78,23 @@ namespace cdea
     return ok;
   }
 
+  void MembraneModel::Impl::ensure_converged_tangent()
+  {
+    if (!tangent_is_current)
+      return;
+    converged_tangent_used = true;
+    if (!(system.flags & assemble_tangent))
+      {
+        assemble_constrained(solution, assemble_residual | assemble_tangent);
+        tangent_is_current = true;
+      }
+  }
+
   bool MembraneModel::Impl::factorize()
   {
     if (factorized)
       return true;
+    ensure_converged_tangent();
     free_surface = ShermanMorrison();
     factorized   = solver->factorize(system.tangent);
     if (factorized && system.rank_one_coupling != 0.)
@@ -113,6 +126,12 @@ namespace cdea
   void MembraneModel::Impl::evaluate(const Eigen::VectorXd &x, Eigen::VectorXd &r)
   {
     assemble_constrained(x, assemble_residual | assemble_tangent);
+    r = system.residual;
+  }
+
+  void MembraneModel::Impl::evaluate_residual(const Eigen::VectorXd &x, Eigen::VectorXd &r)
+  {
+    assemble_constrained(x, assemble_residual);
     r = system.residual;
   }
 
@@ -193,6 +212,11 @@ namespace cdea
     settings.residual_scale = impl->residual_scale();
     settings.update_scale   = impl->scene.disk_radius;
     settings.exact_tangent  = impl->membrane.law().tangent_is_exact();
+    // The converged state's tangent only if the last one was used (by the
+    // stability check, say); else it is assembled when asked for.
+    settings.residual_alone_when_converging =
+      settings.residual_alone_when_converging && !impl->converged_tangent_used;
+    impl->converged_tangent_used            = false;
     LineSearchNewton newton(settings);
     SolveReport      report = newton.solve(*impl, impl->solution);
     // Newton's last evaluation was at the converged state: a term may reject
@@ -210,7 +234,8 @@ namespace cdea
         impl->solution = old_solution;
         return report;
       }
-    // Newton's last evaluation was at the converged state.
+    // Newton's last evaluation was at the converged state (with its tangent, or
+    // that left for ensure_converged_tangent()).
     impl->tangent_is_current = true;
     return report;
   }
@@ -251,6 +276,7 @@ namespace cdea
 
   TangentStability MembraneModel::Impl::check_stability(const bool with_eigenvalue)
   {
+    ensure_converged_tangent();
     return stability_check.compute(system.tangent, mesh.constrained, system.rank_one_coupling,
                                    system.volume_gradient, with_eigenvalue);
   }

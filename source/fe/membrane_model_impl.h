@@ -54,6 +54,10 @@ namespace cdea
     /// the current state (solution and load).
     AssembledSystem system;
     bool            tangent_is_current = false;
+    /// Whether anything used the tangent of the last converged state
+    /// (ensure_converged_tangent()): if not, the next solve leaves that
+    /// tangent out (NewtonSettings::residual_alone_when_converging).
+    bool converged_tangent_used = false;
     /// Work storage of the queries (energy, residual, tangent, volume), kept
     /// across calls and apart from the system Newton uses.
     AssembledSystem query;
@@ -70,6 +74,10 @@ namespace cdea
     /// The kernel at @p x with the boundary conditions applied (constrained
     /// residual entries zero, rows and columns of the tangent decoupled).
     bool assemble_constrained(const Eigen::VectorXd &x, unsigned int flags);
+    /// Where the tangent is current but Newton left it out (its last trial
+    /// evaluated the residual alone): assemble it at the solution, with the
+    /// same residual. Marks the converged tangent as used.
+    void ensure_converged_tangent();
     /// Factor the tangent of the last assembly (once); false if singular.
     bool factorize();
     /// u = K^-1 b with the last tangent (NaN if singular), constrained entries zero.
@@ -82,6 +90,7 @@ namespace cdea
     TangentStability check_stability(bool with_eigenvalue);
 
     void evaluate(const Eigen::VectorXd &x, Eigen::VectorXd &r) override;
+    void evaluate_residual(const Eigen::VectorXd &x, Eigen::VectorXd &r) override;
     void solve_linearized(const Eigen::VectorXd &r, Eigen::VectorXd &dx) override;
     /// 10 eps max_i sum_j |K_ij| |x_j| with the tangent of the last assembly
     /// that had one: a residual entry is a difference of terms that large

@@ -11,15 +11,21 @@ namespace cdea
     /// whose residual norm decreases by the fraction 1e-4 alpha of @p norm0
     /// (Armijo) or is below the tolerance; @p trial and @p r_trial hold that
     /// point and its residual. 0 if none within max_backtracks halvings.
+    /// With @p residual_alone every trial's residual only (no tangent), with
+    /// settings.residual_alone_at_backtracks that of every shortened trial.
     double line_search(NonlinearProblem &problem, const NewtonSettings &settings,
                        const Eigen::VectorXd &x, const Eigen::VectorXd &dx, const double norm0,
-                       Eigen::VectorXd &trial, Eigen::VectorXd &r_trial)
+                       const bool residual_alone, Eigen::VectorXd &trial,
+                       Eigen::VectorXd &r_trial)
     {
       double alpha = 1.;
       for (unsigned int b = 0; b <= settings.max_backtracks; ++b, alpha *= 0.5)
         {
           trial = x + alpha * dx;
-          problem.evaluate(trial, r_trial);
+          if (residual_alone || (b > 0 && settings.residual_alone_at_backtracks))
+            problem.evaluate_residual(trial, r_trial);
+          else
+            problem.evaluate(trial, r_trial);
           const double norm = r_trial.norm();
           if (std::isfinite(norm) &&
               (norm <= (1. - 1e-4 * alpha) * norm0 ||
@@ -37,6 +43,18 @@ namespace cdea
     {
       return settings.converge_at_round_off &&
              res * settings.residual_scale <= problem.residual_floor(x);
+    }
+
+    /// Converged after the step alpha dx (largest entry @p upd, scaled) to a
+    /// scaled residual @p res: both below their tolerances; or, near the
+    /// solution, where the error left after a full update u is O(u^2), an
+    /// update below @p early_update (1e-2 sqrt(update tolerance)) leaves an
+    /// error far below the tolerance, so another iteration is not needed.
+    bool ends_solve(const NewtonSettings &settings, const double res, const double alpha,
+                    const double upd, const double early_update)
+    {
+      return res < settings.residual_tolerance &&
+             (alpha * upd < settings.update_tolerance || (alpha == 1. && upd < early_update));
     }
 
     std::string no_decrease_message(const NewtonSettings &settings, const unsigned int k,
@@ -85,7 +103,19 @@ namespace cdea
             report.message = "the tangent is singular or not finite";
             return report;
           }
-        const double alpha = line_search(problem, settings, x, dx, r.norm(), trial, r_trial);
+        // An update this small ends the solve if its trial's residual is
+        // below the tolerance (the early test below): evaluate that alone.
+        // (Only with an exact tangent: an inexact one leaves an O(u) error.)
+        const double early_update =
+          settings.exact_tangent ? std::sqrt(settings.update_tolerance) * 1e-2 : 0.;
+        const bool   residual_alone = settings.residual_alone_when_converging &&
+                                    upd < early_update;
+        const double alpha =
+          line_search(problem, settings, x, dx, r.norm(), residual_alone, trial, r_trial);
+        const bool tangent_left_out =
+          residual_alone || (alpha != 1. && settings.residual_alone_at_backtracks);
+        if (alpha == 0. && tangent_left_out)
+          problem.evaluate(trial, r_trial); // the last trial with its tangent, as without
         if (alpha == 0.)
           {
             // No decrease from a state already at its round-off level, with
@@ -101,21 +131,14 @@ namespace cdea
         x.swap(trial);
         r.swap(r_trial);
         res = r.lpNorm<Eigen::Infinity>() / settings.residual_scale;
-        if (res < settings.residual_tolerance && alpha * upd < settings.update_tolerance)
+        if (ends_solve(settings, res, alpha, upd, early_update))
           {
             report.converged = true;
             return report;
           }
-        // Near the solution the error left after a full update u is O(u^2)
-        // (with an exact tangent; an inexact one leaves O(u)):
-        // an update below 1e-2 sqrt(update tolerance) already leaves an error
-        // far below the tolerance, so another iteration is not needed.
-        if (settings.exact_tangent && res < settings.residual_tolerance && alpha == 1. &&
-            upd < std::sqrt(settings.update_tolerance) * 1e-2)
-          {
-            report.converged = true;
-            return report;
-          }
+        // Not converged: the tangent of the accepted state.
+        if (tangent_left_out)
+          problem.evaluate(x, r);
         // The full Newton update, not the step the line search took: near a
         // fold (a nearly singular tangent) the line search shortens a large
         // update, and a state there is not converged.

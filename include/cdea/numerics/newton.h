@@ -20,6 +20,16 @@
 // The problem evaluates its residual together with its tangent at every
 // state Newton visits: the tangent of the accepted state is the next
 // iteration's, and that of the converged state is left for whoever needs it.
+// Where the problem's residual alone is cheaper (evaluate_residual()), two
+// settings use it at trials whose tangent is seldom needed: the shortened
+// steps of the line search (residual_alone_at_backtracks; most are
+// rejected), and the trials of an update already small enough to end the
+// solve (residual_alone_when_converging: below 1e-2 sqrt(update tolerance),
+// the early test below). An accepted trial that does not end the solve is
+// evaluated again with its tangent (the same residual, bit for bit), and so
+// is the last rejected one where the line search fails: the iterations and
+// their numbers are the same either way; only the tangent of a converged
+// state reached by such a trial is left out.
 
 #include <cdea/numerics/solve_report.h>
 
@@ -44,6 +54,12 @@ namespace cdea
     /// False for an inexact tangent (linear convergence), where only the
     /// update tolerance does.
     bool         exact_tangent      = true;
+    /// Evaluate the residual alone at shortened trials, and at trials that
+    /// are expected to end the solve (see above): for problems whose
+    /// evaluate_residual() is cheaper than evaluate() and gives exactly its
+    /// residual (elsewhere an accepted trial is evaluated twice).
+    bool         residual_alone_at_backtracks   = true;
+    bool         residual_alone_when_converging = true;
     double       residual_scale     = 1.; ///< force scale of the residual
     double       update_scale       = 1.; ///< length scale of the unknowns
   };
@@ -56,6 +72,13 @@ namespace cdea
     /// Residual at @p x (zero in constrained entries) and the tangent there,
     /// kept for solve_linearized(); a non-finite residual outside the range.
     virtual void evaluate(const Eigen::VectorXd &x, Eigen::VectorXd &r) = 0;
+    /// The residual at @p x alone, bit for bit that of evaluate(); the
+    /// tangent is not evaluated (solve_linearized() needs an evaluate()
+    /// first). By default evaluate() itself.
+    virtual void evaluate_residual(const Eigen::VectorXd &x, Eigen::VectorXd &r)
+    {
+      evaluate(x, r);
+    }
     /// Solve J dx = -r with the tangent of the last evaluate() (zero in
     /// constrained entries; not finite if the tangent is singular).
     virtual void solve_linearized(const Eigen::VectorXd &r, Eigen::VectorXd &dx) = 0;
