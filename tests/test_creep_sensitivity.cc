@@ -319,6 +319,10 @@ int main()
   refused = !creep_with_sensitivities(read_parameters(input), {}, {0.5, 0.2}, out, message);
   check(refused && message.find("sample time 2") != std::string::npos,
         "decreasing sample times are refused: " + message);
+  refused = !creep_with_sensitivities(read_parameters(input), {own_constant(2)}, {0.5}, out,
+                                      message);
+  check(refused && message.find("own constant 2") != std::string::npos,
+        "a constant the law does not have is refused: " + message);
   input.overrides.push_back({"Time/Rest time before voltage (s)", "5"});
   refused = !creep_with_sensitivities(read_parameters(input), {}, {0.5}, out, message);
   check(refused && message.find("relaxed") != std::string::npos,

@@ -51,6 +51,23 @@ namespace cdea
         }
       return true;
     }
+
+    /// "the shear modulus", ..., "the law's own constant 3" (from 0).
+    std::string parameter_name(const LawParameter p)
+    {
+      switch (p)
+        {
+          case LawParameter::shear_modulus:
+            return "the shear modulus";
+          case LawParameter::jlim:
+            return "Jlim";
+          case LawParameter::permittivity:
+            return "the permittivity";
+          case LawParameter::voltage:
+            return "the voltage";
+        }
+      return "the law's own constant " + std::to_string(own_constant_index(p));
+    }
   } // namespace
 
   class TimeSensitivity::Data
@@ -107,9 +124,11 @@ namespace cdea
           if (!law.evolving_parameter_derivative(v.input, v.stored, parameters[j], ds,
                                                  rate.data()))
             {
-              message = "the material law gives no derivative with respect to parameter " +
-                        std::to_string(int(parameters[j])) + " at a point of cell " +
-                        std::to_string(v.cell);
+              message = "the material law gives no derivative with respect to " +
+                        parameter_name(parameters[j]) + " at a point of cell " +
+                        std::to_string(v.cell) + " (a law with evolving internal variables "
+                        "needs evolving_parameter_derivative(); a branch's constants are "
+                        "own constants 0 to 2 n - 1)";
               return false;
             }
           // d/dPhi of V(t) Phi / reference is V(t) / reference times d/dV.
