@@ -101,8 +101,8 @@ fit-dma) # doc/materials.md, "Fits": 7 constants from the DMA table, each near i
   grep -q "Branch shear moduli (kPa) *= 25.111" results/fit-dma_fit.prm && ok "fitted moduli in the Branch list" \
     || fail "results/fit-dma_fit.prm: $(grep Branch results/fit-dma_fit.prm)" ;;
 fit-creep) # doc/materials.md, "Fits": one Gauss-Newton step from the true constants
-  # (the whole fit from the file's start values takes 6 iterations, about 4 s
-  # of CPU with the finite-difference Jacobian) lands on the fit's optimum.
+  # (the whole fit from the file's start values takes 6 iterations, about
+  # 1.5 s of CPU) lands on the fit's optimum.
   "$exe" fit prm/fit-creep.prm prm/fit-creep.csv --set 'Material/Shear modulus (kPa)=25.1' \
     --set 'Material/Branch shear moduli (kPa)=25, 15, 5' --set 'Calibration/Max iterations=1' > out 2> err; rc=$?
   [ $rc -eq 2 ] && ok "one iteration: exit 2" || fail "exit $rc: $(cat err)"
