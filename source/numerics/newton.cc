@@ -74,6 +74,28 @@ namespace cdea
     }
   } // namespace
 
+  namespace
+  {
+    /// Below this full update (scaled) a converged residual ends the solve:
+    /// 1e-2 sqrt(update tolerance), with an exact tangent only (an inexact
+    /// one leaves an O(u) error, not O(u^2)).
+    double early_update_bound(const NewtonSettings &settings)
+    {
+      return settings.exact_tangent ? std::sqrt(settings.update_tolerance) * 1e-2 : 0.;
+    }
+
+    std::string no_convergence_message(const NewtonSettings &settings, const double res)
+    {
+      std::ostringstream m;
+      m << "Newton did not converge in " << settings.max_iterations
+        << " iterations (scaled residual " << res << ")";
+      if (!settings.exact_tangent)
+        m << "; the material's tangent is inexact (Newton converges linearly), so "
+             "Solver/Max Newton iterations may need raising";
+      return m.str();
+    }
+  } // namespace
+
   SolveReport LineSearchNewton::solve(NonlinearProblem &problem, Eigen::VectorXd &x)
   {
     SolveReport     report;
@@ -105,9 +127,7 @@ namespace cdea
           }
         // An update this small ends the solve if its trial's residual is
         // below the tolerance (the early test below): evaluate that alone.
-        // (Only with an exact tangent: an inexact one leaves an O(u) error.)
-        const double early_update =
-          settings.exact_tangent ? std::sqrt(settings.update_tolerance) * 1e-2 : 0.;
+        const double early_update = early_update_bound(settings);
         const bool   residual_alone = settings.residual_alone_when_converging &&
                                     upd < early_update;
         const double alpha =
@@ -148,13 +168,7 @@ namespace cdea
             return report;
           }
       }
-    std::ostringstream m;
-    m << "Newton did not converge in " << settings.max_iterations
-      << " iterations (scaled residual " << res << ")";
-    if (!settings.exact_tangent)
-      m << "; the material's tangent is inexact (Newton converges linearly), so "
-           "Solver/Max Newton iterations may need raising";
-    report.message = m.str();
+    report.message = no_convergence_message(settings, res);
     return report;
   }
 } // namespace cdea
