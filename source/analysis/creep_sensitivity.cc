@@ -6,6 +6,7 @@
 #include <cdea/analysis/creep_sensitivity.h>
 #include <cdea/analysis/run_setup.h>
 #include <cdea/base/format.h>
+#include <cdea/base/run_control.h>
 #include <cdea/fe/time_sensitivity.h>
 #include <cdea/input/solver_settings.h>
 #include <cdea/model/load_state.h>
@@ -96,6 +97,10 @@ namespace cdea
             const double to_go      = breakpoint - t_now;
             const double step       = control.step_towards(to_go);
             const double t_next     = step == to_go ? breakpoint : t_now + step;
+            // A stop asked for (SIGINT, SIGTERM, SIGHUP) ends this run at once,
+            // so that a fit stops within one step, not one whole evaluation.
+            if (const int signal = StopOnSignals::requested())
+              return fail(message, "stopped by " + signal_name(signal));
             if (!(t_next - t_now > 0.))
               return fail(message, "the time step is below the resolution of t");
             if (!(tableau ? esdirk_step(control, t_next, message) :
