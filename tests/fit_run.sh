@@ -64,5 +64,20 @@ for change in "Time|Enabled = true|Time/Enabled = true is not supported by cdea 
     && ok "refused: $(head -c 110 refused_err.txt)" || fail "$section: exit $rc, $(cat refused_err.txt)"
 done
 
+# A creep fit asked to stop (SIGTERM) ends its time run within a step and
+# exits 2 with the values reached in a readable fit file.
+sed -e 's#set Directory           = results#set Directory = stopped#' \
+    -e "s#prm/fit-creep-voltages.csv#$src/prm/fit-creep-voltages.csv#" "$src/prm/fit-creep.prm" > creep.prm
+"$exe" fit creep.prm "$src/prm/fit-creep.csv" --set 'Calibration/Free parameters=shear modulus, branch 2 shear modulus, branch 3 shear modulus, branch 2 relaxation time, branch 3 relaxation time' > creep.txt 2>&1 &
+creep_pid=$!
+sleep 1
+kill -TERM $creep_pid
+wait $creep_pid
+rc=$?
+[ $rc -eq 2 ] && grep -q "interrupted by SIGTERM" creep.txt \
+  && "$PYTHON" -c 'import h5py, sys; h5py.File(sys.argv[1], "r").attrs["fitted_values"]' stopped/fit-creep_fit.h5 \
+  && ok "creep fit stopped by SIGTERM: exit 2, $(grep -o '[0-9]* evaluations' creep.txt), readable fit file" \
+  || fail "creep fit and SIGTERM: exit $rc, $(tail -3 creep.txt)"
+
 echo "$failures failed"
 [ $failures -eq 0 ]
