@@ -175,39 +175,16 @@ namespace cdea
         const FitResult   &r        = c.result;
         const std::string &h5_path  = invocation.output.path;
         const std::string  prm_path = p.output.directory + "/" + p.output.base_name + "_fit.prm";
-        try
-          {
-            write_fit_file(h5_path, invocation.parameter_text, data, settings, r, c.curve_kV,
-                           c.curve_mm, c.solves);
-            if (r.fitted.size() > 0)
-              {
-                const std::vector<ParameterChange> changes =
-                  fitted_entries(base, settings.free, r.values);
-                write_changed_parameters(invocation.input, prm_path, changes,
-                                         "# Written by cdea fit: the parameter file with the "
-                                         "fitted values.\n");
-              }
-          }
-        catch (const std::exception &e)
-          {
-            std::cerr << "cdea: the results cannot be written: " << e.what()
-                      << " (older files of this name stay as they were)\n";
-            return exit_not_complete;
-          }
-        std::cout << "wrote " << h5_path << (r.fitted.size() ? " and " + prm_path : "") << '\n';
-        if (const int signal = StopOnSignals::requested())
-          {
-            std::cerr << "cdea: interrupted by " << signal_name(signal)
-                      << "; the values reached are in " << h5_path << '\n';
-            return exit_not_complete;
-          }
-        if (!r.converged)
-          {
-            std::cerr << "cdea: the fit did not converge (" << r.status
-                      << "); the last values are in " << h5_path << '\n';
-            return exit_not_complete;
-          }
-        return exit_success;
+        const auto write = [&] {
+          write_fit_file(h5_path, invocation.parameter_text, data, settings, r, c.curve_kV,
+                         c.curve_mm, c.solves);
+          if (r.fitted.size() > 0)
+            write_changed_parameters(invocation.input, prm_path,
+                                     fitted_entries(base, settings.free, r.values),
+                                     "# Written by cdea fit: the parameter file with the "
+                                     "fitted values.\n");
+        };
+        return finish_fit(write, h5_path, prm_path, r);
       }
     };
   } // namespace

@@ -167,38 +167,18 @@ namespace cdea
         const Parameters  &p        = invocation.parameters;
         const std::string &h5_path  = invocation.output.path;
         const std::string  prm_path = p.output.directory + "/" + p.output.base_name + "_fit.prm";
-        try
-          {
-            if (kind == FitDataKind::dma)
-              write_dma_fit_file(h5_path, invocation.parameter_text, dma, settings, r);
-            else
-              write_creep_fit_file(h5_path, invocation.parameter_text, creep, settings, r);
-            if (r.fitted.size() > 0)
-              write_changed_parameters(invocation.input, prm_path,
-                                       fitted_entries(p.scene(), settings.free, r.values),
-                                       "# Written by cdea fit: the parameter file with the "
-                                       "fitted values.\n");
-          }
-        catch (const std::exception &e)
-          {
-            std::cerr << "cdea: the results cannot be written: " << e.what()
-                      << " (older files of this name stay as they were)\n";
-            return exit_not_complete;
-          }
-        std::cout << "wrote " << h5_path << (r.fitted.size() ? " and " + prm_path : "") << '\n';
-        if (const int signal = StopOnSignals::requested())
-          {
-            std::cerr << "cdea: interrupted by " << signal_name(signal)
-                      << "; the values reached are in " << h5_path << '\n';
-            return exit_not_complete;
-          }
-        if (!r.converged)
-          {
-            std::cerr << "cdea: the fit did not converge (" << r.status
-                      << "); the last values are in " << h5_path << '\n';
-            return exit_not_complete;
-          }
-        return exit_success;
+        const auto write = [&] {
+          if (kind == FitDataKind::dma)
+            write_dma_fit_file(h5_path, invocation.parameter_text, dma, settings, r);
+          else
+            write_creep_fit_file(h5_path, invocation.parameter_text, creep, settings, r);
+          if (r.fitted.size() > 0)
+            write_changed_parameters(invocation.input, prm_path,
+                                     fitted_entries(p.scene(), settings.free, r.values),
+                                     "# Written by cdea fit: the parameter file with the "
+                                     "fitted values.\n");
+        };
+        return finish_fit(write, h5_path, prm_path, r);
       }
     };
   } // namespace
@@ -206,5 +186,34 @@ namespace cdea
   std::unique_ptr<ViscousFitJob> viscous_fit_job(const FitDataKind kind)
   {
     return std::make_unique<ViscousFit>(kind);
+  }
+
+  int finish_fit(const std::function<void()> &write_results, const std::string &h5_path,
+                 const std::string &prm_path, const FitResult &r)
+  {
+    try
+      {
+        write_results();
+      }
+    catch (const std::exception &e)
+      {
+        std::cerr << "cdea: the results cannot be written: " << e.what()
+                  << " (older files of this name stay as they were)\n";
+        return exit_not_complete;
+      }
+    std::cout << "wrote " << h5_path << (r.fitted.size() ? " and " + prm_path : "") << '\n';
+    if (const int signal = StopOnSignals::requested())
+      {
+        std::cerr << "cdea: interrupted by " << signal_name(signal)
+                  << "; the values reached are in " << h5_path << '\n';
+        return exit_not_complete;
+      }
+    if (!r.converged)
+      {
+        std::cerr << "cdea: the fit did not converge (" << r.status
+                  << "); the last values are in " << h5_path << '\n';
+        return exit_not_complete;
+      }
+    return exit_success;
   }
 } // namespace cdea

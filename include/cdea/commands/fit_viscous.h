@@ -6,7 +6,9 @@
 #include <cdea/commands/command.h>
 #include <cdea/design/fit_data.h>
 
+#include <functional>
 #include <memory>
+#include <string>
 
 namespace cdea
 {
@@ -21,4 +23,13 @@ namespace cdea
   };
 
   std::unique_ptr<ViscousFitJob> viscous_fit_job(FitDataKind kind);
+
+  struct FitResult;
+
+  /// How every fit ends: @p write_results (the fit file, and the parameter
+  /// file with the fitted values if any), "wrote ...", and the exit code:
+  /// 2 if writing failed (older files stay), a stop was asked for or the fit
+  /// did not converge (each said on stderr), else 0.
+  int finish_fit(const std::function<void()> &write_results, const std::string &h5_path,
+                 const std::string &prm_path, const FitResult &r);
 } // namespace cdea
