@@ -21,6 +21,23 @@ namespace cdea_test
                                                      cdea::TimeMethod::backward_euler;
   }
 
+  /// A time test's load at time @p t (s): the voltage stage at load factor
+  /// t with the pre-stretch @p stretch, one ring at @p voltage (V) and a dead
+  /// load of @p mass (kg) on the disk.
+  inline cdea::LoadState film_load(const double t, const double stretch, const double voltage,
+                                   const double mass = 0.)
+  {
+    cdea::LoadState l;
+    l.mass        = mass;
+    l.force       = 9.81 * mass;
+    l.stage       = cdea::Stage::voltage;
+    l.load_factor = t;
+    l.time        = t;
+    l.stretch     = stretch;
+    l.voltages    = {voltage};
+    return l;
+  }
+
   inline cdea::FeDiscretization discretization(const unsigned int degree,
                                                const unsigned int elements,
                                                const unsigned int refinements = 0,

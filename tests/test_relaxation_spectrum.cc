@@ -44,16 +44,7 @@ namespace
 
   double stretch(const double t) { return 2.5 + 0.3 * std::sin(M_PI * t); }
 
-  LoadState load(const double t)
-  {
-    LoadState l;
-    l.stage       = Stage::voltage;
-    l.load_factor = t;
-    l.time        = t;
-    l.stretch     = stretch(t);
-    l.voltages    = {voltage};
-    return l;
-  }
+  LoadState load(const double t) { return cdea_test::film_load(t, stretch(t), voltage); }
 
   /// The viscoelastic law of @p texts (list entries) over the Network B
   /// entries 45 kPa, Jlim 60, 2 s.

@@ -76,15 +76,7 @@ namespace
   /// The film's load at time @p t, with a dead load of @p mass (kg) on the disk.
   LoadState load(const double t, const double mass)
   {
-    LoadState l;
-    l.mass        = mass;
-    l.force       = 9.81 * mass;
-    l.stage       = Stage::voltage;
-    l.load_factor = t;
-    l.time        = t;
-    l.stretch     = 2.5 + 0.3 * std::sin(M_PI * t);
-    l.voltages    = {voltage};
-    return l;
+    return cdea_test::film_load(t, 2.5 + 0.3 * std::sin(M_PI * t), voltage, mass);
   }
 
   struct FilmRun

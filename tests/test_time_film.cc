@@ -38,16 +38,7 @@ namespace
 
   double stretch(const double t) { return 2.5 + 0.3 * std::sin(2. * M_PI * t / period); }
 
-  LoadState load(const double t)
-  {
-    LoadState l;
-    l.stage       = Stage::voltage;
-    l.load_factor = t;
-    l.time        = t;
-    l.stretch     = stretch(t);
-    l.voltages    = {voltage};
-    return l;
-  }
+  LoadState load(const double t) { return cdea_test::film_load(t, stretch(t), voltage); }
 
   /// xi(t_end) of the ODE.
   double reference_xi()
