@@ -7,6 +7,7 @@
 #include <cdea/design/viscous_fit.h>
 #include <cdea/input/solver_settings.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace cdea
@@ -70,11 +71,18 @@ namespace cdea
                       const std::function<void(unsigned int, double, const std::vector<double> &)>
                         &progress)
   {
+    // Relaxation times from a hundredth of the shortest sample interval to a
+    // hundred times the curve's length.
+    double spacing = HUGE_VAL;
+    for (std::size_t i = 1; i < data.size(); ++i)
+      spacing = std::min(spacing, data.times[i] - data.times[i - 1]);
+    const FitSettings bounded =
+      relaxation_time_window(p.scene(), settings, 1e-2 * spacing, 1e2 * data.times.back());
     CreepModel      model(p, data, settings.free);
     FitObservations observations{
       Eigen::Map<const Eigen::VectorXd>(data.displacement.data(), Eigen::Index(data.size())),
       Eigen::Map<const Eigen::VectorXd>(data.weight.data(), Eigen::Index(data.size())), 1e-3};
-    return fit_observations(p.scene(), observations, settings,
+    return fit_observations(p.scene(), observations, bounded,
                             [&model](const std::vector<double> &v, Eigen::VectorXd &d,
                                      Eigen::MatrixXd *J, std::string *message) {
                               return model.evaluate(v, d, J, message);

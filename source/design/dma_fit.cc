@@ -7,6 +7,7 @@
 #include <cdea/material/material_chart.h>
 #include <cdea/material/two_network_gent.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace cdea
@@ -211,10 +212,30 @@ namespace cdea
     return true;
   }
 
+  FitSettings relaxation_time_window(const Scene &scene, FitSettings settings,
+                                     const double shortest, const double longest)
+  {
+    if (scene.law()->n_evolving() == 0)
+      return settings;
+    settings.window.assign(settings.free.size(), {0., HUGE_VAL});
+    for (std::size_t j = 0; j < settings.free.size(); ++j)
+      {
+        const int own = own_constant_index(law_parameter_of(scene, settings.free[j]));
+        if (own >= 0 && own % 2 == 1)
+          settings.window[j] = {shortest, longest};
+      }
+    return settings;
+  }
+
   FitResult fit_dma(const Scene &base, const DmaData &data, const FitSettings &settings,
                     const std::function<void(unsigned int, double, const std::vector<double> &)>
                       &progress)
   {
+    // Relaxation times from a hundredth of 1 / (2 pi f_max) to a hundred times
+    // 1 / (2 pi f_min): the loss peak of a branch lies at 2 pi f tau = 1.
+    const auto [f_min, f_max] = std::minmax_element(data.frequency.begin(), data.frequency.end());
+    const FitSettings bounded = relaxation_time_window(base, settings, 1e-2 / (2. * M_PI * *f_max),
+                                                       1e2 / (2. * M_PI * *f_min));
     const DmaModel  model(base, data.frequency, settings.free);
     FitObservations observations;
     observations.unit = 1e3; // kPa
@@ -227,7 +248,7 @@ namespace cdea
         observations.weight[Eigen::Index(2 * i)]       = data.weight[i];
         observations.weight[Eigen::Index(2 * i + 1)]   = data.weight[i];
       }
-    return fit_observations(base, observations, settings,
+    return fit_observations(base, observations, bounded,
                             [&model](const std::vector<double> &v, Eigen::VectorXd &E,
                                      Eigen::MatrixXd *J, std::string *message) {
                               return model.evaluate(v, E, J, message);

@@ -159,6 +159,12 @@ namespace cdea
               if (!std::isfinite(lower))
                 continue;
             }
+          if (j < settings.window.size())
+            {
+              lower = std::max(lower, settings.window[j].first / scale[j]);
+              if (std::isfinite(settings.window[j].second))
+                problem.SetParameterUpperBound(q.data(), int(j), settings.window[j].second / scale[j]);
+            }
           problem.SetParameterLowerBound(q.data(), int(j), lower);
         }
     }

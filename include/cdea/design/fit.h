@@ -60,6 +60,10 @@ namespace cdea
     std::vector<SceneParameter> free;
     unsigned int                max_iterations = 100;
     double                      tolerance      = 1e-10;
+    /// Per free parameter (empty: none), an interval (SI) narrower than the
+    /// law's own bounds that the fit keeps it in: the relaxation times the
+    /// data can see (viscous_fit.h, relaxation_time_window()).
+    std::vector<std::pair<double, double>> window;
   };
 
   /// Subsection Calibration's free parameters (names as fit_settings()

@@ -21,6 +21,14 @@ namespace cdea
 
   /// The law parameter (law input, SI) a free parameter of a creep fit is.
   LawParameter law_parameter_of(const Scene &scene, const SceneParameter &p);
+
+  /// @p settings with every free relaxation time of the viscoelastic law
+  /// (own_constant(2(k-1)+1)) kept in [@p shortest, @p longest] (s): times
+  /// the data cannot see (a branch relaxed within a sample interval, or
+  /// never relaxed over the whole curve) are left out, where a fit would
+  /// otherwise wander to the law's bounds (1e-12 s: a time run of tiny steps).
+  FitSettings relaxation_time_window(const Scene &scene, FitSettings settings, double shortest,
+                                     double longest);
   /// The value (SI) of law parameter @p q in @p p, and @p p with it set.
   double law_parameter_value(const Parameters &p, LawParameter q);
   void   set_law_parameter(Parameters &p, LawParameter q, double value);
