@@ -55,6 +55,23 @@ namespace
           "parameter_value of a branch modulus from the law");
   }
 
+  /// Only the free relaxation times get the window; an elastic film none.
+  void check_time_window()
+  {
+    FitSettings settings;
+    settings.free = all_free();
+    const FitSettings w = relaxation_time_window(film(), settings, 0.01, 8000.);
+    bool          ok    = w.window.size() == 7;
+    for (std::size_t j = 0; ok && j < 7; ++j)
+      ok = (j >= 1 && j % 2 == 0) ? (w.window[j].first == 0.01 && w.window[j].second == 8000.) :
+                                    (w.window[j].first == 0. && std::isinf(w.window[j].second));
+    check(ok, "the window holds tau_1..tau_3 in [0.01, 8000] s and leaves mu_A and the moduli");
+    FitSettings elastic;
+    elastic.free = {{ParameterKind::shear_modulus, 0}};
+    check(relaxation_time_window(paper_scene({1., 3.}, {{1.}}), elastic, 0.01, 8000.).window.empty(),
+          "no window for an elastic film");
+  }
+
   void check_dma_model()
   {
     const Scene               s = film();
@@ -157,6 +174,7 @@ namespace
 int main()
 {
   check_convention();
+  check_time_window();
   check_dma_model();
   for (const unsigned int seed : {1u, 2u, 4u})
     check_recovery(seed);
