@@ -137,17 +137,7 @@ namespace cdea
                       << format_number(v, 8) << std::setw(16) << format_number(e, 3)
                       << std::setw(10) << format_number(e / std::abs(v), 2) << '\n';
           }
-        if (K < 2)
-          return;
-        std::cout << "correlation:\n";
-        for (std::size_t i = 0; i < K; ++i)
-          {
-            std::cout << "  " << std::left << std::setw(16) << label(settings.free[i])
-                      << std::right;
-            for (std::size_t j = 0; j < K; ++j)
-              std::cout << std::setw(9) << format_fixed(r.correlation(i, j), 4);
-            std::cout << '\n';
-          }
+        print_correlation(settings.free, r, 16);
       }
 
       void print_residuals(const FitResult &r) const

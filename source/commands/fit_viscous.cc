@@ -122,16 +122,7 @@ namespace cdea
                       << format_number(e, 3) << std::setw(10) << format_number(e / std::abs(v), 2)
                       << '\n';
           }
-        if (K < 2)
-          return;
-        std::cout << "correlation:\n";
-        for (std::size_t i = 0; i < K; ++i)
-          {
-            std::cout << "  " << std::left << std::setw(28) << label(settings.free[i]) << std::right;
-            for (std::size_t j = 0; j < K; ++j)
-              std::cout << std::setw(9) << format_fixed(r.correlation(i, j), 4);
-            std::cout << '\n';
-          }
+        print_correlation(settings.free, r, 28);
       }
 
       void print_residuals(const FitResult &r) const
@@ -215,5 +206,21 @@ namespace cdea
         return exit_not_complete;
       }
     return exit_success;
+  }
+
+  void print_correlation(const std::vector<SceneParameter> &free, const FitResult &r,
+                         const int label_width)
+  {
+    const std::size_t K = free.size();
+    if (K < 2)
+      return;
+    std::cout << "correlation:\n";
+    for (std::size_t i = 0; i < K; ++i)
+      {
+        std::cout << "  " << std::left << std::setw(label_width) << label(free[i]) << std::right;
+        for (std::size_t j = 0; j < K; ++j)
+          std::cout << std::setw(9) << format_fixed(r.correlation(i, j), 4);
+        std::cout << '\n';
+      }
   }
 } // namespace cdea

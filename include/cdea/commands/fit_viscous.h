@@ -9,6 +9,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace cdea
 {
@@ -25,6 +26,12 @@ namespace cdea
   std::unique_ptr<ViscousFitJob> viscous_fit_job(FitDataKind kind);
 
   struct FitResult;
+  struct SceneParameter;
+
+  /// The fit's correlation matrix, a row per free parameter labelled in a
+  /// column @p label_width wide (nothing for fewer than two parameters).
+  void print_correlation(const std::vector<SceneParameter> &free, const FitResult &r,
+                         int label_width);
 
   /// How every fit ends: @p write_results (the fit file, and the parameter
   /// file with the fitted values if any), "wrote ...", and the exit code:
