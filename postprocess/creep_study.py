@@ -175,7 +175,7 @@ def main():
     os.makedirs(work, exist_ok=True)
 
     points, d0 = law_study.gent_points(args.cdea, work)
-    high = d0 + (1. + law_study.MEASURED_INCREASE) * (points[5.5] - d0)
+    high = law_study.measured_high_point(points, d0)
     rows, ends = staircase(OUTER_KV)
     table = os.path.join(work, "creep-voltages.csv")
     write_table(table, rows, "The paper's protocol on r_v/a = 1.7: both rings in 0.5 kV steps "
