@@ -106,7 +106,7 @@ namespace
         const double      t1     = clock();
         require(report.converged, "a step of the voltage stage did not converge again: " +
                                     report.message);
-        const StateStability s  = model.stability();
+        const StateStability s  = model.stability(StabilityEigenvalue::every_step);
         const double         t2 = clock();
         StepSummary          summary = model.summary();
         const StepFields     f       = model.fields();

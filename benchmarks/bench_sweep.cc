@@ -22,6 +22,9 @@
 #include <cdea/input/parameter_input.h>
 #include <cdea/input/parameters.h>
 #include <cdea/design/sweep.h>
+#include <cdea/fe/membrane_model.h>
+#include <cdea/model/output_fields.h>
+#include <cdea/solver/load_stepper.h>
 
 #include "bench_common.h"
 
@@ -116,6 +119,67 @@ namespace
     return c;
   }
 
+  /// The load stages to the base state of one row, as a LoadStepper runs them.
+  struct StageRun
+  {
+    double              seconds    = 0.; ///< CPU median of 11
+    unsigned int        iterations = 0;  ///< Newton iterations
+    double              displacement = 0.; ///< of the final state
+    std::vector<double> stable, eigenvalue;  ///< the columns, at every step
+  };
+
+  StageRun load_stages(const Scene &scene, MembraneModel &model, const SteppingSettings &settings)
+  {
+    StageRun r;
+    r.seconds = median_time(
+      [&] {
+        r.stable.clear();
+        r.eigenvalue.clear();
+        LoadStepper stepper(scene, model, settings);
+        stepper.on_step = [&](const StepSummary &s) {
+          r.stable.push_back(s.columns.get(summary_column::stable));
+          r.eigenvalue.push_back(s.columns.get(summary_column::min_eigenvalue));
+        };
+        r.iterations   = stepper.run().newton_iterations;
+        r.displacement = model.displacement();
+      },
+      11, cpu_seconds);
+    return r;
+  }
+
+  /// The load stages without the stability check, with it (the eigenvalue at
+  /// every step) and with it near folds; fails unless the three reach the
+  /// same state (bitwise) and the two checks give the same stable column.
+  void time_load_stages(const Scene &scene, MembraneModel &model, const SteppingSettings &off)
+  {
+    SteppingSettings every = off;
+    every.stability_check  = true;
+    SteppingSettings near  = every;
+    near.stability_eigenvalue = StabilityEigenvalue::near_folds;
+    const StageRun a = load_stages(scene, model, off);
+    const StageRun b = load_stages(scene, model, every);
+    const StageRun c = load_stages(scene, model, near);
+    require(a.displacement == b.displacement && a.displacement == c.displacement,
+            "the load stages reach different states with and without the stability check");
+    require(b.stable == c.stable && !b.stable.empty(),
+            "the stable column near folds differs from that of the eigenvalue at every step");
+    unsigned int computed = 0;
+    for (std::size_t i = 0; i < c.eigenvalue.size(); ++i)
+      if (!std::isnan(c.eigenvalue[i]))
+        {
+          ++computed;
+          require(rel(c.eigenvalue[i], b.eigenvalue[i]) <= 1e-10,
+                  "an eigenvalue near folds differs from that at every step");
+        }
+    std::cout << "  load stages to the base state (one row):      " << a.seconds * 1e3 << " ms, "
+              << a.iterations << " Newton iterations (CPU medians of 11)\n"
+              << "  with the check, eigenvalue at every step:     " << b.seconds * 1e3 << " ms ("
+              << b.seconds / a.seconds << "x), " << b.iterations << " Newton iterations\n"
+              << "  with the check, eigenvalue near folds:        " << c.seconds * 1e3 << " ms ("
+              << c.seconds / a.seconds << "x), the eigenvalue at " << computed << " of "
+              << c.eigenvalue.size() << " steps\n";
+  }
+
   /// The pieces of a row on the r_v/a = 1.7 layout, one by one (medians of
   /// repeated calls), and the share of the map time they explain.
   void time_pieces(const Parameters &p, const Scene &base, const SweepSettings &settings,
@@ -126,21 +190,12 @@ namespace
       [&] { MembraneModel model(scene, fe_discretization(p), newton_settings(p)); }, 21,
       wall_seconds);
     MembraneModel model(scene, fe_discretization(p), newton_settings(p));
-    unsigned int  base_iterations = 0, stable_iterations = 0;
-    const double  t_base = median_time(
-      [&] {
-        LoadStepper stepper(scene, model, sweep_stepping_settings(p));
-        base_iterations = stepper.run().newton_iterations;
-      },
-      11, wall_seconds);
-    const double t_base_stable = median_time(
-      [&] {
-        SteppingSettings with = sweep_stepping_settings(p);
-        with.stability_check  = true;
-        LoadStepper stepper(scene, model, with);
-        stable_iterations = stepper.run().newton_iterations;
-      },
-      11, wall_seconds);
+    std::cout << "pieces (r_v/a = 1.7, medians of repeated calls):\n"
+              << "  unknowns of a layout's FE model:              " << model.n_dofs() << " ("
+              << model.n_elements() << " elements of degree "
+              << p.discretization.polynomial_degree << ")\n"
+              << "  build a MembraneModel (mesh, dofs, shapes):    " << t_model * 1e6 << " us\n";
+    time_load_stages(scene, model, sweep_stepping_settings(p));
     const double     t_summary = median_time([&] { (void)model.summary(); }, 501, wall_seconds);
     const ModelState x         = model.state();
     const double     t_state =
@@ -161,16 +216,7 @@ namespace
       101, wall_seconds);
     const double t_iter = t_solve / std::max(1u, its);
     require_finite(t_iter, "the time of a Newton iteration", true);
-    std::cout << "pieces (r_v/a = 1.7, medians of repeated calls):\n"
-              << "  unknowns of a layout's FE model:              " << model.n_dofs() << " ("
-              << model.n_elements() << " elements of degree "
-              << p.discretization.polynomial_degree << ")\n"
-              << "  build a MembraneModel (mesh, dofs, shapes):    " << t_model * 1e6 << " us\n"
-              << "  load stages to the base state (one row):      " << t_base * 1e3 << " ms, "
-              << base_iterations << " Newton iterations\n"
-              << "  the same with Solver/Stability check on:      " << t_base_stable * 1e3
-              << " ms, " << stable_iterations << " Newton iterations\n"
-              << "  a 50 V continuation step from the converged state: " << t_solve * 1e6
+    std::cout << "  a 50 V continuation step from the converged state: " << t_solve * 1e6
               << " us, " << its << " Newton iterations -> " << t_iter * 1e6
               << " us per iteration\n"
               << "  summary() (s2 at the ring edges):             " << t_summary * 1e6 << " us\n"

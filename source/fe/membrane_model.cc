@@ -281,19 +281,31 @@ namespace cdea
                                    system.volume_gradient, with_eigenvalue);
   }
 
-  StateStability MembraneModel::stability()
+  TangentStability MembraneModel::Impl::check_stability_near_folds()
+  {
+    ensure_converged_tangent();
+    return stability_check.compute_near_folds(system.tangent, mesh.constrained,
+                                              system.rank_one_coupling, system.volume_gradient);
+  }
+
+  StateStability MembraneModel::stability(const StabilityEigenvalue eigenvalue)
   {
     if (!impl->tangent_is_current)
       {
         impl->assemble_constrained(impl->solution, assemble_residual | assemble_tangent);
         impl->tangent_is_current = true;
       }
-    const TangentStability t = impl->check_stability(true);
+    const TangentStability t = eigenvalue == StabilityEigenvalue::near_folds ?
+                                 impl->check_stability_near_folds() :
+                                 impl->check_stability(true);
     return {t.smallest_eigenvalue,
             t.known ? double(t.positive_definite) : std::numeric_limits<double>::quiet_NaN()};
   }
 
-  double MembraneModel::min_tangent_eigenvalue() { return stability().min_eigenvalue; }
+  double MembraneModel::min_tangent_eigenvalue()
+  {
+    return stability(StabilityEigenvalue::every_step).min_eigenvalue;
+  }
 
   void MembraneModel::set_relaxed(const bool relaxed)
   {

@@ -88,6 +88,8 @@ namespace cdea
     /// constrained dofs: positive definite, and the smallest eigenvalue if
     /// @p with_eigenvalue.
     TangentStability check_stability(bool with_eigenvalue);
+    /// The same with the eigenvalue near folds only (StabilityCheck::compute_near_folds()).
+    TangentStability check_stability_near_folds();
 
     void evaluate(const Eigen::VectorXd &x, Eigen::VectorXd &r) override;
     void evaluate_residual(const Eigen::VectorXd &x, Eigen::VectorXd &r) override;

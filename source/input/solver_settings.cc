@@ -20,6 +20,7 @@ namespace cdea
     s.max_arc_length_steps  = p.solver.max_arc_length_steps;
     s.max_displacement      = p.solver.max_displacement_mm * 1e-3;
     s.stability_check       = p.solver.stability_check;
+    s.stability_eigenvalue  = p.solver.stability_eigenvalue;
     s.breakdown_field       = p.solver.breakdown_field_MV_per_m * 1e6;
     s.residual_tolerance    = p.solver.residual_tolerance;
     s.update_tolerance      = p.solver.update_tolerance;

@@ -265,6 +265,26 @@ namespace cdea
   TangentStability StabilityCheck::compute(const SymmetricBand &S, const double k,
                                            const Eigen::VectorXd &g, const bool with_eigenvalue)
   {
+    return check(S, k, g, with_eigenvalue ? Eigenvalue::always : Eigenvalue::never);
+  }
+
+  TangentStability StabilityCheck::compute_near_folds(const BandMatrix                &A,
+                                                      const std::vector<unsigned int> &excluded,
+                                                      const double k, const Eigen::VectorXd &g)
+  {
+    S_own.assign(A, excluded);
+    return compute_near_folds(S_own, k, g);
+  }
+
+  TangentStability StabilityCheck::compute_near_folds(const SymmetricBand &S, const double k,
+                                                      const Eigen::VectorXd &g)
+  {
+    return check(S, k, g, Eigenvalue::near_folds);
+  }
+
+  TangentStability StabilityCheck::check(const SymmetricBand &S, const double k,
+                                         const Eigen::VectorXd &g, const Eigenvalue eigenvalue)
+  {
     steps = n_factorizations = 0;
     scale_of_spectrum        = nan;
     TangentStability result;
@@ -276,10 +296,25 @@ namespace cdea
         warm.resize(0);
         warm_value = nan;
       }
-    result.known             = true;
-    const bool S_definite    = factor_definite(S, with_eigenvalue);
+    result.known = true;
+    bool S_definite;
+    if (eigenvalue == Eigenvalue::near_folds && warm_value > 0.)
+      {
+        // Every eigenvalue of S + k g g^T above sigma > 0: stable, and the
+        // eigenvalue has not fallen to near_fold_fraction of the last one.
+        if (definite_above(S, k, g, near_fold_fraction * warm_value))
+          {
+            result.positive_definite = true;
+            return result;
+          }
+        // S - sigma I is not positive definite, nor then at the warm shift
+        // of compute(): on from the Cholesky at zero.
+        S_definite = factor_definite(S, false);
+      }
+    else
+      S_definite = factor_definite(S, eigenvalue != Eigenvalue::never);
     result.positive_definite = S_definite || (k > 0. && rank_one_definite(S, k, g, 0.));
-    if (with_eigenvalue && n_free(S) > 0)
+    if (eigenvalue != Eigenvalue::never && n_free(S) > 0)
       result.smallest_eigenvalue = smallest_eigenvalue(S, k, g, S_definite);
     return result;
   }
@@ -339,15 +374,15 @@ namespace cdea
     return cholesky.factorize(S, sigma) || (k > 0. && rank_one_definite(S, k, g, sigma));
   }
 
-  bool StabilityCheck::factor_definite(const SymmetricBand &S, const bool with_eigenvalue)
+  bool StabilityCheck::factor_definite(const SymmetricBand &S, const bool warm_shift)
   {
     // Lanczos on (S - sigma I)^-1 gains (lambda_2 - sigma) / (lambda_1 - sigma)
     // per step: a shift just below lambda_1 makes it converge in a few steps,
     // and a Cholesky that succeeds at sigma > 0 proves S positive definite.
-    if (with_eigenvalue && warm_value > 0.)
+    if (warm_shift && warm_value > 0.)
       {
         ++n_factorizations;
-        if (cholesky.factorize(S, 0.8 * warm_value))
+        if (cholesky.factorize(S, near_fold_fraction * warm_value))
           return true;
       }
     ++n_factorizations;

@@ -31,6 +31,7 @@ namespace cdea
     , model(model)
     , settings(settings)
     , postprocessors(standard_postprocessors(scene.prestretch, settings.stability_check,
+                                             settings.stability_eigenvalue,
                                              settings.breakdown_field > 0.))
   {
     crossings.push_back({[](const StepSummary &s) { return s.s2_min; },

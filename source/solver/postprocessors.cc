@@ -56,7 +56,10 @@ namespace cdea
 
   void Stability::evaluate(StepContext &context, StepSummary &summary)
   {
-    const StateStability s = enabled ? context.model.stability() : StateStability();
+    const StateStability s =
+      enabled ? context.model.stability(first ? StabilityEigenvalue::every_step : eigenvalue) :
+                StateStability();
+    first = false;
     summary.min_eigenvalue = s.min_eigenvalue;
     summary.columns.set(summary_column::min_eigenvalue, s.min_eigenvalue);
     summary.columns.set(summary_column::stable, s.stable);
@@ -95,12 +98,12 @@ namespace cdea
 
   std::vector<std::unique_ptr<Postprocessor>>
   standard_postprocessors(const double prestretch, const bool stability_check,
-                          const bool field_check)
+                          const StabilityEigenvalue eigenvalue, const bool field_check)
   {
     std::vector<std::unique_ptr<Postprocessor>> list;
     list.push_back(std::make_unique<ModelQuantities>(prestretch));
     list.push_back(std::make_unique<Stroke>());
-    list.push_back(std::make_unique<Stability>(stability_check));
+    list.push_back(std::make_unique<Stability>(stability_check, eigenvalue));
     list.push_back(std::make_unique<MaxField>(field_check));
     return list;
   }

@@ -247,6 +247,7 @@ namespace cdea
   StepSummary TimeStepper::start_time_stage()
   {
     postprocessors = standard_postprocessors(scene.prestretch, time_stage_stability(),
+                                             quasi_static.stability_eigenvalue,
                                              quasi_static.breakdown_field > 0.);
     for (const auto &make : factories)
       postprocessors.push_back(make());

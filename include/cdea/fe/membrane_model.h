@@ -55,8 +55,9 @@ namespace cdea
     /// With the tangent of the current state when it is at hand (after a solve).
     double min_tangent_eigenvalue() override;
     /// Positive definite by the inertia of the tangent's factorization, and
-    /// the smallest eigenvalue by shift-invert Lanczos on its factors.
-    StateStability stability() override;
+    /// the smallest eigenvalue by shift-invert Lanczos on its factors
+    /// (StabilityCheck::compute_near_folds() for near_folds).
+    StateStability stability(StabilityEigenvalue eigenvalue) override;
 
     /// Tension-field relaxation where the hoop stress would be negative
     /// (Wrinkling/Model = relaxed); off: the plain law everywhere.

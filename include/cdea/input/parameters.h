@@ -17,6 +17,7 @@
 #include <cdea/input/parameters_plugins.h>
 #include <cdea/input/parameters_dynamics.h>
 #include <cdea/input/parameters_time.h>
+#include <cdea/model/equilibrium_model.h>
 #include <cdea/model/scene.h>
 #include <cdea/numerics/tangent_solver.h>
 
@@ -113,6 +114,7 @@ namespace cdea
       unsigned int max_arc_length_steps;
       double       max_displacement_mm;
       bool         stability_check;
+      StabilityEigenvalue stability_eigenvalue;
       double       breakdown_field_MV_per_m;
       static void  declare(dealii::ParameterHandler &prm);
       void         parse(dealii::ParameterHandler &prm);

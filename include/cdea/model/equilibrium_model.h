@@ -58,6 +58,16 @@ namespace cdea
     double stable = std::numeric_limits<double>::quiet_NaN(); ///< 1 or 0; NaN: no answer
   };
 
+  /// When the stability check computes the smallest eigenvalue
+  /// (Solver/Stability eigenvalue): at every state, or only where the state
+  /// is not positive definite or is near a fold (elsewhere the inertia of
+  /// one factorization decides, and the eigenvalue is NaN).
+  enum class StabilityEigenvalue
+  {
+    every_step,
+    near_folds
+  };
+
   /// Hoop stresses of a state, as the wrinkling check reads them.
   struct HoopStresses
   {
@@ -139,10 +149,12 @@ namespace cdea
     }
 
     /// The stability check of the current state: min_tangent_eigenvalue()
-    /// and whether the tangent is positive definite (FE: from the inertia of
-    /// its factorization, Sylvester's law; by default the eigenvalue's sign).
-    virtual StateStability stability()
+    /// (@p eigenvalue says where; by default everywhere) and whether the
+    /// tangent is positive definite (FE: from the inertia of its
+    /// factorization, Sylvester's law; by default the eigenvalue's sign).
+    virtual StateStability stability(StabilityEigenvalue eigenvalue)
     {
+      (void)eigenvalue;
       const double lambda = min_tangent_eigenvalue();
       return {lambda, std::isnan(lambda) ? lambda : double(lambda > 0.)};
     }

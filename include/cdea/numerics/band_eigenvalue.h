@@ -61,6 +61,31 @@ namespace cdea
     TangentStability compute(const BandMatrix &A, const std::vector<unsigned int> &excluded,
                              double k, const Eigen::VectorXd &g, bool with_eigenvalue);
 
+    /// The stability of S + k g g^T with its smallest eigenvalue only where
+    /// it matters: where the state is not positive definite or near a fold.
+    /// One Cholesky of S - sigma I at sigma = near_fold_fraction x the last
+    /// computed eigenvalue (if that is positive) decides: if it succeeds
+    /// (with k > 0: or the inertia and the determinant lemma say that
+    /// S + k g g^T - sigma I is positive definite), every eigenvalue is
+    /// above sigma > 0: stable, far from a fold, the eigenvalue not computed
+    /// (NaN). Otherwise, and before the first eigenvalue, as
+    /// compute(..., true), which renews the reference.
+    TangentStability compute_near_folds(const SymmetricBand &S, double k,
+                                        const Eigen::VectorXd &g);
+    /// The same on the symmetric part of @p A without @p excluded.
+    TangentStability compute_near_folds(const BandMatrix &A,
+                                        const std::vector<unsigned int> &excluded, double k,
+                                        const Eigen::VectorXd &g);
+
+    /// The fraction of the last computed eigenvalue below which the
+    /// eigenvalue is computed again (compute_near_folds()), and the shift of
+    /// the first Cholesky of compute(..., true): 0.8. The same number, so
+    /// that where the sign test fails its factorization is the one the
+    /// eigenvalue's computation would have started with (nothing is
+    /// factored twice); and near a fold, where lambda ~ sqrt(distance to
+    /// it), the eigenvalue is reported every time it has fallen by 20 %.
+    static constexpr double near_fold_fraction = 0.8;
+
     /// Of the last compute(): Lanczos steps and factorizations (Cholesky,
     /// LDL^T, LU) it took.
     unsigned int lanczos_steps() const { return steps; }
@@ -82,11 +107,21 @@ namespace cdea
     double scale_of_spectrum = std::numeric_limits<double>::quiet_NaN();
     double spectrum_scale(const SymmetricBand &S);
 
+    /// When check() computes the smallest eigenvalue.
+    enum class Eigenvalue
+    {
+      never,
+      always,
+      near_folds
+    };
+    /// compute() and compute_near_folds().
+    TangentStability check(const SymmetricBand &S, double k, const Eigen::VectorXd &g,
+                           Eigenvalue eigenvalue);
     /// Factor S - sigma I (Cholesky) for a sigma that is >= 0 if S is
-    /// positive definite: just below the last eigenvalue if that is
-    /// positive and the factorization succeeds there, else 0. Whether S is
-    /// positive definite.
-    bool factor_definite(const SymmetricBand &S, bool with_eigenvalue);
+    /// positive definite: near_fold_fraction x the last eigenvalue if that
+    /// is positive, @p warm_shift and the factorization succeeds there, else
+    /// 0. Whether S is positive definite.
+    bool factor_definite(const SymmetricBand &S, bool warm_shift);
     /// S - shift I as a general band matrix, LU-factored in lu; false if
     /// singular.
     bool factor_lu(const SymmetricBand &S, double shift);

@@ -42,6 +42,8 @@ namespace cdea
     unsigned int max_arc_length_steps  = 400;
     double       max_displacement      = 0.;     ///< m; arc length stops beyond it (0: none)
     bool         stability_check       = false;  ///< min_eigenvalue at every step (cdea run: on)
+    /// Where the check computes the eigenvalue (Solver/Stability eigenvalue).
+    StabilityEigenvalue stability_eigenvalue = StabilityEigenvalue::every_step;
     double       breakdown_field       = 0.;     ///< V/m (0: off)
     double       residual_tolerance    = 1e-10;  ///< of the arc-length corrector
     double       update_tolerance      = 1e-10;

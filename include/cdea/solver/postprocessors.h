@@ -79,18 +79,24 @@ namespace cdea
     std::optional<double> reference;
   };
 
-  /// Smallest eigenvalue of the tangent with loads held (NaN when off) and
-  /// whether the state is stable.
+  /// Smallest eigenvalue of the tangent with loads held (NaN when off, and
+  /// with near_folds where it was not computed) and whether the state is
+  /// stable. With near_folds the first evaluation computes the eigenvalue
+  /// all the same: it is the reference the later ones compare with, so a
+  /// run's column does not depend on what the model computed before it.
   class Stability final : public Postprocessor
   {
   public:
-    explicit Stability(bool enabled)
+    explicit Stability(bool enabled, StabilityEigenvalue eigenvalue = StabilityEigenvalue::every_step)
       : enabled(enabled)
+      , eigenvalue(eigenvalue)
     {}
     void evaluate(StepContext &context, StepSummary &summary) override;
 
   private:
-    bool enabled;
+    bool                enabled;
+    StabilityEigenvalue eigenvalue;
+    bool                first = true;
   };
 
   /// Largest true electric field and where (NaN when off).
@@ -126,8 +132,9 @@ namespace cdea
   };
 
   /// The postprocessors every run has, in order: model quantities, stroke,
-  /// stability, field.
-  std::vector<std::unique_ptr<Postprocessor>> standard_postprocessors(double prestretch,
-                                                                      bool   stability_check,
-                                                                      bool   field_check);
+  /// stability (if @p stability_check, its eigenvalue where @p eigenvalue
+  /// says), field.
+  std::vector<std::unique_ptr<Postprocessor>>
+  standard_postprocessors(double prestretch, bool stability_check, StabilityEigenvalue eigenvalue,
+                          bool field_check);
 } // namespace cdea
