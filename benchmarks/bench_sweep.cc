@@ -6,7 +6,10 @@
 //    and per Newton iteration, and where the solves go (load stages up to the
 //    base state, continuation, root finding of the lines, failed solves near
 //    folds, as the rows count them). Then the pieces of a row, timed one by
-//    one on the r_v/a = 1.7 layout.
+//    one on the r_v/a = 1.7 layout; among them the load stages to the base
+//    state (CPU medians) without the stability check, with it and the
+//    eigenvalue at every step, and with it near folds (Solver/Stability
+//    eigenvalue), with their ratios to the first.
 // 2. Whole processes as a user runs them, each PROCESS_RUNS times (0: none):
 //    `cdea sweep FILE` and `mpirun -np RANKS cdea sweep FILE`; median wall
 //    times and the speed-up on RANKS ranks (start-up of the process included).
@@ -14,7 +17,10 @@
 //   build/benchmarks/bench_sweep [FILE.prm] [RUNS] [PROCESS_RUNS] [RANKS]
 //
 // Fails (exit code 1) if a row does not reach its base state, a row has no
-// red line, or a figure is not finite; ctest runs it with 1 0 (label
+// red line, a figure is not finite, the three load-stage runs end in
+// different states (final displacement, bit for bit), or the stable columns
+// of the two checks differ (or an eigenvalue near folds differs from every
+// step's by more than 1e-10 relative); ctest runs it with 1 0 (label
 // bench-smoke). doc/design-maps.md ("Speed") quotes it.
 
 #include <cdea/input/solver_settings.h>

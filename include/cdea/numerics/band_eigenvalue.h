@@ -107,6 +107,29 @@ namespace cdea
     double scale_of_spectrum = std::numeric_limits<double>::quiet_NaN();
     double spectrum_scale(const SymmetricBand &S);
 
+    /// The last band matrix handed to compute() or compute_near_folds() (its
+    /// band, excluded dofs and rank-one term) and the answer: near folds, a
+    /// state reported twice (the end of one stage is the start of the next)
+    /// is checked once.
+    struct LastCheck
+    {
+      std::vector<double>       band;
+      std::vector<unsigned int> excluded;
+      double                    k = 0.;
+      Eigen::VectorXd           g;
+      TangentStability          result;
+    };
+    LastCheck last;
+    /// Whether A, excluded, k, g are those of the last check.
+    bool same_as_last(const BandMatrix &A, const std::vector<unsigned int> &excluded, double k,
+                      const Eigen::VectorXd &g) const;
+    /// check() on the symmetric part of A (near folds, or with the
+    /// eigenvalue or without); near folds the last answer if A, excluded,
+    /// k, g are the last ones.
+    TangentStability check_band(const BandMatrix &A, const std::vector<unsigned int> &excluded,
+                                double k, const Eigen::VectorXd &g, bool with_eigenvalue,
+                                bool near_folds);
+
     /// When check() computes the smallest eigenvalue.
     enum class Eigenvalue
     {
