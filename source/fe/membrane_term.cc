@@ -102,36 +102,64 @@ namespace cdea
     return true;
   }
 
+  namespace
+  {
+    /// The coefficients of one point's tangent (add_point_tangent()).
+    struct TangentCoefficients
+    {
+      double a1, a2, a3, c;
+    };
+
+    /// K += the tangent of one point, for N dofs per cell known at compile
+    /// time (the j loops unrolled and vectorized: the same operations per
+    /// entry, so the same numbers) or N = 0, n at run time with @p mask_store
+    /// (2n) for the masked gradients. K (restrict) aliases no input.
+    template <unsigned int N>
+    void add_tangent_rows(const unsigned int n_run, const TangentCoefficients &k,
+                          const double *dl1, const double *dl2, const double *g,
+                          const unsigned int *comp, double *mask_store, double *__restrict K)
+    {
+      const unsigned int n = N == 0 ? n_run : N;
+      double             mask_local[N == 0 ? 1 : 2 * N];
+      double            *gm_all = N == 0 ? mask_store : mask_local;
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          gm_all[j]     = comp[j] == 0 ? g[j] : 0.;
+          gm_all[n + j] = comp[j] == 0 ? 0. : g[j];
+        }
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const double  u  = k.a1 * dl1[i] + k.a2 * dl2[i], v = k.a2 * dl1[i] + k.a3 * dl2[i];
+          const double  cg = k.c * g[i];
+          const double *gm = gm_all + (comp[i] == 0 ? 0 : n);
+          double       *row = K + i * n;
+          for (unsigned int j = 0; j < n; ++j)
+            row[j] += u * dl1[j] + v * dl2[j] + cg * gm[j];
+        }
+    }
+  } // namespace
+
   // w [t11 dl1_i dl1_j + t12 (dl1_i dl2_j + dl2_i dl1_j) + t22 dl2_i dl2_j
   //    + s1 ((dr'_i dr'_j + dz'_i dz'_j) - dl1_i dl1_j) / l1]
   // = u_i dl1_j + v_i dl2_j + [same component] c g_i g_j with
   // u = w ((t11 - s1/l1) dl1 + t12 dl2), v = w (t12 dl1 + t22 dl2), c = w s1/l1.
   // The bracket as g masked by the row's component (g_j or 0), dl2_j = 0 for
   // a z dof: every row is one contiguous loop over j with the same numbers
-  // as the sum without its zero terms (only a zero's sign may differ).
+  // as the sum without its zero terms (only a zero's sign may differ). The
+  // rows for 2 (p + 1) dofs, p = 1..8, compiled for each n.
   void MembraneTerm::add_point_tangent(const LawResponse &law, const PointKinematics &p,
                                        const double w, const CellScratch &s, double *K) const
   {
-    const unsigned int   n  = mesh.dofs_per_cell();
-    const StressTangent &t  = law.tangent;
-    const double         c  = w * law.stress.s1 / p.l1;
-    const double         a1 = w * t.s11 - c, a2 = w * t.s12, a3 = w * t.s22;
-    const double        *dl1 = s.dl1.data(), *dl2 = s.dl2.data(), *g = s.gradient.data();
-    const auto          &comp = mesh.component;
-    for (unsigned int j = 0; j < n; ++j)
-      {
-        g_masked[j]     = comp[j] == 0 ? g[j] : 0.;
-        g_masked[n + j] = comp[j] == 0 ? 0. : g[j];
-      }
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        const double  u = a1 * dl1[i] + a2 * dl2[i], v = a2 * dl1[i] + a3 * dl2[i];
-        const double  cg = c * g[i];
-        const double *gm  = g_masked.data() + (comp[i] == 0 ? 0 : n);
-        double       *row = K + i * n;
-        for (unsigned int j = 0; j < n; ++j)
-          row[j] += u * dl1[j] + v * dl2[j] + cg * gm[j];
-      }
+    const unsigned int        n = mesh.dofs_per_cell();
+    const StressTangent      &t = law.tangent;
+    const double              c = w * law.stress.s1 / p.l1;
+    const TangentCoefficients k{w * t.s11 - c, w * t.s12, w * t.s22, c};
+    const double *dl1 = s.dl1.data(), *dl2 = s.dl2.data(), *g = s.gradient.data();
+    const unsigned int *comp = mesh.component.data();
+    double             *mask = g_masked.data();
+    with_dofs_per_cell(n, [&](auto n_fixed) {
+      add_tangent_rows<n_fixed()>(n, k, dl1, dl2, g, comp, mask, K);
+    });
   }
 
   // The residual w (s1 dl1_i + s2 dl2_i) at a point R = x0 + h xi moves with

@@ -21,6 +21,21 @@ namespace cdea
     /// arithmetic). Wider bands go to LAPACK.
     constexpr unsigned int widest_inline_band = 64;
 
+    /// target[i] += column[i] * factor for i = 1..bw (BW as in band_lu()):
+    /// two columns of the band, which never overlap (restrict), so that the
+    /// loop vectorizes with the same operation per entry.
+    template <unsigned int BW>
+    inline void add_multiple(const unsigned int bw_run, const double factor,
+                             const double *__restrict column, double *__restrict target)
+    {
+      const unsigned int bw    = BW != 0 ? BW : bw_run;
+      const unsigned int first = bw % 2 == 1 ? 2 : 1; // then an even count
+      if (first == 2)
+        target[1] += column[1] * factor;
+      for (unsigned int i = first; i <= bw; ++i)
+        target[i] += column[i] * factor;
+    }
+
     /// dgbtf2 on A(i, j) at ab[(kv + i - j) + j ld], kv = 2 bw: partial
     /// pivoting by rows, multipliers scaled by the pivot's reciprocal, the
     /// trailing band updated column by column; the rows of fill-in zeroed as
@@ -70,8 +85,7 @@ namespace cdea
               if (factor == 0.)
                 continue;
               if (km == bw)
-                for (unsigned int i = 1; i <= bw; ++i)
-                  target[i] += column[i] * factor;
+                add_multiple<BW>(bw, factor, column, target);
               else
                 for (unsigned int i = 1; i <= km; ++i)
                   target[i] += column[i] * factor;
