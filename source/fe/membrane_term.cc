@@ -40,80 +40,38 @@ namespace cdea
     return {internal_old.data() + k, internal_current.data() + k, dt, scheme};
   }
 
-  bool MembraneTerm::add_cell(const CellInput &in, const unsigned int flags, CellScratch &s,
-                              CellContribution &out)
-  {
-    const unsigned int n     = mesh.dofs_per_cell();
-    const ShapeTable  &rule  = mesh.energy_rule;
-    const auto        &comp  = mesh.component;
-    const unsigned int ring  = in.cell->ring;
-    const double       h     = in.cell->h;
-    const bool         first = flags & (assemble_residual | assemble_tangent |
-                                assemble_parameter_derivatives);
-    unsigned int request = 0;
-    if (flags & assemble_energy)
-      request |= law_energy;
-    if (first)
-      request |= law_stress;
-    // The shape derivatives need the tangent (the stresses change with the stretches).
-    if (flags & (assemble_tangent | assemble_parameter_derivatives))
-      request |= law_tangent;
-    if (request == 0)
-      return true;
-
-    for (unsigned int q = 0; q < rule.size(); ++q)
-      {
-        const PointKinematics p    = kinematics(mesh, rule, q, *in.cell, in.x);
-        const double          w    = two_pi_H * p.R * h * rule.weights[q];
-        const LawInput        at   = law_input(p, ring);
-        const InternalStep    step = internal_step(in.index, q);
-        LawResponse           law;
-        if (!(p.l1 > 0.) || !law_->evaluate(at, step, request, law))
-          return false;
-        out.energy += w * law.energy;
-        if (!first)
-          continue;
-        // First variations: dl1 = (r' dr' + z' dz') / l1, dl2 = dr / R.
-        const double *value = &rule.value[q * n], *deriv = &rule.derivative[q * n];
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            s.gradient[i] = deriv[i] / h;
-            s.dl1[i]      = (comp[i] == 0 ? p.dr : p.dz) * s.gradient[i] / p.l1;
-            s.dl2[i]      = comp[i] == 0 ? value[i] / p.R : 0.;
-            out.residual[i] += w * (law.stress.s1 * s.dl1[i] + law.stress.s2 * s.dl2[i]);
-          }
-        if (flags & assemble_tangent)
-          add_point_tangent(law, p, w, s, out.tangent.data());
-        if (flags & assemble_parameter_derivatives)
-          {
-            for (const auto &[parameter, column] : law_parameter_columns(*in.layout, ring))
-              {
-                double        dW = 0.;
-                NominalStress ds{0., 0.};
-                if (!law_->parameter_derivative(at, step, parameter, dW, ds))
-                  continue;
-                for (unsigned int i = 0; i < n; ++i)
-                  out.parameter_residual[column * n + i] +=
-                    w * (ds.s1 * s.dl1[i] + ds.s2 * s.dl2[i]);
-              }
-            add_geometry_derivative(p, h, w, rule.points[q], law, s, out);
-          }
-      }
-    return true;
-  }
-
   namespace
   {
+    /// At one point: the shape gradients g = d/dR, the first variations
+    /// dl1 = (r' dr' + z' dz') / l1 and dl2 = dr / R, and the residual
+    /// w (s1 dl1 + s2 dl2) added. N as in with_dofs_per_cell(); the outputs
+    /// (restrict) alias nothing else.
+    template <unsigned int N>
+    void add_first_variations(const unsigned int n_run, const PointKinematics &p, const double h,
+                              const double w, const NominalStress &stress, const double *value,
+                              const double *deriv, const unsigned int *comp,
+                              double *__restrict g, double *__restrict dl1,
+                              double *__restrict dl2, double *__restrict residual)
+    {
+      const unsigned int n = N == 0 ? n_run : N;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          g[i]   = deriv[i] / h;
+          dl1[i] = (comp[i] == 0 ? p.dr : p.dz) * g[i] / p.l1;
+          dl2[i] = comp[i] == 0 ? value[i] / p.R : 0.;
+          residual[i] += w * (stress.s1 * dl1[i] + stress.s2 * dl2[i]);
+        }
+    }
+
     /// The coefficients of one point's tangent (add_point_tangent()).
     struct TangentCoefficients
     {
       double a1, a2, a3, c;
     };
 
-    /// K += the tangent of one point, for N dofs per cell known at compile
-    /// time (the j loops unrolled and vectorized: the same operations per
-    /// entry, so the same numbers) or N = 0, n at run time with @p mask_store
-    /// (2n) for the masked gradients. K (restrict) aliases no input.
+    /// K += the tangent of one point, N as in with_dofs_per_cell(), with
+    /// @p mask_store (2n) for the masked gradients if N = 0 (else on the
+    /// stack). K (restrict) aliases no input.
     template <unsigned int N>
     void add_tangent_rows(const unsigned int n_run, const TangentCoefficients &k,
                           const double *dl1, const double *dl2, const double *g,
@@ -145,21 +103,84 @@ namespace cdea
   // u = w ((t11 - s1/l1) dl1 + t12 dl2), v = w (t12 dl1 + t22 dl2), c = w s1/l1.
   // The bracket as g masked by the row's component (g_j or 0), dl2_j = 0 for
   // a z dof: every row is one contiguous loop over j with the same numbers
-  // as the sum without its zero terms (only a zero's sign may differ). The
-  // rows for 2 (p + 1) dofs, p = 1..8, compiled for each n.
+  // as the sum without its zero terms (only a zero's sign may differ).
+  template <unsigned int N>
   void MembraneTerm::add_point_tangent(const LawResponse &law, const PointKinematics &p,
                                        const double w, const CellScratch &s, double *K) const
   {
-    const unsigned int        n = mesh.dofs_per_cell();
     const StressTangent      &t = law.tangent;
     const double              c = w * law.stress.s1 / p.l1;
     const TangentCoefficients k{w * t.s11 - c, w * t.s12, w * t.s22, c};
-    const double *dl1 = s.dl1.data(), *dl2 = s.dl2.data(), *g = s.gradient.data();
-    const unsigned int *comp = mesh.component.data();
-    double             *mask = g_masked.data();
-    with_dofs_per_cell(n, [&](auto n_fixed) {
-      add_tangent_rows<n_fixed()>(n, k, dl1, dl2, g, comp, mask, K);
+    add_tangent_rows<N>(mesh.dofs_per_cell(), k, s.dl1.data(), s.dl2.data(),
+                        s.gradient.data(), mesh.component.data(), g_masked.data(), K);
+  }
+
+  bool MembraneTerm::add_cell(const CellInput &in, const unsigned int flags, CellScratch &s,
+                              CellContribution &out)
+  {
+    const bool first =
+      flags & (assemble_residual | assemble_tangent | assemble_parameter_derivatives);
+    unsigned int request = 0;
+    if (flags & assemble_energy)
+      request |= law_energy;
+    if (first)
+      request |= law_stress;
+    // The shape derivatives need the tangent (the stresses change with the stretches).
+    if (flags & (assemble_tangent | assemble_parameter_derivatives))
+      request |= law_tangent;
+    if (request == 0)
+      return true;
+    bool regular = true;
+    with_dofs_per_cell(mesh.dofs_per_cell(), [&](auto n_fixed) {
+      regular = add_cell_points<n_fixed()>(in, flags, request, s, out);
     });
+    return regular;
+  }
+
+  template <unsigned int N>
+  bool MembraneTerm::add_cell_points(const CellInput &in, const unsigned int flags,
+                                     const unsigned int request, CellScratch &s,
+                                     CellContribution &out)
+  {
+    const unsigned int n     = N == 0 ? mesh.dofs_per_cell() : N;
+    const ShapeTable  &rule  = mesh.energy_rule;
+    const unsigned int ring  = in.cell->ring;
+    const double       h     = in.cell->h;
+    const bool         first = request & law_stress;
+    for (unsigned int q = 0; q < rule.size(); ++q)
+      {
+        const PointKinematics p    = kinematics<N>(mesh, rule, q, *in.cell, in.x);
+        const double          w    = two_pi_H * p.R * h * rule.weights[q];
+        const LawInput        at   = law_input(p, ring);
+        const InternalStep    step = internal_step(in.index, q);
+        LawResponse           law;
+        if (!(p.l1 > 0.) || !law_->evaluate(at, step, request, law))
+          return false;
+        out.energy += w * law.energy;
+        if (!first)
+          continue;
+        add_first_variations<N>(n, p, h, w, law.stress, &rule.value[q * n],
+                                &rule.derivative[q * n], mesh.component.data(),
+                                s.gradient.data(), s.dl1.data(), s.dl2.data(),
+                                out.residual.data());
+        if (flags & assemble_tangent)
+          add_point_tangent<N>(law, p, w, s, out.tangent.data());
+        if (flags & assemble_parameter_derivatives)
+          {
+            for (const auto &[parameter, column] : law_parameter_columns(*in.layout, ring))
+              {
+                double        dW = 0.;
+                NominalStress ds{0., 0.};
+                if (!law_->parameter_derivative(at, step, parameter, dW, ds))
+                  continue;
+                for (unsigned int i = 0; i < n; ++i)
+                  out.parameter_residual[column * n + i] +=
+                    w * (ds.s1 * s.dl1[i] + ds.s2 * s.dl2[i]);
+              }
+            add_geometry_derivative(p, h, w, rule.points[q], law, s, out);
+          }
+      }
+    return true;
   }
 
   // The residual w (s1 dl1_i + s2 dl2_i) at a point R = x0 + h xi moves with

@@ -102,12 +102,14 @@ namespace cdea
     double l1, l2;          ///< sqrt(dr^2 + dz^2), r / R
   };
 
-  /// At point @p q of @p table on @p cell with local dof values @p x.
+  /// At point @p q of @p table on @p cell with local dof values @p x; N =
+  /// the dofs per cell at compile time (with_dofs_per_cell()) or 0.
+  template <unsigned int N = 0>
   inline PointKinematics kinematics(const Discretization &mesh, const ShapeTable &table,
                                     const unsigned int q, const MeshCell &cell,
                                     const double *x)
   {
-    const unsigned int n = mesh.dofs_per_cell();
+    const unsigned int n = N == 0 ? mesh.dofs_per_cell() : N;
     const double      *v = &table.value[q * n], *d = &table.derivative[q * n];
     PointKinematics    p{cell.x0 + cell.h * table.points[q], 0., 0., 0., 0., 0., 0.};
     for (unsigned int i = 0; i < n; ++i)

@@ -77,7 +77,14 @@ namespace cdea
                                  const LawResponse &law, const CellScratch &scratch,
                                  CellContribution &out) const;
 
+    /// add_cell() at every point for the @p request of the law; N = the
+    /// dofs per cell at compile time or 0 (with_dofs_per_cell()).
+    template <unsigned int N>
+    bool add_cell_points(const CellInput &cell, unsigned int flags, unsigned int request,
+                         CellScratch &scratch, CellContribution &contribution);
+
     /// The tangent of one point added into @p K (local, row-major).
+    template <unsigned int N>
     void add_point_tangent(const LawResponse &law, const PointKinematics &p, double w,
                            const CellScratch &s, double *K) const;
 
