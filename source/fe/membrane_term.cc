@@ -11,6 +11,22 @@ namespace cdea
     , voltages(scene.n_rings(), 0.)
   {
     g_masked.resize(2 * mesh.dofs_per_cell());
+    // The mesh never moves: d/dR = (d/dxi) / h and value / R at each point
+    // once, with R as kinematics() forms it, instead of at every assembly.
+    const ShapeTable  &rule = mesh.energy_rule;
+    const unsigned int n    = mesh.dofs_per_cell();
+    shape_gradient.reserve(std::size_t(mesh.n_cells()) * rule.size() * n);
+    shape_over_R.reserve(shape_gradient.capacity());
+    for (const MeshCell &cell : mesh.cells)
+      for (unsigned int q = 0; q < rule.size(); ++q)
+        {
+          const double R = cell.x0 + cell.h * rule.points[q];
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              shape_gradient.push_back(rule.derivative[q * n + i] / cell.h);
+              shape_over_R.push_back(rule.value[q * n + i] / R);
+            }
+        }
     set_law(std::move(law));
   }
 
@@ -42,23 +58,23 @@ namespace cdea
 
   namespace
   {
-    /// At one point: the shape gradients g = d/dR, the first variations
-    /// dl1 = (r' dr' + z' dz') / l1 and dl2 = dr / R, and the residual
-    /// w (s1 dl1 + s2 dl2) added. N as in with_dofs_per_cell(); the outputs
+    /// At one point: the shape gradients g = d/dR (@p gradient), the first
+    /// variations dl1 = (r' dr' + z' dz') / l1 and dl2 = dr / R (@p over_R:
+    /// the shape values over R), and the residual w (s1 dl1 + s2 dl2) added. N as in with_dofs_per_cell(); the outputs
     /// (restrict) alias nothing else.
     template <unsigned int N>
-    void add_first_variations(const unsigned int n_run, const PointKinematics &p, const double h,
-                              const double w, const NominalStress &stress, const double *value,
-                              const double *deriv, const unsigned int *comp,
+    void add_first_variations(const unsigned int n_run, const PointKinematics &p, const double w,
+                              const NominalStress &stress, const double *gradient,
+                              const double *over_R, const unsigned int *comp,
                               double *__restrict g, double *__restrict dl1,
                               double *__restrict dl2, double *__restrict residual)
     {
       const unsigned int n = N == 0 ? n_run : N;
       for (unsigned int i = 0; i < n; ++i)
         {
-          g[i]   = deriv[i] / h;
+          g[i]   = gradient[i];
           dl1[i] = (comp[i] == 0 ? p.dr : p.dz) * g[i] / p.l1;
-          dl2[i] = comp[i] == 0 ? value[i] / p.R : 0.;
+          dl2[i] = comp[i] == 0 ? over_R[i] : 0.;
           residual[i] += w * (stress.s1 * dl1[i] + stress.s2 * dl2[i]);
         }
     }
@@ -159,8 +175,9 @@ namespace cdea
         out.energy += w * law.energy;
         if (!first)
           continue;
-        add_first_variations<N>(n, p, h, w, law.stress, &rule.value[q * n],
-                                &rule.derivative[q * n], mesh.component.data(),
+        const std::size_t at_point = (std::size_t(in.index) * rule.size() + q) * n;
+        add_first_variations<N>(n, p, w, law.stress, &shape_gradient[at_point],
+                                &shape_over_R[at_point], mesh.component.data(),
                                 s.gradient.data(), s.dl1.data(), s.dl2.data(),
                                 out.residual.data());
         if (flags & assemble_tangent)

@@ -93,6 +93,9 @@ namespace cdea
     /// The shape gradients masked by component (r dofs, then z dofs), work
     /// storage of add_point_tangent().
     mutable std::vector<double> g_masked;
+    /// Per point of energy_rule, cell by cell ([(c * points + q) * n + i]):
+    /// the shape gradients d/dR and the shape values over R.
+    std::vector<double> shape_gradient, shape_over_R;
     std::shared_ptr<const MembraneLaw> law_;
     std::vector<double>                voltages;
     double                             dt     = 0.;
