@@ -153,30 +153,49 @@ namespace cdea
       }
   }
 
+  namespace
+  {
+    /// A(dofs[i], dofs[j]) += K[i n + j] for a local n x n matrix K
+    /// (row-major), column by column of the band storage; N = n at compile
+    /// time (with_dofs_per_cell()) or 0. One addition per entry, as before:
+    /// the dofs of a cell differ, so no entry is added twice.
+    template <unsigned int N>
+    void add_local_matrix(const unsigned int n_run, const unsigned int *dofs, const double *K,
+                          BandMatrix &A)
+    {
+      const unsigned int n = N == 0 ? n_run : N;
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          double *column = A.column(dofs[j]);
+          for (unsigned int i = 0; i < n; ++i)
+            column[dofs[i]] += K[i * n + j];
+        }
+    }
+  } // namespace
+
   void CellKernel::scatter(const unsigned int *dofs, const unsigned int flags,
                            AssembledSystem &system) const
   {
     const unsigned int n = mesh.dofs_per_cell();
     system.energy += local.energy;
     system.volume += local.volume;
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        if (flags & assemble_residual)
-          system.residual[dofs[i]] += local.residual[i];
-        if (flags & assemble_tangent)
-          for (unsigned int j = 0; j < n; ++j)
-            system.tangent(dofs[i], dofs[j]) += local.tangent[i * n + j];
-        if (flags & assemble_parameter_derivatives)
-          for (unsigned int p = 0; p < layout.size(); ++p)
-            system.parameter_residual[p][dofs[i]] += local.parameter_residual[p * n + i];
-        if (flags & assemble_volume)
-          {
-            system.volume_gradient[dofs[i]] += local.volume_gradient[i];
-            if (flags & assemble_tangent)
-              for (unsigned int j = 0; j < n; ++j)
-                system.volume_hessian(dofs[i], dofs[j]) += local.volume_hessian[i * n + j];
-          }
-      }
+    if (flags & assemble_residual)
+      for (unsigned int i = 0; i < n; ++i)
+        system.residual[dofs[i]] += local.residual[i];
+    if (flags & assemble_parameter_derivatives)
+      for (unsigned int p = 0; p < layout.size(); ++p)
+        for (unsigned int i = 0; i < n; ++i)
+          system.parameter_residual[p][dofs[i]] += local.parameter_residual[p * n + i];
+    if (flags & assemble_volume)
+      for (unsigned int i = 0; i < n; ++i)
+        system.volume_gradient[dofs[i]] += local.volume_gradient[i];
+    if (!(flags & assemble_tangent))
+      return;
+    with_dofs_per_cell(n, [&](auto n_fixed) {
+      add_local_matrix<n_fixed()>(n, dofs, local.tangent.data(), system.tangent);
+      if (flags & assemble_volume)
+        add_local_matrix<n_fixed()>(n, dofs, local.volume_hessian.data(), system.volume_hessian);
+    });
   }
 
   bool CellKernel::assemble(const Eigen::VectorXd &x, unsigned int flags,

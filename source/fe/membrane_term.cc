@@ -11,6 +11,22 @@ namespace cdea
     , voltages(scene.n_rings(), 0.)
   {
     g_masked.resize(2 * mesh.dofs_per_cell());
+    // The mesh never moves: d/dR = (d/dxi) / h and value / R at each point
+    // once, with R as kinematics() forms it, instead of at every assembly.
+    const ShapeTable  &rule = mesh.energy_rule;
+    const unsigned int n    = mesh.dofs_per_cell();
+    shape_gradient.reserve(std::size_t(mesh.n_cells()) * rule.size() * n);
+    shape_over_R.reserve(shape_gradient.capacity());
+    for (const MeshCell &cell : mesh.cells)
+      for (unsigned int q = 0; q < rule.size(); ++q)
+        {
+          const double R = cell.x0 + cell.h * rule.points[q];
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              shape_gradient.push_back(rule.derivative[q * n + i] / cell.h);
+              shape_over_R.push_back(rule.value[q * n + i] / R);
+            }
+        }
     set_law(std::move(law));
   }
 
@@ -40,16 +56,86 @@ namespace cdea
     return {internal_old.data() + k, internal_current.data() + k, dt, scheme};
   }
 
+  namespace
+  {
+    /// At one point: the shape gradients g = d/dR (@p gradient), the first
+    /// variations dl1 = (r' dr' + z' dz') / l1 and dl2 = dr / R (@p over_R:
+    /// the shape values over R), and the residual w (s1 dl1 + s2 dl2) added. N as in with_dofs_per_cell(); the outputs
+    /// (restrict) alias nothing else.
+    template <unsigned int N>
+    void add_first_variations(const unsigned int n_run, const PointKinematics &p, const double w,
+                              const NominalStress &stress, const double *gradient,
+                              const double *over_R, const unsigned int *comp,
+                              double *__restrict g, double *__restrict dl1,
+                              double *__restrict dl2, double *__restrict residual)
+    {
+      const unsigned int n = N == 0 ? n_run : N;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          g[i]   = gradient[i];
+          dl1[i] = (comp[i] == 0 ? p.dr : p.dz) * g[i] / p.l1;
+          dl2[i] = comp[i] == 0 ? over_R[i] : 0.;
+          residual[i] += w * (stress.s1 * dl1[i] + stress.s2 * dl2[i]);
+        }
+    }
+
+    /// The coefficients of one point's tangent (add_point_tangent()).
+    struct TangentCoefficients
+    {
+      double a1, a2, a3, c;
+    };
+
+    /// K += the tangent of one point, N as in with_dofs_per_cell(), with
+    /// @p mask_store (2n) for the masked gradients if N = 0 (else on the
+    /// stack). K (restrict) aliases no input.
+    template <unsigned int N>
+    void add_tangent_rows(const unsigned int n_run, const TangentCoefficients &k,
+                          const double *dl1, const double *dl2, const double *g,
+                          const unsigned int *comp, double *mask_store, double *__restrict K)
+    {
+      const unsigned int n = N == 0 ? n_run : N;
+      double             mask_local[N == 0 ? 1 : 2 * N];
+      double            *gm_all = N == 0 ? mask_store : mask_local;
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          gm_all[j]     = comp[j] == 0 ? g[j] : 0.;
+          gm_all[n + j] = comp[j] == 0 ? 0. : g[j];
+        }
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const double  u  = k.a1 * dl1[i] + k.a2 * dl2[i], v = k.a2 * dl1[i] + k.a3 * dl2[i];
+          const double  cg = k.c * g[i];
+          const double *gm = gm_all + (comp[i] == 0 ? 0 : n);
+          double       *row = K + i * n;
+          for (unsigned int j = 0; j < n; ++j)
+            row[j] += u * dl1[j] + v * dl2[j] + cg * gm[j];
+        }
+    }
+  } // namespace
+
+  // w [t11 dl1_i dl1_j + t12 (dl1_i dl2_j + dl2_i dl1_j) + t22 dl2_i dl2_j
+  //    + s1 ((dr'_i dr'_j + dz'_i dz'_j) - dl1_i dl1_j) / l1]
+  // = u_i dl1_j + v_i dl2_j + [same component] c g_i g_j with
+  // u = w ((t11 - s1/l1) dl1 + t12 dl2), v = w (t12 dl1 + t22 dl2), c = w s1/l1.
+  // The bracket as g masked by the row's component (g_j or 0), dl2_j = 0 for
+  // a z dof: every row is one contiguous loop over j with the same numbers
+  // as the sum without its zero terms (only a zero's sign may differ).
+  template <unsigned int N>
+  void MembraneTerm::add_point_tangent(const LawResponse &law, const PointKinematics &p,
+                                       const double w, const CellScratch &s, double *K) const
+  {
+    const StressTangent      &t = law.tangent;
+    const double              c = w * law.stress.s1 / p.l1;
+    const TangentCoefficients k{w * t.s11 - c, w * t.s12, w * t.s22, c};
+    add_tangent_rows<N>(mesh.dofs_per_cell(), k, s.dl1.data(), s.dl2.data(),
+                        s.gradient.data(), mesh.component.data(), g_masked.data(), K);
+  }
+
   bool MembraneTerm::add_cell(const CellInput &in, const unsigned int flags, CellScratch &s,
                               CellContribution &out)
   {
-    const unsigned int n     = mesh.dofs_per_cell();
-    const ShapeTable  &rule  = mesh.energy_rule;
-    const auto        &comp  = mesh.component;
-    const unsigned int ring  = in.cell->ring;
-    const double       h     = in.cell->h;
-    const bool         first = flags & (assemble_residual | assemble_tangent |
-                                assemble_parameter_derivatives);
+    const bool first =
+      flags & (assemble_residual | assemble_tangent | assemble_parameter_derivatives);
     unsigned int request = 0;
     if (flags & assemble_energy)
       request |= law_energy;
@@ -60,10 +146,26 @@ namespace cdea
       request |= law_tangent;
     if (request == 0)
       return true;
+    bool regular = true;
+    with_dofs_per_cell(mesh.dofs_per_cell(), [&](auto n_fixed) {
+      regular = add_cell_points<n_fixed()>(in, flags, request, s, out);
+    });
+    return regular;
+  }
 
+  template <unsigned int N>
+  bool MembraneTerm::add_cell_points(const CellInput &in, const unsigned int flags,
+                                     const unsigned int request, CellScratch &s,
+                                     CellContribution &out)
+  {
+    const unsigned int n     = N == 0 ? mesh.dofs_per_cell() : N;
+    const ShapeTable  &rule  = mesh.energy_rule;
+    const unsigned int ring  = in.cell->ring;
+    const double       h     = in.cell->h;
+    const bool         first = request & law_stress;
     for (unsigned int q = 0; q < rule.size(); ++q)
       {
-        const PointKinematics p    = kinematics(mesh, rule, q, *in.cell, in.x);
+        const PointKinematics p    = kinematics<N>(mesh, rule, q, *in.cell, in.x);
         const double          w    = two_pi_H * p.R * h * rule.weights[q];
         const LawInput        at   = law_input(p, ring);
         const InternalStep    step = internal_step(in.index, q);
@@ -73,17 +175,13 @@ namespace cdea
         out.energy += w * law.energy;
         if (!first)
           continue;
-        // First variations: dl1 = (r' dr' + z' dz') / l1, dl2 = dr / R.
-        const double *value = &rule.value[q * n], *deriv = &rule.derivative[q * n];
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            s.gradient[i] = deriv[i] / h;
-            s.dl1[i]      = (comp[i] == 0 ? p.dr : p.dz) * s.gradient[i] / p.l1;
-            s.dl2[i]      = comp[i] == 0 ? value[i] / p.R : 0.;
-            out.residual[i] += w * (law.stress.s1 * s.dl1[i] + law.stress.s2 * s.dl2[i]);
-          }
+        const std::size_t at_point = (std::size_t(in.index) * rule.size() + q) * n;
+        add_first_variations<N>(n, p, w, law.stress, &shape_gradient[at_point],
+                                &shape_over_R[at_point], mesh.component.data(),
+                                s.gradient.data(), s.dl1.data(), s.dl2.data(),
+                                out.residual.data());
         if (flags & assemble_tangent)
-          add_point_tangent(law, p, w, s, out.tangent.data());
+          add_point_tangent<N>(law, p, w, s, out.tangent.data());
         if (flags & assemble_parameter_derivatives)
           {
             for (const auto &[parameter, column] : law_parameter_columns(*in.layout, ring))
@@ -100,38 +198,6 @@ namespace cdea
           }
       }
     return true;
-  }
-
-  // w [t11 dl1_i dl1_j + t12 (dl1_i dl2_j + dl2_i dl1_j) + t22 dl2_i dl2_j
-  //    + s1 ((dr'_i dr'_j + dz'_i dz'_j) - dl1_i dl1_j) / l1]
-  // = u_i dl1_j + v_i dl2_j + [same component] c g_i g_j with
-  // u = w ((t11 - s1/l1) dl1 + t12 dl2), v = w (t12 dl1 + t22 dl2), c = w s1/l1.
-  // The bracket as g masked by the row's component (g_j or 0), dl2_j = 0 for
-  // a z dof: every row is one contiguous loop over j with the same numbers
-  // as the sum without its zero terms (only a zero's sign may differ).
-  void MembraneTerm::add_point_tangent(const LawResponse &law, const PointKinematics &p,
-                                       const double w, const CellScratch &s, double *K) const
-  {
-    const unsigned int   n  = mesh.dofs_per_cell();
-    const StressTangent &t  = law.tangent;
-    const double         c  = w * law.stress.s1 / p.l1;
-    const double         a1 = w * t.s11 - c, a2 = w * t.s12, a3 = w * t.s22;
-    const double        *dl1 = s.dl1.data(), *dl2 = s.dl2.data(), *g = s.gradient.data();
-    const auto          &comp = mesh.component;
-    for (unsigned int j = 0; j < n; ++j)
-      {
-        g_masked[j]     = comp[j] == 0 ? g[j] : 0.;
-        g_masked[n + j] = comp[j] == 0 ? 0. : g[j];
-      }
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        const double  u = a1 * dl1[i] + a2 * dl2[i], v = a2 * dl1[i] + a3 * dl2[i];
-        const double  cg = c * g[i];
-        const double *gm  = g_masked.data() + (comp[i] == 0 ? 0 : n);
-        double       *row = K + i * n;
-        for (unsigned int j = 0; j < n; ++j)
-          row[j] += u * dl1[j] + v * dl2[j] + cg * gm[j];
-      }
   }
 
   // The residual w (s1 dl1_i + s2 dl2_i) at a point R = x0 + h xi moves with

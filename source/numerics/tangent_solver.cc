@@ -21,6 +21,32 @@ namespace cdea
     /// arithmetic). Wider bands go to LAPACK.
     constexpr unsigned int widest_inline_band = 64;
 
+    /// target[i] += column[i] * factor for i = 1..bw (BW as in band_lu()):
+    /// two columns of the band, which never overlap (restrict), so that the
+    /// loop vectorizes with the same operation per entry.
+    template <unsigned int BW>
+    inline void add_multiple(const unsigned int bw_run, const double factor,
+                             const double *__restrict column, double *__restrict target)
+    {
+      const unsigned int bw    = BW != 0 ? BW : bw_run;
+      const unsigned int first = bw % 2 == 1 ? 2 : 1; // then an even count
+      if (first == 2)
+        target[1] += column[1] * factor;
+      for (unsigned int i = first; i <= bw; ++i)
+        target[i] += column[i] * factor;
+    }
+
+    /// target[i] -= x * column[i] for i = 0..m-1 (M = m at compile time or
+    /// 0), in any order: each entry gets its one operation.
+    template <unsigned int M>
+    inline void subtract_multiple(const unsigned int m_run, const double x,
+                                  const double *__restrict column, double *__restrict target)
+    {
+      const unsigned int m = M != 0 ? M : m_run;
+      for (unsigned int i = 0; i < m; ++i)
+        target[i] -= x * column[i];
+    }
+
     /// dgbtf2 on A(i, j) at ab[(kv + i - j) + j ld], kv = 2 bw: partial
     /// pivoting by rows, multipliers scaled by the pivot's reciprocal, the
     /// trailing band updated column by column; the rows of fill-in zeroed as
@@ -55,23 +81,25 @@ namespace cdea
               continue;
             }
           ju = std::max(ju, std::min(j + bw + p, n - 1));
+          // Along row j: A(j + i, j + k) = column[i + k (ld - 1)].
+          const std::size_t row_step = ld - 1;
           if (p != 0)
-            for (unsigned int k = 0; k <= ju - j; ++k) // A(j + p, j + k) <-> A(j, j + k)
-              std::swap(ab[(kv + p - k) + (j + k) * ld], ab[(kv - k) + (j + k) * ld]);
+            for (std::size_t k = 0; k <= ju - j; ++k) // A(j + p, j + k) <-> A(j, j + k)
+              std::swap(column[p + k * row_step], column[k * row_step]);
           if (km == 0)
             continue;
           const double reciprocal = 1. / column[0];
           for (unsigned int i = 1; i <= km; ++i)
             column[i] *= reciprocal;
+          double *target = column; // target[i] = A(j + i, j + c)
           for (unsigned int c = 1; c <= ju - j; ++c)
             {
-              double      *target = ab + (kv - c) + (j + c) * ld; // target[i] = A(j + i, j + c)
+              target += row_step;
               const double factor = -target[0];
               if (factor == 0.)
                 continue;
               if (km == bw)
-                for (unsigned int i = 1; i <= bw; ++i)
-                  target[i] += column[i] * factor;
+                add_multiple<BW>(bw, factor, column, target);
               else
                 for (unsigned int i = 1; i <= km; ++i)
                   target[i] += column[i] * factor;
@@ -94,26 +122,25 @@ namespace cdea
           const unsigned int lm = std::min(bw, n - 1 - j);
           if (unsigned(pivots[j]) != j)
             std::swap(b[pivots[j]], b[j]);
-          const double factor = -b[j];
+          const double  factor = -b[j];
+          const double *column = ab + kv + j * ld; // column[i] = L(j + i, j)
           if (factor != 0. && lm == bw)
-            for (unsigned int i = 1; i <= bw; ++i)
-              b[j + i] += ab[kv + i + j * ld] * factor;
+            add_multiple<BW>(bw, factor, column, b + j);
           else if (factor != 0.)
             for (unsigned int i = 1; i <= lm; ++i)
-              b[j + i] += ab[kv + i + j * ld] * factor;
+              b[j + i] += column[i] * factor;
         }
       for (unsigned int j = n; j-- > 0;)
         if (b[j] != 0.)
           {
-            b[j] /= ab[kv + j * ld];
-            const double       x  = b[j];
+            const double *column = ab + (j * ld + kv - j); // column[i] = U(i, j)
+            b[j] /= column[j];
             const unsigned int lo = j > kv ? j - kv : 0;
             if (j - lo == kv)
-              for (unsigned int i = j; i-- > j - kv;)
-                b[i] -= x * ab[(kv + i - j) + j * ld];
+              subtract_multiple<2 * BW>(kv, b[j], column + lo, b + lo);
             else
               for (unsigned int i = j; i-- > lo;)
-                b[i] -= x * ab[(kv + i - j) + j * ld];
+                b[i] -= b[j] * column[i];
           }
     }
   } // namespace

@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <memory>
+#include <type_traits>
 #include <vector>
 
 namespace cdea
@@ -101,12 +102,14 @@ namespace cdea
     double l1, l2;          ///< sqrt(dr^2 + dz^2), r / R
   };
 
-  /// At point @p q of @p table on @p cell with local dof values @p x.
+  /// At point @p q of @p table on @p cell with local dof values @p x; N =
+  /// the dofs per cell at compile time (with_dofs_per_cell()) or 0.
+  template <unsigned int N = 0>
   inline PointKinematics kinematics(const Discretization &mesh, const ShapeTable &table,
                                     const unsigned int q, const MeshCell &cell,
                                     const double *x)
   {
-    const unsigned int n = mesh.dofs_per_cell();
+    const unsigned int n = N == 0 ? mesh.dofs_per_cell() : N;
     const double      *v = &table.value[q * n], *d = &table.derivative[q * n];
     PointKinematics    p{cell.x0 + cell.h * table.points[q], 0., 0., 0., 0., 0., 0.};
     for (unsigned int i = 0; i < n; ++i)
@@ -125,6 +128,28 @@ namespace cdea
     p.l1 = std::sqrt(p.dr * p.dr + p.dz * p.dz);
     p.l2 = p.r / p.R;
     return p;
+  }
+
+  /// f(std::integral_constant<unsigned int, n>{}) for the n = 2 (p + 1) dofs
+  /// per cell of the degrees p = 1..8 the input allows, else f with 0: cell
+  /// loops written for a compile-time n (unrolled and vectorized, the same
+  /// operations per entry) with n = 0 meaning "n at run time".
+  template <typename F>
+  void with_dofs_per_cell(const unsigned int n, F &&f)
+  {
+    using std::integral_constant;
+    switch (n)
+      {
+        case 4: return f(integral_constant<unsigned int, 4>{});
+        case 6: return f(integral_constant<unsigned int, 6>{});
+        case 8: return f(integral_constant<unsigned int, 8>{});
+        case 10: return f(integral_constant<unsigned int, 10>{});
+        case 12: return f(integral_constant<unsigned int, 12>{});
+        case 14: return f(integral_constant<unsigned int, 14>{});
+        case 16: return f(integral_constant<unsigned int, 16>{});
+        case 18: return f(integral_constant<unsigned int, 18>{});
+        default: return f(integral_constant<unsigned int, 0>{});
+      }
   }
 
   /// Calls f(c, q, kinematics) at every point q of @p rule in every cell c,

@@ -77,7 +77,14 @@ namespace cdea
                                  const LawResponse &law, const CellScratch &scratch,
                                  CellContribution &out) const;
 
+    /// add_cell() at every point for the @p request of the law; N = the
+    /// dofs per cell at compile time or 0 (with_dofs_per_cell()).
+    template <unsigned int N>
+    bool add_cell_points(const CellInput &cell, unsigned int flags, unsigned int request,
+                         CellScratch &scratch, CellContribution &contribution);
+
     /// The tangent of one point added into @p K (local, row-major).
+    template <unsigned int N>
     void add_point_tangent(const LawResponse &law, const PointKinematics &p, double w,
                            const CellScratch &s, double *K) const;
 
@@ -86,6 +93,9 @@ namespace cdea
     /// The shape gradients masked by component (r dofs, then z dofs), work
     /// storage of add_point_tangent().
     mutable std::vector<double> g_masked;
+    /// Per point of energy_rule, cell by cell ([(c * points + q) * n + i]):
+    /// the shape gradients d/dR and the shape values over R.
+    std::vector<double> shape_gradient, shape_over_R;
     std::shared_ptr<const MembraneLaw> law_;
     std::vector<double>                voltages;
     double                             dt     = 0.;

@@ -24,6 +24,11 @@ namespace cdea
     {
       return values[(2 * bw + i - j) + std::size_t(j) * (3 * bw + 1)];
     }
+    /// Column j: A(i, j) = column(j)[i] for |i - j| <= bandwidth.
+    double *column(const unsigned int j)
+    {
+      return values.data() + (std::size_t(j) * (3 * bw + 1) + 2 * bw - j);
+    }
     /// Entry (i, j), zero outside the band.
     double entry(unsigned int i, unsigned int j) const;
 
