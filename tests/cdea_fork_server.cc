@@ -246,17 +246,20 @@ namespace
     _exit(0);
   }
 
+  /// The socket appears at PATH only once it listens (bound under another
+  /// name, then renamed): whoever waits for PATH to exist may connect at once.
   int listen_on(const char *path)
   {
-    const int socket_fd = socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
-    sockaddr_un address{};
+    const int         socket_fd = socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    const std::string bound     = std::string(path) + ".new";
+    sockaddr_un       address{};
     address.sun_family = AF_UNIX;
-    if (socket_fd < 0 || std::strlen(path) >= sizeof address.sun_path)
+    if (socket_fd < 0 || bound.size() >= sizeof address.sun_path)
       fail("socket");
-    std::strcpy(address.sun_path, path);
-    unlink(path);
+    std::strcpy(address.sun_path, bound.c_str());
+    unlink(bound.c_str());
     if (bind(socket_fd, reinterpret_cast<sockaddr *>(&address), sizeof address) != 0 ||
-        listen(socket_fd, 64) != 0)
+        listen(socket_fd, 64) != 0 || rename(bound.c_str(), path) != 0)
       fail(path);
     return socket_fd;
   }

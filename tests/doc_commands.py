@@ -163,7 +163,7 @@ def scratch_copy(src, build, work):
 cdea={shlex.quote(os.path.join(build, 'cdea'))}
 [ -n "${{CDEA_FORK_SOCKET:-}}" ] && cdea={shlex.quote(fork_program(build, 'client'))}
 case "$1" in
-  run|shoot|compare|sweep|optimize|fit)
+  run|shoot|compare|sweep|response|frequency-sweep|optimize|fit|chart)
     extra=()
     while IFS= read -r item; do [ -n "$item" ] && extra+=(--set "$item"); done <<< "$CDEA_DOC_SET"
     exec "$cdea" "$@" "${{extra[@]}}" ;;

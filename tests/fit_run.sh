@@ -70,7 +70,8 @@ sed -e 's#set Directory           = results#set Directory = stopped#' \
     -e "s#prm/fit-creep-voltages.csv#$src/prm/fit-creep-voltages.csv#" "$src/prm/fit-creep.prm" > creep.prm
 "$exe" fit creep.prm "$src/prm/fit-creep.csv" --set 'Calibration/Free parameters=shear modulus, branch 2 shear modulus, branch 3 shear modulus, branch 2 relaxation time, branch 3 relaxation time' > creep.txt 2>&1 &
 creep_pid=$!
-sleep 1
+# (once its first iteration is printed: within the work, with values reached)
+for _ in $(seq 1200); do grep -q "^ *0 " creep.txt && break; sleep 0.02; done
 kill -TERM $creep_pid
 wait $creep_pid
 rc=$?
