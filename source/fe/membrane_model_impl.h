@@ -97,15 +97,15 @@ namespace cdea
     /// 10 eps max_i sum_j |K_ij| |x_j| with the tangent of the last assembly
     /// that had one: a residual entry is a difference of terms that large
     /// (the positions carry eps |x| each, the tangent turns that into forces).
-    /// Only within 10 % of the Gent limit (0 elsewhere): the cause this
-    /// floor is for; elsewhere Newton converges as it always did.
+    /// Used only with NewtonSettings::converge_at_round_off (off by
+    /// default): near the Gent limit, and on fine meshes (from 8192
+    /// elements of the default case), where eps |K| |x| passes the tolerance.
     double residual_floor(const Eigen::VectorXd &x) const override;
 
     /// The largest (I - 3) / Jlim over the quadrature points at @p x (1 at
     /// the Gent limit; 0 if not finite), and its reference radius @p where.
     double gent_fraction(const Eigen::VectorXd &x, double &where) const;
-    /// Within 10 % of the Gent limit: where Newton may stop at the
-    /// residual's round-off level, and a failure names the limit.
+    /// Within 10 % of the Gent limit: where a failure names the limit.
     static constexpr double near_gent_limit = 0.9;
     /// Why a solve that ended at @p x may have failed, if the Gent limit
     /// is the cause: where gent_fraction() exceeds near_gent_limit, a

@@ -128,6 +128,25 @@ namespace cdea
       return KD != 0 ? KD : kd;
     }
 
+    /// Column j's step of cholesky_in_place() after its pivot @p root: the
+    /// row of U right of the diagonal over root, then the trailing block
+    /// less u_j u_j^T. U(j + i, j + c) at diagonal[c kd + i], c = 1..kn.
+    /// K: kn = kd fixed at compile time (a full band), else 0 (run time).
+    template <unsigned int K>
+    void update_trailing(double *diagonal, const unsigned int kn_run, const unsigned int kd_run,
+                         const double root, double *r)
+    {
+      const unsigned int kn = K != 0 ? K : kn_run, kd = K != 0 ? K : kd_run;
+      for (unsigned int c = 1; c <= kn; ++c)
+        r[c] = diagonal[c * kd] /= root;
+      for (unsigned int c = 1; c <= kn; ++c)
+        {
+          double *column = diagonal + c * kd; // column[i] = U(j + i, j + c)
+          for (unsigned int i = 1; i <= c; ++i)
+            column[i] -= r[i] * r[c];
+        }
+    }
+
     /// Right-looking, as LAPACK's dpbtf2: u_jj = sqrt(a_jj), the row of U
     /// right of it a_jk / u_jj, then the trailing block less u_j u_j^T.
     /// U(i, j) at ab[(kd + i - j) + j (kd + 1)].
@@ -146,15 +165,12 @@ namespace cdea
           const double root = std::sqrt(d);
           *diagonal         = root;
           const unsigned int kn = std::min(kd, n - 1 - j);
-          // U(j, j + c) at diagonal[c kd].
-          for (unsigned int c = 1; c <= kn; ++c)
-            r[c] = diagonal[c * kd] /= root;
-          for (unsigned int c = 1; c <= kn; ++c)
-            {
-              double *column = diagonal + c * kd; // column[r] = U(j + r, j + c)
-              for (unsigned int i = 1; i <= c; ++i)
-                column[i] -= r[i] * r[c];
-            }
+          // A full band (all but the last kd columns) with KD fixed: the
+          // same updates with compile-time trip counts, which unroll.
+          if (KD != 0 && kn == KD)
+            update_trailing<KD>(diagonal, KD, KD, root, r);
+          else
+            update_trailing<0>(diagonal, kn, kd, root, r);
         }
       return true;
     }
