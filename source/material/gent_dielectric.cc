@@ -4,16 +4,6 @@
 
 namespace cdea
 {
-  GentDielectric::GentDielectric(const MaterialConstants &constants,
-                                 const double             voltage)
-    : c(constants)
-    , phi(voltage)
-    , mu(constants.shear_modulus)
-    , jlim(constants.jlim)
-    , eps_phi2_h2(constants.permittivity * voltage * voltage /
-                  (constants.thickness * constants.thickness))
-  {}
-
   double GentDielectric::electric_field(const double l1, const double l2) const
   {
     return phi * l1 * l2 / c.thickness;
@@ -28,10 +18,9 @@ namespace cdea
       double g, q, I_1, I_2;
     };
 
-    GentTerms gent_terms(const double g, const double l1, const double l2)
+    GentTerms gent_terms(const GentDielectric::Invariants &v, const double l1, const double l2)
     {
-      const double q = 1. / (l1 * l1 * l2 * l2);
-      return {g, q, 2. * (l1 - q / l1), 2. * (l2 - q / l2)};
+      return {v.g, v.q, 2. * (l1 - v.q / l1), 2. * (l2 - v.q / l2)};
     }
 
     // dW_gent/dl_i = (mu / 2) I_i / g; the electrostatic part gives
@@ -60,20 +49,31 @@ namespace cdea
 
   NominalStress GentDielectric::stress(const double l1, const double l2) const
   {
-    return gent_stress(gent_terms(gent_margin(l1, l2), l1, l2), mu, eps_phi2_h2, l1, l2);
+    return stress(l1, l2, invariants(l1, l2));
+  }
+
+  NominalStress GentDielectric::stress(const double l1, const double l2, const Invariants &v) const
+  {
+    return gent_stress(gent_terms(v, l1, l2), mu, eps_phi2_h2, l1, l2);
   }
 
   StressTangent GentDielectric::tangent(const double l1, const double l2) const
   {
-    return gent_tangent(gent_terms(gent_margin(l1, l2), l1, l2), mu, jlim, eps_phi2_h2, l1, l2);
+    return gent_tangent(gent_terms(invariants(l1, l2), l1, l2), mu, jlim, eps_phi2_h2, l1, l2);
+  }
+
+  void GentDielectric::stress_and_tangent(const double l1, const double l2, NominalStress &s,
+                                          StressTangent &t) const
+  {
+    stress_and_tangent(l1, l2, invariants(l1, l2), s, t);
   }
 
   // Both from one evaluation of the shared terms (the same expressions, so
   // the same numbers as stress() and tangent()).
-  void GentDielectric::stress_and_tangent(const double l1, const double l2, NominalStress &s,
-                                          StressTangent &t) const
+  void GentDielectric::stress_and_tangent(const double l1, const double l2, const Invariants &v,
+                                          NominalStress &s, StressTangent &t) const
   {
-    const GentTerms terms = gent_terms(gent_margin(l1, l2), l1, l2);
+    const GentTerms terms = gent_terms(v, l1, l2);
     s                     = gent_stress(terms, mu, eps_phi2_h2, l1, l2);
     t                     = gent_tangent(terms, mu, jlim, eps_phi2_h2, l1, l2);
   }

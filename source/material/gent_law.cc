@@ -12,15 +12,18 @@ namespace cdea
   bool GentDielectricLaw::evaluate(const LawInput &in, const InternalStep &, const unsigned int request,
                                    LawResponse &out) const
   {
-    const GentDielectric law(c, in.voltage);
-    if (!(in.l1 > 0.) || !(in.l2 > 0.) || !(law.gent_margin(in.l1, in.l2) > 0.))
+    if (!(in.l1 > 0.) || !(in.l2 > 0.))
+      return false;
+    const GentDielectric             law(c, in.voltage);
+    const GentDielectric::Invariants v = law.invariants(in.l1, in.l2);
+    if (!(v.g > 0.))
       return false;
     if (request & law_energy)
       out.energy = law.energy(in.l1, in.l2);
     if (request & law_tangent)
-      law.stress_and_tangent(in.l1, in.l2, out.stress, out.tangent);
+      law.stress_and_tangent(in.l1, in.l2, v, out.stress, out.tangent);
     else if (request & law_stress)
-      out.stress = law.stress(in.l1, in.l2);
+      out.stress = law.stress(in.l1, in.l2, v);
     out.tension       = TensionState::taut;
     out.natural_width = in.l2;
     return true;

@@ -44,8 +44,23 @@ namespace cdea
   class GentDielectric
   {
   public:
-    /// @p voltage in volts.
-    GentDielectric(const MaterialConstants &constants, double voltage);
+    /// @p voltage in volts. (Inline: the laws build one per quadrature point.)
+    GentDielectric(const MaterialConstants &constants, const double voltage)
+      : c(constants)
+      , phi(voltage)
+      , mu(constants.shear_modulus)
+      , jlim(constants.jlim)
+      , eps_phi2_h2(constants.permittivity * voltage * voltage /
+                    (constants.thickness * constants.thickness))
+    {}
+
+    /// The invariants one point's range check, stress and tangent share:
+    /// q = l3^2 = l1^-2 l2^-2 and the margin g = 1 - (I - 3) / Jlim.
+    struct Invariants
+    {
+      double q;
+      double g;
+    };
 
     /// W(l1, l2) per reference volume (J/m^3).
     template <typename Number>
@@ -63,13 +78,23 @@ namespace cdea
     /// same numbers), for the time laws that need both at every call.
     void stress_and_tangent(double l1, double l2, NominalStress &s, StressTangent &t) const;
 
-    /// g = 1 - (I - 3) / Jlim; the law is defined only while g > 0.
-    /// (Inline: called at every quadrature point, up to three times.)
-    double gent_margin(const double l1, const double l2) const
+    /// q and g of (l1, l2), I = l1^2 + l2^2 + q. (Inline: called at every
+    /// quadrature point.)
+    Invariants invariants(const double l1, const double l2) const
     {
-      const double I = l1 * l1 + l2 * l2 + 1. / (l1 * l1 * l2 * l2);
-      return 1. - (I - 3.) / jlim;
+      const double q = 1. / (l1 * l1 * l2 * l2);
+      const double I = l1 * l1 + l2 * l2 + q;
+      return {q, 1. - (I - 3.) / jlim};
     }
+
+    /// g = 1 - (I - 3) / Jlim; the law is defined only while g > 0.
+    double gent_margin(const double l1, const double l2) const { return invariants(l1, l2).g; }
+
+    /// stress() and stress_and_tangent() from the invariants @p v of the same
+    /// (l1, l2), already computed for the range check (the same numbers).
+    NominalStress stress(double l1, double l2, const Invariants &v) const;
+    void stress_and_tangent(double l1, double l2, const Invariants &v, NominalStress &s,
+                            StressTangent &t) const;
 
     /// True electric field E = Phi l1 l2 / H (V/m).
     double electric_field(double l1, double l2) const;
