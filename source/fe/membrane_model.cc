@@ -280,11 +280,12 @@ namespace cdea
                                    system.volume_gradient, with_eigenvalue);
   }
 
-  TangentStability MembraneModel::Impl::check_stability_near_folds()
+  TangentStability MembraneModel::Impl::check_stability_near_folds(const bool first)
   {
     ensure_converged_tangent();
     return stability_check.compute_near_folds(system.tangent, mesh.constrained,
-                                              system.rank_one_coupling, system.volume_gradient);
+                                              system.rank_one_coupling, system.volume_gradient,
+                                              first);
   }
 
   StateStability MembraneModel::stability(const StabilityEigenvalue eigenvalue)
@@ -294,9 +295,10 @@ namespace cdea
         impl->assemble_constrained(impl->solution, assemble_residual | assemble_tangent);
         impl->tangent_is_current = true;
       }
-    const TangentStability t = eigenvalue == StabilityEigenvalue::near_folds ?
-                                 impl->check_stability_near_folds() :
-                                 impl->check_stability(true);
+    const TangentStability t =
+      eigenvalue == StabilityEigenvalue::every_step ?
+        impl->check_stability(true) :
+        impl->check_stability_near_folds(eigenvalue == StabilityEigenvalue::near_folds_first);
     return {t.smallest_eigenvalue,
             t.known ? double(t.positive_definite) : std::numeric_limits<double>::quiet_NaN()};
   }

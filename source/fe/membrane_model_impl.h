@@ -89,7 +89,8 @@ namespace cdea
     /// @p with_eigenvalue.
     TangentStability check_stability(bool with_eigenvalue);
     /// The same with the eigenvalue near folds only (StabilityCheck::compute_near_folds()).
-    TangentStability check_stability_near_folds();
+    /// @p first: the first state of a run (the reference is forgotten).
+    TangentStability check_stability_near_folds(bool first);
 
     void evaluate(const Eigen::VectorXd &x, Eigen::VectorXd &r) override;
     void evaluate_residual(const Eigen::VectorXd &x, Eigen::VectorXd &r) override;

@@ -322,8 +322,11 @@ namespace cdea
 
   TangentStability StabilityCheck::compute_near_folds(const BandMatrix                &A,
                                                       const std::vector<unsigned int> &excluded,
-                                                      const double k, const Eigen::VectorXd &g)
+                                                      const double k, const Eigen::VectorXd &g,
+                                                      const bool first)
   {
+    if (first)
+      forget_reference();
     return check_band(A, excluded, k, g, true, true);
   }
 
@@ -365,9 +368,36 @@ namespace cdea
     else
       S_definite = factor_definite(S, eigenvalue != Eigenvalue::never);
     result.positive_definite = S_definite || (k > 0. && rank_one_definite(S, k, g, 0.));
+    if (eigenvalue == Eigenvalue::near_folds && !result.positive_definite &&
+        singular_to_round_off(S))
+      {
+        // The next state computes its eigenvalue: on both sides of a change
+        // of the stable column one is known or zero to round-off.
+        forget_reference();
+        return result;
+      }
     if (eigenvalue != Eigenvalue::never && n_free(S) > 0)
       result.smallest_eigenvalue = smallest_eigenvalue(S, k, g, S_definite);
     return result;
+  }
+
+  bool StabilityCheck::singular_to_round_off(const SymmetricBand &S)
+  {
+    // Not positive definite, yet S + delta I is (delta = round_off_fraction
+    // x the spectrum's scale): every eigenvalue of S, and of S + k g g^T
+    // (k >= 0), lies above -delta, and the smallest below zero to
+    // round-off, as on the flat, unstretched film. Its value says nothing
+    // more than zero; finding it (the search below an indefinite spectrum)
+    // would cost more than the rest of the row's checks.
+    ++n_factorizations;
+    const double delta = round_off_fraction * spectrum_scale(S);
+    return delta > 0. && cholesky.factorize(S, -delta);
+  }
+
+  void StabilityCheck::forget_reference()
+  {
+    warm_value        = nan;
+    last.result.known = false;
   }
 
   double StabilityCheck::smallest_eigenvalue(const SymmetricBand &S, const double k,

@@ -57,7 +57,10 @@ namespace cdea
   void Stability::evaluate(StepContext &context, StepSummary &summary)
   {
     const StateStability s =
-      enabled ? context.model.stability(first ? StabilityEigenvalue::every_step : eigenvalue) :
+      enabled ? context.model.stability(!first ? eigenvalue :
+                              eigenvalue == StabilityEigenvalue::near_folds ?
+                                               StabilityEigenvalue::near_folds_first :
+                                               StabilityEigenvalue::every_step) :
                 StateStability();
     first = false;
     summary.min_eigenvalue = s.min_eigenvalue;

@@ -65,7 +65,10 @@ namespace cdea
   enum class StabilityEigenvalue
   {
     every_step,
-    near_folds
+    near_folds,
+    /// near_folds at the first state of a run: no reference eigenvalue from
+    /// earlier states (a run's output does not depend on the model's history).
+    near_folds_first
   };
 
   /// Hoop stresses of a state, as the wrinkling check reads them.

@@ -69,13 +69,17 @@ namespace cdea
     /// S + k g g^T - sigma I is positive definite), every eigenvalue is
     /// above sigma > 0: stable, far from a fold, the eigenvalue not computed
     /// (NaN). Otherwise, and before the first eigenvalue, as
-    /// compute(..., true), which renews the reference.
+    /// compute(..., true), which renews the reference; except where the
+    /// state is not positive definite and singular to round-off
+    /// (round_off_fraction): eigenvalue NaN, the reference forgotten.
     TangentStability compute_near_folds(const SymmetricBand &S, double k,
                                         const Eigen::VectorXd &g);
-    /// The same on the symmetric part of @p A without @p excluded.
+    /// The same on the symmetric part of @p A without @p excluded; @p first:
+    /// the first state of a run, the reference eigenvalue and the last
+    /// answer forgotten.
     TangentStability compute_near_folds(const BandMatrix &A,
                                         const std::vector<unsigned int> &excluded, double k,
-                                        const Eigen::VectorXd &g);
+                                        const Eigen::VectorXd &g, bool first = false);
 
     /// The fraction of the last computed eigenvalue below which the
     /// eigenvalue is computed again (compute_near_folds()), and the shift of
@@ -85,6 +89,11 @@ namespace cdea
     /// factored twice); and near a fold, where lambda ~ sqrt(distance to
     /// it), the eigenvalue is reported every time it has fallen by 20 %.
     static constexpr double near_fold_fraction = 0.8;
+    /// Near folds, a state that is not positive definite but whose S + delta I
+    /// is, delta = round_off_fraction x max |Gershgorin bound| of S, has a
+    /// smallest eigenvalue in (-delta, 0]: zero to round-off. It is reported
+    /// unstable without the eigenvalue (NaN), and the reference is kept.
+    static constexpr double round_off_fraction = 1e-12;
 
     /// Of the last compute(): Lanczos steps and factorizations (Cholesky,
     /// LDL^T, LU) it took.
@@ -152,6 +161,14 @@ namespace cdea
     /// (k > 0)? By the inertia of S - sigma I and the determinant lemma.
     bool rank_one_definite(const SymmetricBand &S, double k, const Eigen::VectorXd &g,
                            double sigma);
+    /// Near folds, for an S + k g g^T that is not positive definite: is
+    /// S + delta I positive definite (delta = round_off_fraction x the
+    /// spectrum's scale), the smallest eigenvalue then zero to round-off?
+    bool singular_to_round_off(const SymmetricBand &S);
+    /// Forget the last eigenvalue and the last answer (near folds: the next
+    /// state computes its eigenvalue; the last eigenvector still starts
+    /// Lanczos, which changes only the last digits).
+    void forget_reference();
     /// Are all eigenvalues of S + k g g^T above @p sigma?
     bool definite_above(const SymmetricBand &S, double k, const Eigen::VectorXd &g,
                         double sigma);

@@ -81,9 +81,10 @@ namespace cdea
 
   /// Smallest eigenvalue of the tangent with loads held (NaN when off, and
   /// with near_folds where it was not computed) and whether the state is
-  /// stable. With near_folds the first evaluation computes the eigenvalue
-  /// all the same: it is the reference the later ones compare with, so a
-  /// run's column does not depend on what the model computed before it.
+  /// stable. With near_folds the first evaluation forgets the reference
+  /// (near_folds_first) and computes the eigenvalue unless the state is
+  /// singular to round-off, so a run's column does not depend on what the
+  /// model computed before it.
   class Stability final : public Postprocessor
   {
   public:
