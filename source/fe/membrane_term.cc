@@ -60,8 +60,8 @@ namespace cdea
   {
     /// At one point: the shape gradients g = d/dR (@p gradient), the first
     /// variations dl1 = (r' dr' + z' dz') / l1 and dl2 = dr / R (@p over_R:
-    /// the shape values over R), and the residual w (s1 dl1 + s2 dl2) added. N as in with_dofs_per_cell(); the outputs
-    /// (restrict) alias nothing else.
+    /// the shape values over R), and the residual w (s1 dl1 + s2 dl2) added.
+    /// N as in with_dofs_per_cell(); the outputs (restrict) alias nothing else.
     template <unsigned int N>
     void add_first_variations(const unsigned int n_run, const PointKinematics &p, const double w,
                               const NominalStress &stress, const double *gradient,

@@ -258,60 +258,8 @@ namespace cdea
                                            const double k, const Eigen::VectorXd &g,
                                            const bool with_eigenvalue)
   {
-    return check_band(A, excluded, k, g, with_eigenvalue, false);
-  }
-
-  bool StabilityCheck::same_as_last(const BandMatrix &A, const std::vector<unsigned int> &excluded,
-                                    const double k, const Eigen::VectorXd &g) const
-  {
-    const std::size_t ld = A.leading_dimension(), bw = A.bandwidth();
-    if (last.band.size() != std::size_t(A.size()) * (2 * bw + 1) || excluded != last.excluded ||
-        k != last.k || (k != 0. && (g.size() != last.g.size() || g != last.g)))
-      return false;
-    // The band of column j: rows bw .. 3 bw of BandMatrix's storage.
-    const double *a = A.data() + bw, *b = last.band.data();
-    for (std::size_t j = 0; j < A.size(); ++j, a += ld, b += 2 * bw + 1)
-      if (!std::equal(b, b + 2 * bw + 1, a))
-        return false;
-    return true;
-  }
-
-  TangentStability StabilityCheck::check_band(const BandMatrix                &A,
-                                              const std::vector<unsigned int> &excluded,
-                                              const double k, const Eigen::VectorXd &g,
-                                              const bool with_eigenvalue, const bool near_folds)
-  {
-    // Checking the same matrix again near folds would leave the eigenvalue
-    // and its reference as they are: the last answer is that check's (with
-    // the eigenvalue if it had one). With the eigenvalue at every step the
-    // check is repeated, as it always was (its warm start changes the last
-    // digits).
-    if (near_folds && last.result.known && same_as_last(A, excluded, k, g))
-      {
-        steps = n_factorizations = 0;
-        return last.result;
-      }
     S_own.assign(A, excluded);
-    const TangentStability result = check(S_own, k, g,
-                                          near_folds      ? Eigenvalue::near_folds :
-                                          with_eigenvalue ? Eigenvalue::always :
-                                                            Eigenvalue::never);
-    // Kept near folds, and where checking again near folds would cost most
-    // (an eigenvalue of a state that is not positive definite: the first
-    // state of a run is such); a stale entry is still a true answer for its
-    // matrix.
-    if (!near_folds && (result.positive_definite || !result.known))
-      return result;
-    last.result = result;
-    const std::size_t ld = A.leading_dimension(), bw = A.bandwidth();
-    last.band.resize(std::size_t(A.size()) * (2 * bw + 1));
-    for (std::size_t j = 0; j < A.size(); ++j)
-      std::copy_n(A.data() + bw + j * ld, 2 * bw + 1, last.band.data() + j * (2 * bw + 1));
-    last.excluded = excluded;
-    last.k        = k;
-    if (k != 0.)
-      last.g = g;
-    return last.result;
+    return check(S_own, k, g, with_eigenvalue ? Eigenvalue::always : Eigenvalue::never);
   }
 
   TangentStability StabilityCheck::compute(const SymmetricBand &S, const double k,
@@ -327,7 +275,8 @@ namespace cdea
   {
     if (first)
       forget_reference();
-    return check_band(A, excluded, k, g, true, true);
+    S_own.assign(A, excluded);
+    return check(S_own, k, g, Eigenvalue::near_folds);
   }
 
   TangentStability StabilityCheck::compute_near_folds(const SymmetricBand &S, const double k,
@@ -396,8 +345,7 @@ namespace cdea
 
   void StabilityCheck::forget_reference()
   {
-    warm_value        = nan;
-    last.result.known = false;
+    warm_value = nan;
   }
 
   double StabilityCheck::smallest_eigenvalue(const SymmetricBand &S, const double k,

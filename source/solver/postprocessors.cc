@@ -56,13 +56,11 @@ namespace cdea
 
   void Stability::evaluate(StepContext &context, StepSummary &summary)
   {
-    const StateStability s =
-      enabled ? context.model.stability(!first ? eigenvalue :
-                              eigenvalue == StabilityEigenvalue::near_folds ?
-                                               StabilityEigenvalue::near_folds_first :
-                                               StabilityEigenvalue::every_step) :
-                StateStability();
-    first = false;
+    StabilityEigenvalue where = eigenvalue;
+    if (first && where == StabilityEigenvalue::near_folds)
+      where = StabilityEigenvalue::near_folds_first;
+    first                  = false;
+    const StateStability s = enabled ? context.model.stability(where) : StateStability();
     summary.min_eigenvalue = s.min_eigenvalue;
     summary.columns.set(summary_column::min_eigenvalue, s.min_eigenvalue);
     summary.columns.set(summary_column::stable, s.stable);

@@ -116,29 +116,6 @@ namespace cdea
     double scale_of_spectrum = std::numeric_limits<double>::quiet_NaN();
     double spectrum_scale(const SymmetricBand &S);
 
-    /// The last band matrix handed to compute() or compute_near_folds() (its
-    /// band, excluded dofs and rank-one term) and the answer: near folds, a
-    /// state reported twice (the end of one stage is the start of the next)
-    /// is checked once.
-    struct LastCheck
-    {
-      std::vector<double>       band;
-      std::vector<unsigned int> excluded;
-      double                    k = 0.;
-      Eigen::VectorXd           g;
-      TangentStability          result;
-    };
-    LastCheck last;
-    /// Whether A, excluded, k, g are those of the last check.
-    bool same_as_last(const BandMatrix &A, const std::vector<unsigned int> &excluded, double k,
-                      const Eigen::VectorXd &g) const;
-    /// check() on the symmetric part of A (near folds, or with the
-    /// eigenvalue or without); near folds the last answer if A, excluded,
-    /// k, g are the last ones.
-    TangentStability check_band(const BandMatrix &A, const std::vector<unsigned int> &excluded,
-                                double k, const Eigen::VectorXd &g, bool with_eigenvalue,
-                                bool near_folds);
-
     /// When check() computes the smallest eigenvalue.
     enum class Eigenvalue
     {
@@ -165,7 +142,7 @@ namespace cdea
     /// S + delta I positive definite (delta = round_off_fraction x the
     /// spectrum's scale), the smallest eigenvalue then zero to round-off?
     bool singular_to_round_off(const SymmetricBand &S);
-    /// Forget the last eigenvalue and the last answer (near folds: the next
+    /// Forget the last eigenvalue (near folds: the next
     /// state computes its eigenvalue; the last eigenvector still starts
     /// Lanczos, which changes only the last digits).
     void forget_reference();
