@@ -9,6 +9,8 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 
+#include <deal.II/hp/fe_collection.h>
+
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
 
@@ -46,31 +48,9 @@ namespace cdea
 
   namespace
   {
-    /// The FE space of degree p, built once per degree and process (deal.II's
-    /// FE_Q and FESystem constructors cost more than the rest of a small
-    /// model); read-only once built.
-    std::shared_ptr<const FESystem<1>> shared_fe(const unsigned int degree)
-    {
-      static std::mutex                                            lock;
-      static std::map<unsigned int, std::shared_ptr<const FESystem<1>>> built;
-      const std::lock_guard<std::mutex>                            guard(lock);
-      auto                                                        &fe = built[degree];
-      if (!fe)
-        fe = std::make_shared<const FESystem<1>>(FE_Q<1>(degree), 2);
-      return fe;
-    }
-  } // namespace
-
-  struct Discretization::Impl
-  {
-    explicit Impl(const unsigned int degree)
-      : fe_pointer(shared_fe(degree))
-      , fe(*fe_pointer)
-    {}
-    std::shared_ptr<const FESystem<1>> fe_pointer;
-    const FESystem<1>                 &fe;
-
-    ShapeTable tabulate(const std::vector<double> &points, const std::vector<double> &weights) const
+    /// The shape functions of @p fe at @p points (weights kept with them).
+    ShapeTable tabulate(const FESystem<1> &fe, const std::vector<double> &points,
+                        const std::vector<double> &weights)
     {
       const unsigned int n = fe.n_dofs_per_cell();
       ShapeTable         t;
@@ -87,7 +67,7 @@ namespace cdea
       return t;
     }
 
-    ShapeTable tabulate(const Quadrature<1> &rule) const
+    ShapeTable tabulate(const FESystem<1> &fe, const Quadrature<1> &rule)
     {
       std::vector<double> points, weights;
       for (unsigned int q = 0; q < rule.size(); ++q)
@@ -95,8 +75,71 @@ namespace cdea
           points.push_back(rule.point(q)[0]);
           weights.push_back(rule.weight(q));
         }
-      return tabulate(points, weights);
+      return tabulate(fe, points, weights);
     }
+
+    /// The FE space of degree p and its shape tables, built once per degree
+    /// (and number of samples) and process, read-only once built: deal.II's
+    /// FE_Q and FESystem constructors, its Gauss rules and shape function
+    /// evaluations cost more than the rest of a small model. The DoFHandler
+    /// gets the space as a collection, which it copies by reference; given
+    /// the element itself, it would build a copy for every model.
+    struct FeSpace
+    {
+      explicit FeSpace(const unsigned int degree)
+        : collection(FESystem<1>(FE_Q<1>(degree), 2))
+        , fe(dynamic_cast<const FESystem<1> &>(collection[0]))
+        , energy_rule(tabulate(fe, QGauss<1>(degree + 1)))
+        , volume_rule(tabulate(fe, QGauss<1>(2 * degree)))
+        , left_end(tabulate(fe, {0.}, {}))
+      {}
+      const hp::FECollection<1> collection;
+      const FESystem<1>        &fe;
+      const ShapeTable          energy_rule, volume_rule, left_end;
+      /// samples_per_element + 1 equidistant points, by samples_per_element
+      /// (filled under the lock of shared_space()).
+      std::map<unsigned int, ShapeTable> samples;
+    };
+
+    std::mutex &space_lock()
+    {
+      static std::mutex lock;
+      return lock;
+    }
+
+    std::shared_ptr<FeSpace> shared_space(const unsigned int degree)
+    {
+      static std::map<unsigned int, std::shared_ptr<FeSpace>> built;
+      const std::lock_guard<std::mutex>                       guard(space_lock());
+      auto                                                   &space = built[degree];
+      if (!space)
+        space = std::make_shared<FeSpace>(degree);
+      return space;
+    }
+
+    ShapeTable equidistant_samples(FeSpace &space, const unsigned int samples_per_element)
+    {
+      const std::lock_guard<std::mutex> guard(space_lock());
+      auto [table, inserted] = space.samples.try_emplace(samples_per_element);
+      if (inserted)
+        {
+          std::vector<double> points;
+          for (unsigned int k = 0; k <= samples_per_element; ++k)
+            points.push_back(double(k) / samples_per_element);
+          table->second = tabulate(space.fe, points, {});
+        }
+      return table->second;
+    }
+  } // namespace
+
+  struct Discretization::Impl
+  {
+    explicit Impl(const unsigned int degree)
+      : space(shared_space(degree))
+      , fe(space->fe)
+    {}
+    std::shared_ptr<FeSpace> space;
+    const FESystem<1>       &fe;
   };
 
   Discretization::Discretization(const Scene &scene, const FeDiscretization &settings_in)
@@ -119,7 +162,7 @@ namespace cdea
     triangulation.refine_global(settings.refinements);
 
     DoFHandler<1> dof_handler(triangulation);
-    dof_handler.distribute_dofs(impl->fe);
+    dof_handler.distribute_dofs(impl->space->collection);
     DoFRenumbering::Cuthill_McKee(dof_handler);
     n_dofs_        = dof_handler.n_dofs();
     dofs_per_cell_ = impl->fe.n_dofs_per_cell();
@@ -158,13 +201,10 @@ namespace cdea
     z_outer = sorted.back()->vertex_dof_index(1, 1);
     constrained = {r_inner, r_outer, z_outer};
 
-    energy_rule = impl->tabulate(QGauss<1>(settings.degree + 1));
-    volume_rule = impl->tabulate(QGauss<1>(2 * settings.degree));
-    left_end    = impl->tabulate({0.}, {});
-    std::vector<double> sample_points;
-    for (unsigned int k = 0; k <= settings.samples_per_element; ++k)
-      sample_points.push_back(double(k) / settings.samples_per_element);
-    samples = impl->tabulate(sample_points, {});
+    energy_rule = impl->space->energy_rule;
+    volume_rule = impl->space->volume_rule;
+    left_end    = impl->space->left_end;
+    samples     = equidistant_samples(*impl->space, settings.samples_per_element);
   }
 
   Discretization::~Discretization() = default;

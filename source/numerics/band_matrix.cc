@@ -14,6 +14,13 @@ namespace cdea
     values.assign(std::size_t(3 * bw + 1) * n, 0.);
   }
 
+  void BandMatrix::reshape_like(const BandMatrix &other)
+  {
+    n  = other.n;
+    bw = other.bw;
+    values.resize(other.values.size());
+  }
+
   void BandMatrix::set_zero()
   {
     // All bits zero is +0.0; memset, where std::fill stays an element loop at -O2.

@@ -75,7 +75,7 @@ namespace cdea
   {
     /// Row sums of |S| without the diagonal, and the diagonal.
     template <typename F>
-    void for_each_row(const std::vector<double> &ab, const unsigned int n, const unsigned int kd,
+    void for_each_row(const double *ab, const unsigned int n, const unsigned int kd,
                       F &&f)
     {
       std::vector<double> off(n, 0.);
@@ -94,14 +94,14 @@ namespace cdea
   double SymmetricBand::gershgorin_lower() const
   {
     double lower = std::numeric_limits<double>::infinity();
-    for_each_row(ab, n, kd, [&](const double d, const double off) { lower = std::min(lower, d - off); });
+    for_each_row(ab.data(), n, kd, [&](const double d, const double off) { lower = std::min(lower, d - off); });
     return lower;
   }
 
   double SymmetricBand::gershgorin_upper() const
   {
     double upper = -std::numeric_limits<double>::infinity();
-    for_each_row(ab, n, kd, [&](const double d, const double off) { upper = std::max(upper, d + off); });
+    for_each_row(ab.data(), n, kd, [&](const double d, const double off) { upper = std::max(upper, d + off); });
     return upper;
   }
 
@@ -109,7 +109,7 @@ namespace cdea
   {
     double lower = std::numeric_limits<double>::infinity();
     double upper = -lower;
-    for_each_row(ab, n, kd, [&](const double d, const double off) {
+    for_each_row(ab.data(), n, kd, [&](const double d, const double off) {
       lower = std::min(lower, d - off);
       upper = std::max(upper, d + off);
     });

@@ -50,9 +50,14 @@ namespace cdea
     /// dgbtf2 on A(i, j) at ab[(kv + i - j) + j ld], kv = 2 bw: partial
     /// pivoting by rows, multipliers scaled by the pivot's reciprocal, the
     /// trailing band updated column by column; the rows of fill-in zeroed as
-    /// they come into use. Pivots 0-based; false if a pivot is zero.
+    /// they come into use. The matrix is read from @p source (same layout)
+    /// a column ahead of its first use (step j touches columns j..j + kv),
+    /// so that the copy and the factorization make one pass over the band,
+    /// not two: beyond the caches, the band streams from memory once.
+    /// Pivots 0-based; false if a pivot is zero.
     template <unsigned int BW>
-    bool band_lu(double *ab, const unsigned int n, const unsigned int bw_run, int *pivots)
+    bool band_lu(const double *source, double *ab, const unsigned int n,
+                 const unsigned int bw_run, int *pivots)
     {
       // BW: the bandwidth fixed at compile time (the loops over a column
       // unroll), 0: bw_run. Same operations in the same order either way.
@@ -60,6 +65,11 @@ namespace cdea
       const std::size_t  ld = 3 * bw + 1;
       const unsigned int kv = 2 * bw;
       bool               regular = true;
+      const auto copy_columns = [&](const unsigned int from, const unsigned int to) {
+        if (from < to)
+          std::copy(source + from * ld, source + to * ld, ab + from * ld);
+      };
+      copy_columns(0, std::min(kv + 1, n));
       for (unsigned int j = bw + 1; j < std::min(kv, n); ++j)
         for (unsigned int i = kv - j; i < bw; ++i)
           ab[i + j * ld] = 0.;
@@ -67,7 +77,10 @@ namespace cdea
       for (unsigned int j = 0; j < n; ++j)
         {
           if (j + kv < n)
-            std::fill(ab + (j + kv) * ld, ab + (j + kv) * ld + bw, 0.);
+            {
+              copy_columns(j + kv, j + kv + 1);
+              std::fill(ab + (j + kv) * ld, ab + (j + kv) * ld + bw, 0.);
+            }
           double            *column = ab + kv + j * ld; // column[i] = A(j + i, j)
           const unsigned int km     = std::min(bw, n - 1 - j);
           unsigned int       p      = 0;
@@ -147,30 +160,31 @@ namespace cdea
 
   bool BandedLU::factorize(const BandMatrix &K)
   {
-    lu = K;
     const int n = K.size(), kl = K.bandwidth(), ldab = K.leading_dimension();
     pivots.resize(n);
     if (K.bandwidth() <= widest_inline_band)
       {
+        lu.reshape_like(K);
         switch (kl)
           {
             case 5:
-              factorized = band_lu<5>(lu.data(), n, kl, pivots.data());
+              factorized = band_lu<5>(K.data(), lu.data(), n, kl, pivots.data());
               break;
             case 7:
-              factorized = band_lu<7>(lu.data(), n, kl, pivots.data());
+              factorized = band_lu<7>(K.data(), lu.data(), n, kl, pivots.data());
               break;
             case 9:
-              factorized = band_lu<9>(lu.data(), n, kl, pivots.data());
+              factorized = band_lu<9>(K.data(), lu.data(), n, kl, pivots.data());
               break;
             case 11:
-              factorized = band_lu<11>(lu.data(), n, kl, pivots.data());
+              factorized = band_lu<11>(K.data(), lu.data(), n, kl, pivots.data());
               break;
             default:
-              factorized = band_lu<0>(lu.data(), n, kl, pivots.data());
+              factorized = band_lu<0>(K.data(), lu.data(), n, kl, pivots.data());
           }
         return factorized;
       }
+    lu = K;
     int info = 0;
     dgbtrf_(&n, &n, &kl, &kl, lu.data(), &ldab, pivots.data(), &info);
     factorized = info == 0;

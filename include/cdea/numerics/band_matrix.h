@@ -4,6 +4,8 @@
 // its factorization's storage: A(i, j) at data[(2 bw + i - j) + j (3 bw + 1)],
 // the first bw rows of each column left for the fill-in of row pivoting.
 
+#include <cdea/numerics/large_page_allocator.h>
+
 #include <cstddef>
 #include <vector>
 
@@ -13,6 +15,9 @@ namespace cdea
   {
   public:
     void reinit(unsigned int n, unsigned int bandwidth);
+    /// The size and bandwidth of @p other, the entries left as they are
+    /// (for a matrix about to be overwritten in full).
+    void reshape_like(const BandMatrix &other);
     void set_zero();
 
     unsigned int size() const { return n; }
@@ -47,6 +52,6 @@ namespace cdea
   private:
     unsigned int        n  = 0;
     unsigned int        bw = 0;
-    std::vector<double> values;
+    std::vector<double, LargePageAllocator<double>> values;
   };
 } // namespace cdea

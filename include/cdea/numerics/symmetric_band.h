@@ -48,9 +48,9 @@ namespace cdea
     std::pair<double, double> gershgorin_bounds() const;
 
   private:
-    unsigned int        n = 0, kd = 0;
-    std::vector<double> ab;
-    std::vector<char>   free;
+    unsigned int                                    n = 0, kd = 0;
+    std::vector<double, LargePageAllocator<double>> ab;
+    std::vector<char>                               free;
   };
 
   /// Banded Cholesky S - shift I = U^T U, in place in the band storage (the
@@ -68,9 +68,10 @@ namespace cdea
     double shift() const { return shift_; }
 
   private:
-    unsigned int        n = 0, kd = 0;
-    double              shift_ = 0.;
-    std::vector<double> ab, work;
+    unsigned int                                    n = 0, kd = 0;
+    double                                          shift_ = 0.;
+    std::vector<double, LargePageAllocator<double>> ab;
+    std::vector<double>                             work;
   };
 
   /// Inertia of S - shift I: how many eigenvalues are negative, zero
