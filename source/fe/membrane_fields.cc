@@ -287,21 +287,29 @@ namespace cdea
           written.push_back(i);
           f.internal.push_back({declared[i].name, declared[i].unit, declared[i].description, {}});
         }
-    const std::size_t samples = std::size_t(mesh.n_cells()) * t.size();
+    // The left end is written only where a ring starts, so that the jump
+    // of lambda1 at a ring edge shows as two samples at one radius.
+    std::vector<unsigned int> first_sample(mesh.n_cells());
+    std::size_t               samples = 0;
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
+      {
+        first_sample[c] = int(mesh.cells[c].ring) != previous_ring ? 0 : 1;
+        samples += t.size() - first_sample[c];
+        previous_ring = mesh.cells[c].ring;
+      }
     for (std::vector<double> *v : {&f.R, &f.r, &f.z, &f.theta, &f.lambda1, &f.lambda2, &f.s1,
                                    &f.s2, &f.Phi, &f.E})
-      v->reserve(samples);
-    f.ring.reserve(samples);
+      v->resize(samples);
+    f.ring.resize(samples);
     for (InternalField &field : f.internal)
-      field.values.reserve(samples);
+      field.values.resize(samples);
+    std::size_t i = 0;
     for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       {
         gather(mesh, m.solution, c, local);
         const MeshCell &cell = mesh.cells[c];
         const double    Phi  = m.load.voltages[cell.ring];
-        // The left end is written only where a ring starts, so that the jump
-        // of lambda1 at a ring edge shows as two samples at one radius.
-        for (unsigned int k = (int(cell.ring) != previous_ring ? 0 : 1); k < t.size(); ++k)
+        for (unsigned int k = first_sample[c]; k < t.size(); ++k, ++i)
           {
             const PointKinematics p = kinematics(mesh, t, k, cell, local.data());
             const InternalStep    step = at.at_point(c, local.data(), t.points[k], p);
@@ -312,21 +320,20 @@ namespace cdea
                 if (e.tension == TensionState::wrinkled)
                   s = e.stress;
               }
-            f.R.push_back(p.R);
-            f.r.push_back(p.r);
-            f.z.push_back(p.z);
-            f.theta.push_back(std::atan2(-p.dz, p.dr));
-            f.lambda1.push_back(p.l1);
-            f.lambda2.push_back(p.l2);
-            f.s1.push_back(s.s1);
-            f.s2.push_back(s.s2);
-            f.Phi.push_back(Phi);
-            f.E.push_back(Phi * p.l1 * p.l2 / H);
-            f.ring.push_back(cell.ring);
+            f.R[i]       = p.R;
+            f.r[i]       = p.r;
+            f.z[i]       = p.z;
+            f.theta[i]   = std::atan2(-p.dz, p.dr);
+            f.lambda1[i] = p.l1;
+            f.lambda2[i] = p.l2;
+            f.s1[i]      = s.s1;
+            f.s2[i]      = s.s2;
+            f.Phi[i]     = Phi;
+            f.E[i]       = Phi * p.l1 * p.l2 / H;
+            f.ring[i]    = cell.ring;
             for (std::size_t j = 0; j < written.size(); ++j)
-              f.internal[j].values.push_back(step.old[written[j]]);
+              f.internal[j].values[i] = step.old[written[j]];
           }
-        previous_ring = cell.ring;
       }
     return f;
   }
