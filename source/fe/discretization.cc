@@ -136,10 +136,8 @@ namespace cdea
   {
     explicit Impl(const unsigned int degree)
       : space(shared_space(degree))
-      , fe(space->fe)
     {}
     std::shared_ptr<FeSpace> space;
-    const FESystem<1>       &fe;
   };
 
   Discretization::Discretization(const Scene &scene, const FeDiscretization &settings_in)
@@ -165,9 +163,9 @@ namespace cdea
     dof_handler.distribute_dofs(impl->space->collection);
     DoFRenumbering::Cuthill_McKee(dof_handler);
     n_dofs_        = dof_handler.n_dofs();
-    dofs_per_cell_ = impl->fe.n_dofs_per_cell();
+    dofs_per_cell_ = impl->space->fe.n_dofs_per_cell();
     for (unsigned int i = 0; i < dofs_per_cell_; ++i)
-      component.push_back(impl->fe.system_to_component_index(i).first);
+      component.push_back(impl->space->fe.system_to_component_index(i).first);
 
     // Cells sorted by radius.
     std::vector<DoFHandler<1>::active_cell_iterator> sorted;
@@ -177,7 +175,7 @@ namespace cdea
       return a->vertex(0)[0] < b->vertex(0)[0];
     });
     std::vector<types::global_dof_index> dofs(dofs_per_cell_);
-    const auto &unit_points = impl->fe.get_unit_support_points();
+    const auto &unit_points = impl->space->fe.get_unit_support_points();
     support_radius.assign(n_dofs_, 0.);
     support_component.assign(n_dofs_, 0);
     for (const auto &cell : sorted)
@@ -216,8 +214,8 @@ namespace cdea
     derivative.resize(dofs_per_cell_);
     for (unsigned int i = 0; i < dofs_per_cell_; ++i)
       {
-        value[i]      = impl->fe.shape_value(i, Point<1>(xi));
-        derivative[i] = impl->fe.shape_grad(i, Point<1>(xi))[0];
+        value[i]      = impl->space->fe.shape_value(i, Point<1>(xi));
+        derivative[i] = impl->space->fe.shape_grad(i, Point<1>(xi))[0];
       }
   }
 } // namespace cdea

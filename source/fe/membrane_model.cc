@@ -146,11 +146,7 @@ namespace cdea
     const BandMatrix &K = system.tangent;
     if (K.size() != x.size())
       return 0.;
-    // Row i of K along its band: K(i, j) = a[i + j (ld - 1)], a = K's
-    // diagonal of column 0 (BandMatrix's layout, walked without a call per
-    // entry).
-    const unsigned int bw = K.bandwidth(), ld = K.leading_dimension();
-    const double      *a  = K.data() + 2 * bw;
+    const unsigned int bw      = K.bandwidth();
     double             largest = 0.;
     for (unsigned int i = 0; i < K.size(); ++i)
       {
@@ -158,7 +154,7 @@ namespace cdea
         const unsigned int hi = std::min(K.size() - 1, i + bw);
         double             sum = 0.;
         for (unsigned int j = lo; j <= hi; ++j)
-          sum += std::abs(a[i + std::size_t(j) * (ld - 1)] * x[j]);
+          sum += std::abs(K(i, j) * x[j]);
         largest = std::max(largest, sum);
       }
     return 10. * std::numeric_limits<double>::epsilon() * largest;

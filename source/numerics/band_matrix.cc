@@ -31,7 +31,7 @@ namespace cdea
   {
     if ((i > j ? i - j : j - i) > bw)
       return 0.;
-    return values[(2 * bw + i - j) + std::size_t(j) * (3 * bw + 1)];
+    return values[index(i, j)];
   }
 
   void BandMatrix::add(const double factor, const BandMatrix &other)
@@ -55,7 +55,7 @@ namespace cdea
         const unsigned int lo = i > bw ? i - bw : 0, hi = std::min(n - 1, i + bw);
         double             s  = 0.;
         for (unsigned int j = lo; j <= hi; ++j)
-          s += entry(i, j) * x[j];
+          s += (*this)(i, j) * x[j];
         y[i] = s;
       }
   }

@@ -65,11 +65,7 @@ namespace cdea
       const std::size_t  ld = 3 * bw + 1;
       const unsigned int kv = 2 * bw;
       bool               regular = true;
-      const auto copy_columns = [&](const unsigned int from, const unsigned int to) {
-        if (from < to)
-          std::copy(source + from * ld, source + to * ld, ab + from * ld);
-      };
-      copy_columns(0, std::min(kv + 1, n));
+      std::copy_n(source, std::min(kv, n) * ld, ab);
       for (unsigned int j = bw + 1; j < std::min(kv, n); ++j)
         for (unsigned int i = kv - j; i < bw; ++i)
           ab[i + j * ld] = 0.;
@@ -78,7 +74,7 @@ namespace cdea
         {
           if (j + kv < n)
             {
-              copy_columns(j + kv, j + kv + 1);
+              std::copy_n(source + (j + kv) * ld, ld, ab + (j + kv) * ld);
               std::fill(ab + (j + kv) * ld, ab + (j + kv) * ld + bw, 0.);
             }
           double            *column = ab + kv + j * ld; // column[i] = A(j + i, j)

@@ -24,11 +24,10 @@ namespace cdea
     unsigned int bandwidth() const { return bw; }
     unsigned int leading_dimension() const { return 3 * bw + 1; }
 
-    /// Entry (i, j) with |i - j| <= bandwidth.
-    double &operator()(const unsigned int i, const unsigned int j)
-    {
-      return values[(2 * bw + i - j) + std::size_t(j) * (3 * bw + 1)];
-    }
+    /// Entry (i, j) with |i - j| <= bandwidth (inline: the kernels and the
+    /// row walks call it per entry).
+    double &operator()(const unsigned int i, const unsigned int j) { return values[index(i, j)]; }
+    double  operator()(const unsigned int i, const unsigned int j) const { return values[index(i, j)]; }
     /// Column j: A(i, j) = column(j)[i] for |i - j| <= bandwidth.
     double *column(const unsigned int j)
     {
@@ -50,6 +49,11 @@ namespace cdea
     double       *data() { return values.data(); }
 
   private:
+    std::size_t index(const unsigned int i, const unsigned int j) const
+    {
+      return (2 * bw + i - j) + std::size_t(j) * (3 * bw + 1);
+    }
+
     unsigned int        n  = 0;
     unsigned int        bw = 0;
     std::vector<double, LargePageAllocator<double>> values;
