@@ -30,8 +30,8 @@ printf '#pragma once\n#include <cdea/b/one.h>\n' > tree/include/cdea/b/two.h
   printf '}\n'
 } > tree/source/a/up.cc
 for i in $(seq 1 601); do printf '// line %d\n' "$i"; done > tree/source/b/long_file.cc
-printf '#pragma once\n// a friend of the model\nconst char *s = "friend";\nclass Model\n{\n  friend class Sensitivity;\n};\n' \
-  > tree/include/cdea/fe/model.h
+printf '%s\n' '#pragma once' '// a friend of the model' 'const char *s = "friend";' \
+  'class Model' '{' '  friend class Sensitivity;' '};' > tree/include/cdea/fe/model.h
 
 if out=$("$PYTHON" "$check" tree 2>&1); then
   fail "structure_check passed a tree with five problems"; echo "$out"

@@ -349,7 +349,8 @@ namespace cdea
     const Discretization  &mesh = d.m.discretization();
     const Eigen::VectorXd &x    = d.m.unknowns();
     const double           dz   = x[mesh.z_inner] - x[mesh.z_outer];
-    gradient = (dz >= 0. ? 1. : -1.) * (d.du.row(mesh.z_inner) - d.du.row(mesh.z_outer)).transpose();
+    gradient =
+      (dz >= 0. ? 1. : -1.) * (d.du.row(mesh.z_inner) - d.du.row(mesh.z_outer)).transpose();
     return std::abs(dz);
   }
 } // namespace cdea

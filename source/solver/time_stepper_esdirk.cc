@@ -33,8 +33,9 @@ namespace cdea
     return std::make_unique<EsdirkStep>(
       model, e,
       [&scene, &waveform, rest](const double t, const double inside) {
-        LoadState l = full_load(scene, inside < 0. ? rest : waveform.voltages_on_piece(t, inside), t);
-        l.time      = t;
+        LoadState l =
+          full_load(scene, inside < 0. ? rest : waveform.voltages_on_piece(t, inside), t);
+        l.time = t;
         return l;
       },
       [&waveform, rest](const double t, const double inside) {
