@@ -1,8 +1,8 @@
+#include <cdea/numerics/fixed_size.h>
 #include <cdea/numerics/tangent_solver.h>
 
 #include <algorithm>
 #include <cmath>
-#include <type_traits>
 
 // LAPACK: LU factorization of a general band matrix and solves with it.
 extern "C" void dgbtrf_(const int *m, const int *n, const int *kl, const int *ku, double *ab,
@@ -154,22 +154,13 @@ namespace cdea
           }
     }
 
-    /// f(std::integral_constant<unsigned int, bw>{}) for the bandwidths 5,
-    /// 7, 9 and 11 of the FE tangents of low degree, else f with 0: the
-    /// loops above written for a compile-time bandwidth, 0 meaning "at run
-    /// time" (as with_dofs_per_cell() does for the cell loops).
+    /// f with the bandwidth fixed at compile time for the bandwidths 5, 7, 9
+    /// and 11 of the FE tangents of low degree, else at run time
+    /// (numerics/fixed_size.h).
     template <typename F>
     void with_bandwidth(const unsigned int bw, F &&f)
     {
-      using std::integral_constant;
-      switch (bw)
-        {
-          case 5: return f(integral_constant<unsigned int, 5>{});
-          case 7: return f(integral_constant<unsigned int, 7>{});
-          case 9: return f(integral_constant<unsigned int, 9>{});
-          case 11: return f(integral_constant<unsigned int, 11>{});
-          default: return f(integral_constant<unsigned int, 0>{});
-        }
+      with_fixed_size<5, 7, 9, 11>(bw, std::forward<F>(f));
     }
   } // namespace
 
