@@ -26,4 +26,22 @@ namespace cdea_test
       throw std::runtime_error("run did not complete: " + r.message);
     return last;
   }
+
+  /// A run's result and every converged step.
+  struct RunTrace
+  {
+    cdea::RunResult                result;
+    std::vector<cdea::StepSummary> steps;
+  };
+
+  /// Run all stages with @p settings, keeping every step.
+  inline RunTrace trace_run(cdea::EquilibriumModel &model, const cdea::Scene &scene,
+                            const cdea::SteppingSettings &settings)
+  {
+    RunTrace          trace;
+    cdea::LoadStepper stepper(scene, model, settings);
+    stepper.on_step = [&](const cdea::StepSummary &s) { trace.steps.push_back(s); };
+    trace.result    = stepper.run();
+    return trace;
+  }
 } // namespace cdea_test

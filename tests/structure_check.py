@@ -9,6 +9,9 @@
    first line of its declaration to its closing brace.
 4. No file there longer than 600 lines (a file that grows past it holds more
    than one concern).
+5. No friend declaration in fe/: what is built on the model's state sees it
+   through the read-only ModelAccess (include/cdea/fe/model_access.h), not
+   its inside.
 
 Usage: structure_check.py [SOURCE_DIR] [--list-functions N]
 Prints every violation with its file and line; exits 1 if there is one.
@@ -277,6 +280,22 @@ def check_function_lengths(root, listing=0):
     return problems
 
 
+FRIEND = re.compile(r'\bfriend\b')
+
+
+def check_friends(root):
+    problems = []
+    for path, folder in code_files(root):
+        if folder != "fe":
+            continue
+        code = strip_code(open(os.path.join(root, path), encoding="utf-8").read())
+        for number, line in enumerate(code.split("\n"), 1):
+            if FRIEND.search(line):
+                problems.append(f"{path}:{number}: a friend declaration in fe/ (use the "
+                                f"read-only ModelAccess, include/cdea/fe/model_access.h)")
+    return problems
+
+
 def main():
     args = sys.argv[1:]
     listing = 0
@@ -287,7 +306,8 @@ def main():
     root = args[0] if args else os.environ.get(
         "CDEA_SOURCE_DIR", os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
     order = folder_order(root)
-    problems = check_order_and_cycles(root, order) + check_function_lengths(root, listing)
+    problems = (check_order_and_cycles(root, order) + check_function_lengths(root, listing) +
+                check_friends(root))
     for p in problems:
         print(p)
     n_files = len(code_files(root))

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # The structure of the code as doc/architecture.md states it ("Folder order"):
 # tests/structure_check.py finds no include against the folder order, no
-# include cycle between files and no function above 80 lines in the repository;
-# and, so that the check itself cannot pass by finding nothing, it fails on a
-# scratch tree with one of each and names every one of them.
+# include cycle between files, no function above 80 lines, no file above 600
+# and no friend declaration in fe/ in the repository; and, so that the check
+# itself cannot pass by finding nothing, it fails on a scratch tree with one
+# of each and names every one of them.
 source "$(dirname "$0")/script_helpers.bash"
 check="$src/tests/structure_check.py"
 
@@ -13,11 +14,13 @@ else
   fail "the repository has structure problems:"; echo "$out"
 fi
 
-# A scratch tree: folders a -> b, a file of a that includes b (upward), two
-# files of b that include each other, a function of 93 lines and a file of
-# 601 lines.
-mkdir -p tree/doc tree/include/cdea/a tree/include/cdea/b tree/source/a tree/source/b
-printf '# x\n## Folder order\n\n    a -> b\n' > tree/doc/architecture.md
+# A scratch tree: folders a -> b -> fe, a file of a that includes b
+# (upward), two files of b that include each other, a function of 93 lines, a
+# file of 601 lines and a class of fe/ with a friend (one in a comment and
+# one in a string do not count).
+mkdir -p tree/doc tree/include/cdea/a tree/include/cdea/b tree/include/cdea/fe tree/source/a \
+  tree/source/b
+printf '# x\n## Folder order\n\n    a -> b -> fe\n' > tree/doc/architecture.md
 printf '#pragma once\n#include <cdea/b/two.h>\n' > tree/include/cdea/a/up.h
 printf '#pragma once\n#include <cdea/b/two.h>\n' > tree/include/cdea/b/one.h
 printf '#pragma once\n#include <cdea/b/one.h>\n' > tree/include/cdea/b/two.h
@@ -27,12 +30,15 @@ printf '#pragma once\n#include <cdea/b/one.h>\n' > tree/include/cdea/b/two.h
   printf '}\n'
 } > tree/source/a/up.cc
 for i in $(seq 1 601); do printf '// line %d\n' "$i"; done > tree/source/b/long_file.cc
+printf '%s\n' '#pragma once' '// a friend of the model' 'const char *s = "friend";' \
+  'class Model' '{' '  friend class Sensitivity;' '};' > tree/include/cdea/fe/model.h
 
 if out=$("$PYTHON" "$check" tree 2>&1); then
-  fail "structure_check passed a tree with four problems"; echo "$out"
+  fail "structure_check passed a tree with five problems"; echo "$out"
 else
   ok "structure_check fails on the scratch tree"
-  for expected in "a/up.h" "b/one -> b/two" "long_function" "long_file.cc: 601 lines"; do
+  for expected in "a/up.h" "b/one -> b/two" "long_function" "long_file.cc: 601 lines" \
+                  "fe/model.h:6: a friend declaration"; do
     if grep -q "$expected" <<< "$out"; then ok "names $expected"
     else fail "does not name $expected:"; echo "$out"; fi
   done

@@ -9,7 +9,11 @@
 //    and how to switch it off: with a time run, arc length or the stability
 //    check, by the shooting model (shoot, compare) and by the design studies
 //    (sweep, optimize, fit). A new term touches no file of input/,
-//    analysis/, design/ or commands/.
+//    analysis/, design/ or commands/;
+//  - the water term gives the liquid column whose inertia the time runs and
+//    the small-signal dynamics take (LoadTerm::liquid_column()), a term
+//    without one none, and liquid_column() of the parameters takes it with
+//    Time/Inertia and Time/Water inertia on.
 
 #include <cdea/analysis/run_input.h>
 #include <cdea/analysis/run_setup.h>
@@ -22,6 +26,7 @@
 #include <cdea/fe/water_term.h>
 #include <cdea/input/parameter_input.h>
 #include <cdea/input/parameters.h>
+#include <cdea/input/solver_settings.h>
 
 #include "check.h"
 
@@ -153,9 +158,37 @@ namespace
     check(held.size() == 2 && dynamic_cast<const TestForceTerm *>(held[0]) &&
             dynamic_cast<const WaterTerm *>(held[1]),
           "the model holds both terms switched on, in the registry's order");
+    check(held.size() == 2 && !held[0]->liquid_column().present(),
+          "a term without a liquid column gives none");
     model->set_load_terms(p.load_terms.values);
     check(model->load_terms().size() == 1 && dynamic_cast<const WaterTerm *>(model->load_terms()[0]),
           "set_load_terms() replaces them");
+  }
+
+  /// The water's column: 120 ml, a 10 x 20 mm tube (S = 2e-4 m^2); at
+  /// V = 100 ml the free surface stands h = 20 ml / S = 0.1 m above the frame
+  /// plane and the column's mass on V is rho h / S = 5e5 kg/m^4.
+  void check_liquid_column()
+  {
+    const std::string water = "subsection Reservoir\n  set Water load = true\n"
+                              "  set Water volume (ml) = 120\n  set Width (mm) = 10\nend\n";
+    const std::string time  = "subsection Time\n  set Enabled = true\n  set Water inertia = true\n"
+                              "end\n";
+    const LiquidColumn column = liquid_column(read(water + time));
+    check(column.present() && column.density == 1000. &&
+            std::abs(column.volume - 120e-6) < 1e-18 && std::abs(column.area - 2e-4) < 1e-18,
+          "the water term's column: density, volume and tube");
+    check(std::abs(column.mass(100e-6) - 5e5) < 1e-9 * 5e5 &&
+            std::abs(column.mass_by_slope(100e-6) - 5e5) < 1e-9 * 5e5,
+          "its mass rho h / S in both forms: " + format_number(column.mass(100e-6)) + ", " +
+            format_number(column.mass_by_slope(100e-6)) + " kg/m^4");
+    check(std::abs(column.mass_per_volume() - 1000. / 4e-8) < 1e-9 * 2.5e10,
+          "its slope rho / S^2");
+    check(column.mass(130e-6) == 0. && column.mass_by_slope(130e-6) == 0.,
+          "an empty tube: no mass");
+    check(!liquid_column(read(water + "subsection Time\n  set Enabled = true\nend\n")).present(),
+          "without Time/Water inertia: none");
+    check(!liquid_column(read(time)).present(), "without the water load: none");
   }
 
   /// The test force, which supports nothing, refused generically.
@@ -206,6 +239,7 @@ int main()
 {
   check_registered_terms();
   check_water_from_file();
+  check_liquid_column();
   check_refusals();
   return finish();
 }

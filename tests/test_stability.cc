@@ -24,20 +24,6 @@ using namespace cdea_test;
 
 namespace
 {
-  struct Trace
-  {
-    RunResult                result;
-    std::vector<StepSummary> steps;
-  };
-
-  Trace run(EquilibriumModel &model, const Scene &scene, SteppingSettings settings)
-  {
-    Trace       trace;
-    LoadStepper stepper(scene, model, settings);
-    stepper.on_step = [&](const StepSummary &s) { trace.steps.push_back(s); };
-    trace.result    = stepper.run();
-    return trace;
-  }
 } // namespace
 
 int main(int argc, char **argv)
@@ -51,7 +37,7 @@ int main(int argc, char **argv)
   arc.max_displacement = 0.040; // stop on the unstable branch, past the fold
   arc.stability_check  = true;
   MembraneModel fe(scene, discretization(4, 16), NewtonSettings());
-  const Trace   t = run(fe, scene, arc);
+  const RunTrace t = trace_run(fe, scene, arc);
   check(t.result.completed && t.result.end.find("displacement") != std::string::npos,
         "arc length passes the fold and ends at the displacement limit: " + t.result.end);
   check(t.result.limit_points.size() == 1, "exactly one limit point before 40 mm");
@@ -133,7 +119,7 @@ int main(int argc, char **argv)
   std::cout << "Load stepping stops at the fold, arc length goes on\n";
   {
     MembraneModel fe_ls(scene, discretization(4, 16), NewtonSettings());
-    const Trace   ls = run(fe_ls, scene, SteppingSettings());
+    const RunTrace ls = trace_run(fe_ls, scene, SteppingSettings());
     check(!ls.result.completed, "load stepping stops before 8 kV");
     if (!t.result.limit_points.empty())
       check(ls.steps.back().voltages[0] <= t.result.limit_points[0].voltages[0] + 1e-6 &&
@@ -147,8 +133,8 @@ int main(int argc, char **argv)
     MembraneModel plain(five, discretization(3, 8), NewtonSettings());
     MembraneModel relaxed(five, discretization(3, 8), NewtonSettings());
     relaxed.set_relaxed(true);
-    const Trace a = run(plain, five, SteppingSettings());
-    const Trace b = run(relaxed, five, SteppingSettings());
+    const RunTrace a = trace_run(plain, five, SteppingSettings());
+    const RunTrace b = trace_run(relaxed, five, SteppingSettings());
     check(a.result.completed && b.result.completed, "both runs reach (5, 5) kV");
     check_close(b.steps.back().displacement, a.steps.back().displacement, 0.,
                 "no wrinkles: relaxed displacement equals the plain one exactly");
@@ -177,7 +163,7 @@ int main(int argc, char **argv)
     const Scene   charged = paper_scene({1., 3.}, {{6.}});
     MembraneModel model(charged, discretization(3, 8), NewtonSettings());
     model.set_relaxed(true);
-    const Trace r = run(model, charged, SteppingSettings());
+    const RunTrace r = trace_run(model, charged, SteppingSettings());
     check(!r.result.completed, "relaxed run to 6 kV stops");
     check(r.result.message.find("ellipticity") != std::string::npos &&
             r.result.message.find("r/a = 1") != std::string::npos,

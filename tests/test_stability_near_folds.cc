@@ -38,21 +38,6 @@ using namespace cdea_test;
 
 namespace
 {
-  struct Trace
-  {
-    RunResult                result;
-    std::vector<StepSummary> steps;
-  };
-
-  Trace run(EquilibriumModel &model, const Scene &scene, const SteppingSettings &settings)
-  {
-    Trace       trace;
-    LoadStepper stepper(scene, model, settings);
-    stepper.on_step = [&](const StepSummary &s) { trace.steps.push_back(s); };
-    trace.result    = stepper.run();
-    return trace;
-  }
-
   /// The two modes on fresh models of the same scene, step by step.
   void compare_modes(const std::string &name, const std::function<std::unique_ptr<EquilibriumModel>()> &make,
                      const Scene &scene, SteppingSettings settings, const bool expect_fold)
@@ -60,10 +45,10 @@ namespace
     settings.stability_check      = true;
     settings.stability_eigenvalue = StabilityEigenvalue::every_step;
     const auto  every_model       = make();
-    const Trace every             = run(*every_model, scene, settings);
+    const RunTrace every          = trace_run(*every_model, scene, settings);
     settings.stability_eigenvalue = StabilityEigenvalue::near_folds;
     const auto  near_model        = make();
-    const Trace near              = run(*near_model, scene, settings);
+    const RunTrace near           = trace_run(*near_model, scene, settings);
 
     check(every.result.completed && near.result.completed &&
             every.steps.size() == near.steps.size(),

@@ -3,13 +3,16 @@
 // the minimum step (also in another unit), the maximum number of cut-backs
 // (consecutive or in total), the reason for giving up, steps computed from
 // the attempted step, factors from the caller, and the landing on a
-// breakpoint.
+// breakpoint; the acceptance of a step by its error estimate (StepAcceptance)
+// against the formulas the time stepper, the creep sensitivities and the
+// periodic steady state wrote before they shared it.
 
 #include <cdea/numerics/step_control.h>
 
 #include "check.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 using namespace cdea;
@@ -225,6 +228,84 @@ namespace
       }
     check(same, "time stepping: halve and double the step taken");
   }
+  void acceptance()
+  {
+    std::cout << "Acceptance by the error estimate\n";
+    StepAcceptance a(3, true, ErrorController::elementary());
+    check(a.accepts(true, 1.) && !a.accepts(true, 1.0001) && !a.accepts(false, 0.5) &&
+            !a.accepts(true, std::nan("")),
+          "error control: converged and the ratio at most 1 (NaN rejects)");
+    const StepAcceptance fixed(3, false, ErrorController::elementary());
+    check(fixed.accepts(true, 50.) && !fixed.accepts(false, 0.), "fixed steps: converged");
+    check(std::abs(a.rejected(true, 16.) - 0.45) < 1e-15, "rejected at r = 16, k = 4: 0.9 / 2");
+    check(a.rejected(true, 1e9) == 0.1 && a.rejected(true, 0.5) == 0.9,
+          "the cut-back stays in [0.1, 0.9]");
+    check(a.rejected(false, 0.) == 0.25, "a failed solve: 1/4");
+    check(std::abs(a.accepted(1. / 16.) - 1.8) < 1e-15 && a.accepted(1e-30) == 5. &&
+            a.accepted(1e4) == 0.2,
+          "elementary: 0.9 r^(-1/k) in [0.2, 5], also right after a rejection");
+
+    StepAcceptance pi(3, true, ErrorController::proportional_integral());
+    check(std::abs(pi.accepted(0.5) - 0.9 * std::pow(0.5, -0.175)) < 1e-15,
+          "PI: the first step with r_(n-1) = 1");
+    check(std::abs(pi.accepted(0.25) - 0.9 * std::pow(0.25, -0.175) * std::pow(0.5, 0.1)) <
+            1e-15,
+          "PI: 0.9 r_n^(-0.7/k) r_(n-1)^(0.4/k)");
+    pi.rejected(true, 2.);
+    check(pi.accepted(1e-6) == 1., "PI: no growth right after a rejection");
+    check(std::abs(pi.accepted(1e-6) - 0.9 * std::pow(1e-6, -0.075)) < 1e-14,
+          "and growth again after that (2.54 at r_n = r_(n-1) = 1e-6)");
+
+    StepControlSettings s;
+    s.after_reject = s.after_accept = StepBase::attempted;
+    StepController c(s, 1.);
+    check(a.reject(c, 0.5, true, 16.) && std::abs(c.step() - 0.225) < 1e-15,
+          "through the controller: the factor times the step attempted");
+    a.accept(c, 0.2, 1. / 16., 9);
+    check(std::abs(c.step() - 0.36) < 1e-15, "and the factor of an accepted step");
+    StepAcceptance f(3, false, ErrorController::elementary());
+    check(f.reject(c, 0.4, true, 16.) && c.step() == 0.2, "fixed steps: the controller's cut-back");
+    f.accept(c, 0.2, 50., 2);
+    check(c.step() == 0.4, "and its growth after an easy step");
+  }
+
+  // The error control as the three ESDIRK paths wrote it before they shared
+  // StepAcceptance, factor for factor (bit for bit), on random ratios.
+  void former_error_control()
+  {
+    std::cout << "The former error control, factor for factor\n";
+    Sequence       random;
+    const double   k = 4.;
+    StepAcceptance time(3, true, ErrorController::proportional_integral());
+    StepAcceptance other(3, true, ErrorController::elementary());
+    double         last_ratio = 1.;
+    bool           after_rejection = false, same = true;
+    for (int n = 0; n < 4000; ++n)
+      {
+        const double ratio     = std::pow(10., 6. * random.next() - 4.);
+        const bool   converged = random.next() < 0.9;
+        if (!converged || !(ratio <= 1.))
+          {
+            const double expected =
+              converged ? std::clamp(0.9 * std::pow(ratio, -1. / k), 0.1, 0.9) : 0.25;
+            same            = same && time.rejected(converged, ratio) == expected &&
+                   other.rejected(converged, ratio) == expected;
+            after_rejection = true;
+            continue;
+          }
+        const double r = std::max(ratio, 1e-10);
+        const double pi_factor =
+          std::clamp(0.9 * std::pow(r, -0.7 / k) * std::pow(std::max(last_ratio, 1e-10), 0.4 / k),
+                     0.2, after_rejection ? 1. : 5.);
+        const double elementary =
+          std::clamp(0.9 * std::pow(std::max(ratio, 1e-10), -1. / k), 0.2, 5.);
+        same            = same && time.accepted(ratio) == pi_factor &&
+               other.accepted(ratio) == elementary;
+        last_ratio      = r;
+        after_rejection = false;
+      }
+    check(same, "the time stepper's PI controller and the creep and periodic paths' rule");
+  }
 } // namespace
 
 int main()
@@ -237,5 +318,7 @@ int main()
   factors();
   landing();
   same_sequences();
+  acceptance();
+  former_error_control();
   return finish();
 }

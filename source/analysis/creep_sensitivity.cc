@@ -13,6 +13,7 @@
 #include <cdea/numerics/step_control.h>
 #include <cdea/solver/esdirk_step.h>
 #include <cdea/solver/load_stepper.h>
+#include <cdea/solver/time_stepper.h>
 
 #include <algorithm>
 #include <cmath>
@@ -76,8 +77,8 @@ namespace cdea
         , times(times)
         , out(out)
       {
-        settings.inertia       = false;
-        settings.water_density = 0.;
+        settings.inertia = false;
+        settings.column  = LiquidColumn();
       }
 
       bool run(std::string &message)
@@ -123,6 +124,7 @@ namespace cdea
       CreepSensitivity                &out;
       std::unique_ptr<TimeSensitivity> sensitivity;
       std::unique_ptr<EsdirkStep>      esdirk;
+      std::unique_ptr<StepAcceptance>  acceptance;
       TimePoint                        point;
       double                           t_now       = 0.;
       std::size_t                      next_sample = 0;
@@ -133,13 +135,6 @@ namespace cdea
       {
         message = "creep run at " + format_number(t_now, 10) + " s: " + why;
         return false;
-      }
-
-      LoadState load_on_piece(const double t, const double inside) const
-      {
-        LoadState l = full_load(scene, settings.waveform.voltages_on_piece(t, inside), t);
-        l.time      = t;
-        return l;
       }
 
       StepControlSettings step_control() const
@@ -224,16 +219,10 @@ namespace cdea
 
     void CreepRun::set_up_esdirk()
     {
-      EsdirkStepSettings e;
-      e.tableau                = tableau;
-      e.relative_tolerance     = settings.relative_tolerance;
-      e.displacement_tolerance = settings.displacement_tolerance;
-      e.internal_tolerance     = settings.internal_tolerance;
-      esdirk                   = std::make_unique<EsdirkStep>(
-        *model, e, [this](const double t, const double inside) { return load_on_piece(t, inside); },
-        [this](const double t, const double inside) {
-          return settings.waveform.rates_on_piece(t, inside);
-        });
+      esdirk     = make_esdirk_step(*model, scene, settings, settings.waveform);
+      acceptance = std::make_unique<StepAcceptance>(tableau->embedded_order,
+                                                    settings.control == TimeStepControl::error,
+                                                    ErrorController::elementary());
       esdirk->on_stage = [this](const unsigned int i, const double h) {
         if (stages_ok && sensitivity)
           stages_ok = sensitivity->stage(i, tableau->a[i], h, tableau->gamma * h, stage_message);
@@ -245,8 +234,8 @@ namespace cdea
       point.charges          = model->charges();
     }
 
-    // An ESDIRK step to t_next: accepted (the error ratio at most 1 under
-    // error control) or cut back by the factor of its error estimate.
+    // An ESDIRK step to t_next, accepted or cut back by its error estimate
+    // (StepAcceptance with the elementary controller).
     bool CreepRun::esdirk_step(StepController &control, const double t_next,
                                std::string &message)
     {
@@ -254,15 +243,10 @@ namespace cdea
       const SolveReport solved = esdirk->take(point, h);
       if (!stages_ok)
         return fail(message, stage_message);
-      const bool   error_control = settings.control == TimeStepControl::error;
-      const double k             = tableau->embedded_order + 1.;
-      if (!solved.converged || (error_control && !(esdirk->error_ratio() <= 1.)))
+      if (!acceptance->accepts(solved.converged, esdirk->error_ratio()))
         {
           model->set_state(point.state);
-          const double factor =
-            solved.converged ? std::clamp(0.9 * std::pow(esdirk->error_ratio(), -1. / k), 0.1, 0.9) :
-                               0.25;
-          if (error_control ? control.reject_with_factor(h, factor) : control.reject(h))
+          if (acceptance->reject(control, h, solved.converged, esdirk->error_ratio()))
             return true;
           return fail(message, solved.converged ? "the error control cut the step below its minimum" :
                                                   "no equilibrium: " + solved.message);
@@ -273,11 +257,7 @@ namespace cdea
       point.state = model->state();
       if (sensitivity)
         sensitivity->accept(tableau->stages() - 1);
-      if (error_control)
-        control.accept_with_factor(
-          h, std::clamp(0.9 * std::pow(std::max(esdirk->error_ratio(), 1e-10), -1. / k), 0.2, 5.));
-      else
-        control.accept(h, solved.iterations);
+      acceptance->accept(control, h, esdirk->error_ratio(), solved.iterations);
       accepted(t_next);
       return true;
     }

@@ -1,7 +1,6 @@
 #include <cdea/analysis/frequency_response.h>
 #include <cdea/analysis/run_setup.h>
 #include <cdea/fe/linear_dynamics.h>
-#include <cdea/fe/water_term.h>
 #include <cdea/input/solver_settings.h>
 #include <cdea/output/hdf5_writer.h>
 
@@ -37,18 +36,6 @@ namespace cdea
           model->set_time_step(0., TimeScheme::backward_euler);
         }
       return model;
-    }
-
-    /// The water column's rho_w h / S at the state, if the time runs move it.
-    double water_column_mass(const Parameters &p, const MembraneModel &model)
-    {
-      WaterTerm water;
-      water.parse_parameters(p.load_terms.values);
-      if (!(p.time.inertia && p.time.water_inertia && water.active()))
-        return 0.;
-      const WaterLoad &w = water.water();
-      const double     h = (w.water_volume - model.enclosed_volume()) / w.tube_area;
-      return w.density * std::max(h, 0.) / w.tube_area;
     }
 
     /// The mode shapes' r and z at @p R (disk's z(A) = 1).
@@ -114,7 +101,9 @@ namespace cdea
     for (const double v : r.bias)
       r.drive_scale = std::max(r.drive_scale, std::abs(v));
     r.disk_mass  = p.time.inertia ? scene.mass : 0.;
-    r.water_mass = water_column_mass(p, *model);
+    // The liquid column's rho_w h / S at the state, if the time runs move it.
+    const LiquidColumn column = liquid_column(p);
+    r.water_mass = column.present() ? column.mass(model->enclosed_volume()) : 0.;
     r.density    = p.response.membrane_density;
     const unsigned int n = p.response.frequencies;
     const double       lo = p.response.lowest_frequency_Hz, hi = p.response.highest_frequency_Hz;

@@ -6,6 +6,7 @@
 #include <cdea/input/solver_settings.h>
 #include <cdea/model/load_state.h>
 #include <cdea/numerics/periodic_signal.h>
+#include <cdea/numerics/step_control.h>
 #include <cdea/solver/esdirk_step.h>
 #include <cdea/solver/load_stepper.h>
 #include <cdea/solver/time_stepper.h>
@@ -90,7 +91,7 @@ namespace cdea
     double qs_amplitude = std::numeric_limits<double>::quiet_NaN();
 
     bool   inertia() const { return time.inertia; }
-    bool   water() const { return time.inertia && time.water_density > 0.; }
+    bool   water() const { return time.inertia && time.column.present(); }
     unsigned int n_motion() const { return (inertia() ? 2 : 0) + (water() ? 2 : 0); }
     void   start(double frequency);
     void   relaxed_equilibrium(MembraneModel &m, const std::vector<double> &voltages) const;
@@ -118,31 +119,7 @@ namespace cdea
     if (model->has_internal_variables())
       model->relax_internal_variables();
     model->set_time_step(0., TimeScheme::backward_euler);
-    EsdirkStepSettings e;
-    e.tableau   = esdirk_tableau(time.method);
-    e.disk_mass = inertia() ? scene.mass : 0.;
-    if (water())
-      {
-        e.water_mass_per_volume = time.water_density / (time.tube_area * time.tube_area);
-        e.water_volume          = time.water_volume;
-        e.tube_area             = time.tube_area;
-      }
-    e.relative_tolerance     = time.relative_tolerance;
-    e.displacement_tolerance = time.displacement_tolerance;
-    e.internal_tolerance     = time.internal_tolerance;
-    e.angular_frequency      = 1.;
-    if (e.disk_mass > 0.)
-      e.angular_frequency = std::sqrt(std::max(model->disk_stiffness(), 0.) / e.disk_mass);
-    if (!(e.angular_frequency > 0.))
-      e.angular_frequency = 1.;
-    step = std::make_unique<EsdirkStep>(
-      *model, e,
-      [this](const double t, const double inside) {
-        LoadState l = full_load(scene, waveform.voltages_on_piece(t, inside), t);
-        l.time      = t;
-        return l;
-      },
-      [this](const double t, const double inside) { return waveform.rates_on_piece(t, inside); });
+    step = make_esdirk_step(*model, scene, time, waveform);
     base          = TimePoint();
     base.state    = model->state();
     base.motion.z = model->disk_position();
@@ -234,7 +211,7 @@ namespace cdea
       }
     if (water())
       {
-        pin.volume_mass   = step->water_mass(x[2]);
+        pin.volume_mass   = step->column_mass(x[2]);
         pin.volume_target = x[2];
         pin.volume_start  = x[2];
         pin.volume_reference = x[2];
@@ -285,7 +262,7 @@ namespace cdea
     if (inertia())
       kinetic += 0.5 * scene.mass * point.motion.v * point.motion.v;
     if (water())
-      kinetic += 0.5 * step->water_mass(point.motion.V) * point.motion.V_dot * point.motion.V_dot;
+      kinetic += 0.5 * step->column_mass(point.motion.V) * point.motion.V_dot * point.motion.V_dot;
     return e.mechanical + e.electrostatic + kinetic;
   }
 
@@ -296,11 +273,13 @@ namespace cdea
     ++maps;
     TimePoint point = lift(x);
     step->clear_history();
-    const double k   = esdirk_tableau(time.method)->embedded_order + 1.;
+    StepAcceptance acceptance(esdirk_tableau(time.method)->embedded_order,
+                              time.control == TimeStepControl::error,
+                              ErrorController::elementary());
     // Error control: steps at most T/32 (Time/Time step (s) is the time
     // runs' cap, below a slow drive's needs); fixed steps: Time/Time step (s).
-    const bool   control = time.control == TimeStepControl::error;
-    const double cap     = control ? period / 32. : std::min(time.max_step, period / 32.);
+    const double cap = acceptance.error_control() ? period / 32. :
+                                                    std::min(time.max_step, period / 32.);
     auto keep = [&](PeriodRecord &r) {
       r.t.push_back(point.t);
       r.z.push_back(point.motion.z);
@@ -332,12 +311,13 @@ namespace cdea
           }
         const SolveReport solved = step->take(point, h);
         const double      ratio  = step->error_ratio();
-        if (!solved.converged || (adapt && control && !(ratio <= 1.)))
+        // The frozen sequence takes every step that converges.
+        if (!(adapt ? acceptance.accepts(solved.converged, ratio) : solved.converged))
           {
             if (!adapt || h < time.min_step)
               throw std::runtime_error("the period map failed at t = " + format_number(point.t) +
                                        " s: " + solved.message);
-            h *= solved.converged ? std::clamp(0.9 * std::pow(ratio, -1. / k), 0.1, 0.9) : 0.25;
+            h *= acceptance.rejected(solved.converged, ratio);
             continue;
           }
         model->accept_time_step();
@@ -359,8 +339,7 @@ namespace cdea
         if (adapt)
           {
             chosen.push_back(h);
-            h = control ? h * std::clamp(0.9 * std::pow(std::max(ratio, 1e-10), -1. / k), 0.2, 5.) :
-                          cap;
+            h = acceptance.error_control() ? h * acceptance.accepted(ratio) : cap;
           }
       }
     if (adapt)

@@ -131,7 +131,7 @@ namespace cdea
                   << scheme_description(settings) << "), material "
                   << p.material_law.model
                   << (settings.inertia ? ", disk inertia" : ", no inertia")
-                  << (settings.water_density > 0. ? " and water column" : "") << '\n'
+                  << (settings.column.present() ? " and water column" : "") << '\n'
                   << "writing " << path << '\n';
         const unsigned int n = scene.n_rings();
         std::cout << std::setw(6) << "step" << std::setw(12) << "stage" << std::setw(11)

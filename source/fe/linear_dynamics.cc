@@ -1,10 +1,10 @@
 // The small-signal dynamics of the FE model (see linear_dynamics.h).
 
 #include <cdea/fe/linear_dynamics.h>
+#include <cdea/fe/membrane_model.h>
+#include <cdea/fe/model_access.h>
 #include <cdea/material/linear_response.h>
 #include <cdea/numerics/complex_band.h>
-
-#include "membrane_model_impl.h"
 
 #include <Eigen/Dense>
 
@@ -58,15 +58,15 @@ namespace cdea
         }
     }
 
-    void set_up_points(MembraneModel::Impl &m);
-    void set_up_mass(MembraneModel::Impl &m, double disk_mass, double density);
+    void set_up_points(const ModelAccess &m);
+    void set_up_mass(const ModelAccess &m, double disk_mass, double density);
   };
 
   // The first variations of (l1, l2) at every point with the law's
   // linearization at the point's stored internal variables.
-  void LinearizedDynamics::Data::set_up_points(MembraneModel::Impl &m)
+  void LinearizedDynamics::Data::set_up_points(const ModelAccess &m)
   {
-    const MembraneLaw &law = m.membrane.law();
+    const MembraneLaw &law = m.membrane().law();
     if (law.n_evolving() == 0)
       return;
     m.for_each_variation_point([&](const VariationPoint &v) {
@@ -84,20 +84,21 @@ namespace cdea
   // The disk's mass on z(A) and the membrane's consistent mass
   // rho H int N_i N_j 2 pi R dR for equal components (the energy rule of
   // p + 1 Gauss points integrates it exactly).
-  void LinearizedDynamics::Data::set_up_mass(MembraneModel::Impl &m, const double disk_mass,
+  void LinearizedDynamics::Data::set_up_mass(const ModelAccess &m, const double disk_mass,
                                              const double density)
   {
-    mass.reinit(n, m.mesh.bandwidth());
+    const Discretization &mesh = m.discretization();
+    mass.reinit(n, mesh.bandwidth());
     mass(z_dof, z_dof) += disk_mass;
     if (!(density > 0.))
       return;
-    const ShapeTable  &rule = m.mesh.energy_rule;
-    const unsigned int nc   = m.mesh.dofs_per_cell();
-    const double       rho_H = density * m.scene.material.thickness;
-    for (unsigned int c = 0; c < m.mesh.n_cells(); ++c)
+    const ShapeTable  &rule = mesh.energy_rule;
+    const unsigned int nc   = mesh.dofs_per_cell();
+    const double       rho_H = density * m.scene().material.thickness;
+    for (unsigned int c = 0; c < mesh.n_cells(); ++c)
       {
-        const MeshCell     &cell = m.mesh.cells[c];
-        const unsigned int *dofs = m.mesh.dofs_of(c);
+        const MeshCell     &cell = mesh.cells[c];
+        const unsigned int *dofs = mesh.dofs_of(c);
         for (unsigned int q = 0; q < rule.size(); ++q)
           {
             const double R = cell.x0 + cell.h * rule.points[q];
@@ -105,7 +106,7 @@ namespace cdea
             const double *v = &rule.value[q * nc];
             for (unsigned int i = 0; i < nc; ++i)
               for (unsigned int j = 0; j < nc; ++j)
-                if (m.mesh.component[i] == m.mesh.component[j] && free[dofs[i]] &&
+                if (mesh.component[i] == mesh.component[j] && free[dofs[i]] &&
                     free[dofs[j]])
                   mass(dofs[i], dofs[j]) += w * v[i] * v[j];
           }
@@ -116,38 +117,30 @@ namespace cdea
                                          const double density, const double water_mass)
     : data(std::make_unique<Data>())
   {
-    MembraneModel::Impl &m = *model.impl;
-    Data                &d = *data;
-    d.n     = m.mesh.n_dofs();
-    d.rings = m.scene.n_rings();
-    d.z_dof = m.mesh.z_inner;
+    ModelAccess          &m    = model.access();
+    const Discretization &mesh = m.discretization();
+    Data                 &d    = *data;
+    d.n     = mesh.n_dofs();
+    d.rings = m.scene().n_rings();
+    d.z_dof = mesh.z_inner;
     d.free.assign(d.n, true);
-    for (const unsigned int i : m.mesh.constrained)
+    for (const unsigned int i : mesh.constrained)
       d.free[i] = false;
 
     // The tangent with the internal variables held and no inertia.
-    const double      dt      = m.membrane.time_step();
-    const TimeScheme  scheme  = m.membrane.time_scheme();
-    InertiaTerm      &inertia = m.kernel.term<InertiaTerm>();
-    const InertiaStep step    = inertia.step();
-    m.membrane.set_time_step(0., scheme);
-    inertia.set_step(InertiaStep());
-    const bool ok = m.assemble_constrained(m.solution, assemble_residual | assemble_tangent |
-                                                          assemble_parameter_derivatives |
-                                                          assemble_volume);
-    m.membrane.set_time_step(dt, scheme);
-    inertia.set_step(step);
-    m.tangent_is_current = false;
-    if (!ok)
+    if (!m.assemble_without_inertia(InternalVariables::held,
+                                    assemble_residual | assemble_tangent |
+                                      assemble_parameter_derivatives | assemble_volume))
       throw std::runtime_error("the state lies outside the material's range");
-    d.stiffness          = m.system.tangent;
-    d.rank_one_stiffness = m.system.rank_one_coupling;
-    d.g                  = m.system.volume_gradient;
+    const AssembledSystem &system = m.system();
+    d.stiffness          = system.tangent;
+    d.rank_one_stiffness = system.rank_one_coupling;
+    d.g                  = system.volume_gradient;
     d.load.resize(d.n, d.rings);
     ParameterLayout layout;
     layout.n_rings = d.rings;
     for (unsigned int k = 0; k < d.rings; ++k)
-      d.load.col(k) = -m.system.parameter_residual[layout.voltage(k)];
+      d.load.col(k) = -system.parameter_residual[layout.voltage(k)];
     for (unsigned int i = 0; i < d.n; ++i)
       if (!d.free[i])
         {

@@ -160,13 +160,56 @@ namespace cdea
     return 10. * std::numeric_limits<double>::epsilon() * largest;
   }
 
+  bool MembraneModel::Access::state_tangent()
+  {
+    if (!m.tangent_is_current)
+      {
+        if (!m.assemble_constrained(m.solution, assemble_residual | assemble_tangent))
+          return false;
+        m.tangent_is_current = true;
+      }
+    return true;
+  }
+
+  bool MembraneModel::Access::assemble_without_inertia(const InternalVariables internal,
+                                                       const unsigned int        flags)
+  {
+    MembraneTerm     &membrane = m.membrane;
+    InertiaTerm      &inertia  = m.kernel.term<InertiaTerm>();
+    const double      dt       = membrane.time_step();
+    const TimeScheme  scheme   = membrane.time_scheme();
+    const InertiaStep step     = inertia.step();
+    const bool        relaxed  = internal == InternalVariables::relaxed;
+    std::vector<double> old, current;
+    if (relaxed)
+      {
+        old     = membrane.internal_old;
+        current = membrane.internal_current;
+      }
+    membrane.set_time_step(relaxed ? std::numeric_limits<double>::infinity() : 0., scheme);
+    inertia.set_step(InertiaStep());
+    const bool ok = m.assemble_constrained(m.solution, flags);
+    membrane.set_time_step(dt, scheme);
+    inertia.set_step(step);
+    if (relaxed)
+      {
+        membrane.internal_old     = std::move(old);
+        membrane.internal_current = std::move(current);
+      }
+    m.tangent_is_current = false;
+    return ok;
+  }
+
   MembraneModel::MembraneModel(const Scene &scene, const FeDiscretization &discretization,
                                const NewtonSettings &newton)
     : impl(std::make_unique<Impl>(scene, discretization, newton))
+    , model_access(std::make_unique<Access>(*impl))
   {
     set_reference_state();
     relax_internal_variables();
   }
+
+  ModelAccess &MembraneModel::access() { return *model_access; }
 
   unsigned int MembraneModel::n_dofs() const { return impl->mesh.n_dofs(); }
   unsigned int MembraneModel::n_elements() const { return impl->mesh.n_cells(); }

@@ -1,12 +1,15 @@
 #pragma once
 // The inside of MembraneModel, shared by its source files (model, fields,
-// continuation); not installed with the public headers.
+// continuation, time) and nowhere else: the computations built on a model's
+// state reach it through ModelAccess (model_access.h), which Access below
+// implements on it. Not installed with the public headers.
 
 #include <cdea/fe/cell_kernel.h>
 #include <cdea/fe/inertia_term.h>
 #include <cdea/fe/load_term.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/fe/membrane_term.h>
+#include <cdea/fe/model_access.h>
 #include <cdea/fe/trilinos_solver.h>
 #include <cdea/material/tension_field.h>
 #include <cdea/numerics/band_eigenvalue.h>
@@ -14,17 +17,6 @@
 
 namespace cdea
 {
-  /// One point of the energy rule with the first variations of its stretches
-  /// (as MembraneTerm forms them) and its weight 2 pi H R dR.
-  struct VariationPoint
-  {
-    unsigned int        cell = 0, q = 0;
-    const unsigned int *dofs = nullptr; ///< the cell's global dofs
-    double              w    = 0.;
-    std::vector<double> dl1, dl2;       ///< d l1, d l2 per local dof
-    LawInput            input;          ///< the law's input there
-    const double       *stored = nullptr; ///< its current internal variables
-  };
   class MembraneModel::Impl : public NonlinearProblem
   {
   public:
@@ -115,50 +107,42 @@ namespace cdea
 
     /// Residual scale of Newton and the corrector (N).
     double residual_scale() const;
-
-    /// Calls f(point) (a VariationPoint) at every point of the energy rule
-    /// of the current state.
-    template <typename F>
-    void for_each_variation_point(F &&f) const;
   };
 
-
-
-  template <typename F>
-  void MembraneModel::Impl::for_each_variation_point(F &&f) const
+  /// ModelAccess (model_access.h) on the inside of a model.
+  class MembraneModel::Access final : public ModelAccess
   {
-    const Impl         &m    = *this;
-    const ShapeTable   &rule = m.mesh.energy_rule;
-    const unsigned int  nc = m.mesh.dofs_per_cell(), ni = m.membrane.n_internal();
-    const double        two_pi_H = 2. * M_PI * m.scene.material.thickness;
-    std::vector<double> local(nc);
-    VariationPoint      p;
-    p.dl1.assign(nc, 0.);
-    p.dl2.assign(nc, 0.);
-    for (unsigned int c = 0; c < m.mesh.n_cells(); ++c)
-      {
-        const MeshCell &cell = m.mesh.cells[c];
-        p.cell               = c;
-        p.dofs               = m.mesh.dofs_of(c);
-        for (unsigned int i = 0; i < nc; ++i)
-          local[i] = m.solution[p.dofs[i]];
-        for (unsigned int q = 0; q < rule.size(); ++q)
-          {
-            const PointKinematics k = kinematics(m.mesh, rule, q, cell, local.data());
-            p.q                     = q;
-            p.w                     = two_pi_H * k.R * cell.h * rule.weights[q];
-            for (unsigned int i = 0; i < nc; ++i)
-              {
-                const double gradient = rule.derivative[q * nc + i] / cell.h;
-                p.dl1[i] = (m.mesh.component[i] == 0 ? k.dr : k.dz) * gradient / k.l1;
-                p.dl2[i] = m.mesh.component[i] == 0 ? rule.value[q * nc + i] / k.R : 0.;
-              }
-            p.input  = m.membrane.law_input(k, cell.ring);
-            p.stored = ni ? m.membrane.internal_current.data() +
-                              (std::size_t(c) * rule.size() + q) * ni :
-                            nullptr;
-            f(p);
-          }
-      }
-  }
+  public:
+    explicit Access(Impl &m)
+      : m(m)
+    {}
+
+    const Scene          &scene() const override { return m.scene; }
+    const Discretization &discretization() const override { return m.mesh; }
+    const CellKernel     &kernel() const override { return m.kernel; }
+    const MembraneTerm   &membrane() const override { return m.membrane; }
+    const MembraneLaw    &material_law() const override { return *m.plain_law; }
+    const LoadState      &load() const override { return m.load; }
+    const Eigen::VectorXd &unknowns() const override { return m.solution; }
+    const AssembledSystem &system() const override { return m.system; }
+
+    bool state_tangent() override;
+    bool factor_tangent() override { return m.factorize(); }
+    void solve_tangent(const Eigen::VectorXd &b, Eigen::VectorXd &u) override
+    {
+      m.solve_tangent(b, u);
+    }
+    bool tangent_positive_definite() override
+    {
+      return m.check_stability(false).positive_definite;
+    }
+    bool assemble_without_inertia(InternalVariables internal, unsigned int flags) override;
+    bool assemble(const unsigned int flags, AssembledSystem &out) override
+    {
+      return m.kernel.assemble(m.solution, flags, out);
+    }
+
+  private:
+    Impl &m;
+  };
 } // namespace cdea

@@ -1,9 +1,9 @@
 // Exact sensitivities of a converged state by the direct and the adjoint
 // method with the factored tangent of the state (see sensitivities.h).
 
+#include <cdea/fe/membrane_model.h>
+#include <cdea/fe/model_access.h>
 #include <cdea/fe/sensitivities.h>
-
-#include "membrane_model_impl.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -174,43 +174,41 @@ namespace cdea
   }
 
   StateSensitivity::StateSensitivity(MembraneModel &model_in, std::vector<SceneParameter> list)
-    : model(model_in)
+    : model(model_in.access())
     , parameters_(std::move(list))
   {
-    MembraneModel::Impl &m = *model.impl;
-    if (!m.tangent_is_current)
-      {
-        m.assemble_constrained(m.solution, assemble_residual | assemble_tangent);
-        m.tangent_is_current = true;
-      }
-    if (!m.factorize())
+    if (!model.state_tangent())
+      throw std::runtime_error("StateSensitivity: the state lies outside the material's range");
+    if (!model.factor_tangent())
       throw std::runtime_error("StateSensitivity: the tangent of the state is singular");
 
     // dR/dp and the volume gradient in one pass, into a system of its own
     // (the stored tangent and its factorization stay).
     AssembledSystem s;
-    if (!m.kernel.assemble(m.solution, assemble_parameter_derivatives | assemble_volume, s))
+    if (!model.assemble(assemble_parameter_derivatives | assemble_volume, s))
       throw std::runtime_error("StateSensitivity: the state lies outside the material's range");
-    const unsigned int N = m.mesh.n_dofs(), P = parameters_.size();
+    const Discretization &mesh = model.discretization();
+    const unsigned int    N = mesh.n_dofs(), P = parameters_.size();
     dR_dp.setZero(N, P);
     dx_dp.setZero(N, P);
     Eigen::VectorXd column(N), u(N);
     for (unsigned int j = 0; j < P; ++j)
       {
-        const auto [k, factor] =
-          kernel_column(parameters_[j], m.kernel.parameters(), m.scene, *m.plain_law);
+        const auto [k, factor] = kernel_column(parameters_[j], model.kernel().parameters(),
+                                               model.scene(), model.material_law());
         column                 = factor * s.parameter_residual[k];
-        for (const unsigned int i : m.mesh.constrained)
+        for (const unsigned int i : mesh.constrained)
           column[i] = 0.;
         dR_dp.col(j) = column;
-        m.solve_tangent(-column, u);
+        model.solve_tangent(-column, u);
         dx_dp.col(j) = u;
       }
 
-    const double dz = m.solution[m.mesh.z_inner] - m.solution[m.mesh.z_outer];
+    const Eigen::VectorXd &x  = model.unknowns();
+    const double           dz = x[mesh.z_inner] - x[mesh.z_outer];
     displacement_   = std::abs(dz);
     d_displacement_ = (dz >= 0. ? 1. : -1.) *
-                      (dx_dp.row(m.mesh.z_inner) - dx_dp.row(m.mesh.z_outer)).transpose();
+                      (dx_dp.row(mesh.z_inner) - dx_dp.row(mesh.z_outer)).transpose();
     volume_         = s.volume;
     d_volume_       = dx_dp.transpose() * s.volume_gradient;
   }
@@ -220,14 +218,14 @@ namespace cdea
   {
     // K is symmetric (the second variation of Pi), so K^T lambda = K lambda.
     Eigen::VectorXd lambda;
-    model.impl->solve_tangent(dJ_dx, lambda);
+    model.solve_tangent(dJ_dx, lambda);
     return dJ_dp_explicit - dR_dp.transpose() * lambda;
   }
 
   bool StateSensitivity::stable() const
   {
     // The constructor left the tangent of the state in the model.
-    return model.impl->check_stability(false).positive_definite;
+    return model.tangent_positive_definite();
   }
 
   namespace
@@ -383,23 +381,23 @@ namespace cdea
 
   PointValues StateSensitivity::points() const
   {
-    const MembraneModel::Impl &m    = *model.impl;
-    const Discretization      &mesh = m.mesh;
+    const Discretization &mesh = model.discretization();
+    const MembraneLaw    &law  = model.material_law();
     // Each scene parameter as its kernel column.
     std::vector<std::pair<unsigned int, double>> columns;
     for (const auto &p : parameters_)
-      columns.push_back(kernel_column(p, m.kernel.parameters(), m.scene, *m.plain_law));
-    PointDerivatives at(mesh, m.kernel, m.membrane, *m.plain_law, m.load.voltages,
-                        m.scene.material.thickness, dx_dp, std::move(columns));
+      columns.push_back(kernel_column(p, model.kernel().parameters(), model.scene(), law));
+    PointDerivatives at(mesh, model.kernel(), model.membrane(), law, model.load().voltages,
+                        model.scene().material.thickness, dx_dp, std::move(columns));
 
-    for_each_point(mesh, mesh.energy_rule, m.solution,
+    for_each_point(mesh, mesh.energy_rule, model.unknowns(),
                    [&](const unsigned int c, const unsigned int q, const PointKinematics &p) {
                      at.add(c, mesh.energy_rule, q, p);
                    });
     const unsigned int n_quadrature_points = at.n_points();
     // Then the inner edge of each ring (the left end of its first cell).
     int previous_ring = -1;
-    for_each_point(mesh, mesh.left_end, m.solution,
+    for_each_point(mesh, mesh.left_end, model.unknowns(),
                    [&](const unsigned int c, const unsigned int q, const PointKinematics &p) {
                      if (int(mesh.cells[c].ring) != previous_ring)
                        {

@@ -1,14 +1,13 @@
 // Forward sensitivities through the stages of a quasi-static time run (see
 // time_sensitivity.h).
 
+#include <cdea/fe/membrane_model.h>
+#include <cdea/fe/model_access.h>
 #include <cdea/fe/time_sensitivity.h>
-
-#include "membrane_model_impl.h"
 
 #include <Eigen/Dense>
 
 #include <cmath>
-#include <limits>
 
 namespace cdea
 {
@@ -75,7 +74,7 @@ namespace cdea
   public:
     using Matrix = Eigen::MatrixXd;
 
-    MembraneModel::Impl      &m;
+    ModelAccess              &m;
     std::vector<LawParameter> parameters;
     unsigned int              P = 0, ne = 0, n_points = 0;
     double                    voltage_reference = 1.;
@@ -100,12 +99,12 @@ namespace cdea
     mutable InternalLinearization         lin;
     Matrix                                A, ZG, S_p, S_y, dl, dY, dYhat, rhs;
 
-    Data(MembraneModel::Impl &m, std::vector<LawParameter> list, const unsigned int stages,
+    Data(ModelAccess &m, std::vector<LawParameter> list, const unsigned int stages,
          const double reference)
       : m(m)
       , parameters(std::move(list))
       , P(parameters.size())
-      , ne(m.membrane.law().n_evolving())
+      , ne(m.membrane().law().n_evolving())
       , voltage_reference(reference)
       , dK(stages)
     {}
@@ -114,7 +113,7 @@ namespace cdea
     bool explicit_derivatives(const VariationPoint &v, Matrix &S_p, Matrix &f_p,
                               std::string &message) const
     {
-      const MembraneLaw &law = m.membrane.law();
+      const MembraneLaw &law = m.membrane().law();
       rate.resize(ne);
       S_p.setZero(2, P);
       f_p.setZero(ne, P);
@@ -146,7 +145,7 @@ namespace cdea
     bool linearization(const VariationPoint &v, Matrix &S_y, Matrix &f_y, Matrix &f_l,
                        std::string &message) const
     {
-      if (!m.membrane.law().linearize(v.input, v.stored, lin))
+      if (!m.membrane().law().linearize(v.input, v.stored, lin))
         {
           message = "the material law cannot be linearized at a point of cell " +
                     std::to_string(v.cell);
@@ -200,39 +199,32 @@ namespace cdea
 
   TimeSensitivity::TimeSensitivity(MembraneModel &model, std::vector<LawParameter> parameters,
                                    const unsigned int stages, const double voltage_reference)
-    : data(std::make_unique<Data>(*model.impl, std::move(parameters), stages, voltage_reference))
+    : data(std::make_unique<Data>(model.access(), std::move(parameters), stages, voltage_reference))
   {}
 
   TimeSensitivity::~TimeSensitivity() = default;
 
   bool TimeSensitivity::start_relaxed(std::string &message)
   {
-    Data                &d = *data;
-    MembraneModel::Impl &m = d.m;
+    Data        &d = *data;
+    ModelAccess &m = d.m;
     // The tangent with the internal variables relaxed (network A alone).
-    const double              dt = m.membrane.time_step();
-    const TimeScheme          scheme = m.membrane.time_scheme();
-    const std::vector<double> old = m.membrane.internal_old, current = m.membrane.internal_current;
-    m.membrane.set_time_step(std::numeric_limits<double>::infinity(), scheme);
-    const bool assembled = m.assemble_constrained(m.solution, assemble_residual | assemble_tangent);
-    m.membrane.set_time_step(dt, scheme);
-    m.membrane.internal_old     = old;
-    m.membrane.internal_current = current;
-    if (!assembled)
+    if (!m.assemble_without_inertia(InternalVariables::relaxed,
+                                    assemble_residual | assemble_tangent))
       {
         message = "the start of the run lies outside the material's range";
         return false;
       }
-    Data::Matrix rhs = Data::Matrix::Zero(m.mesh.n_dofs(), d.P), S_p, f_p;
+    const Discretization &mesh = m.discretization();
+    Data::Matrix rhs = Data::Matrix::Zero(mesh.n_dofs(), d.P), S_p, f_p;
     bool         ok  = true;
     m.for_each_variation_point([&](const VariationPoint &v) {
       if (ok && (ok = d.explicit_derivatives(v, S_p, f_p, message)))
         Data::add_force(v, S_p, rhs);
     });
-    for (const unsigned int i : m.mesh.constrained)
+    for (const unsigned int i : mesh.constrained)
       rhs.row(i).setZero();
     ok = ok && d.solve(rhs, d.du, message);
-    m.tangent_is_current = false;
     if (!ok)
       return false;
     // f(l, y, p) = 0 at every point: dy = -f_y^-1 (f_l dl + f_p).
@@ -273,22 +265,21 @@ namespace cdea
   bool TimeSensitivity::stage(const unsigned int i, const std::vector<double> &a_row,
                               const double h, const double gh, std::string &message)
   {
-    Data                &d = *data;
-    MembraneModel::Impl &m = d.m;
-    if (!m.tangent_is_current &&
-        !m.assemble_constrained(m.solution, assemble_residual | assemble_tangent))
+    Data        &d = *data;
+    ModelAccess &m = d.m;
+    if (!m.state_tangent())
       {
         message = "the stage lies outside the material's range";
         return false;
       }
-    m.tangent_is_current = true;
+    const Discretization &mesh = m.discretization();
     // dYhat = dy_n + h sum_j a_ij dK_j.
     d.dYhat = d.dy;
     for (unsigned int j = 0; j < i; ++j)
       if (a_row[j] != 0.)
         d.dYhat += h * a_row[j] * d.dK[j];
 
-    d.rhs.setZero(m.mesh.n_dofs(), d.P);
+    d.rhs.setZero(mesh.n_dofs(), d.P);
     d.points.resize(d.n_points);
     unsigned int q  = 0;
     bool         ok = true;
@@ -324,7 +315,7 @@ namespace cdea
       Data::add_force(v, d.S_p, d.rhs);
       ++q;
     });
-    for (const unsigned int c : m.mesh.constrained)
+    for (const unsigned int c : mesh.constrained)
       d.rhs.row(c).setZero();
     if (!ok || !d.solve(d.rhs, d.du_trial, message))
       return false;
@@ -354,11 +345,12 @@ namespace cdea
 
   double TimeSensitivity::displacement(Eigen::VectorXd &gradient) const
   {
-    const Data                &d = *data;
-    const MembraneModel::Impl &m = d.m;
-    const double dz = m.solution[m.mesh.z_inner] - m.solution[m.mesh.z_outer];
-    gradient        = (dz >= 0. ? 1. : -1.) *
-               (d.du.row(m.mesh.z_inner) - d.du.row(m.mesh.z_outer)).transpose();
+    const Data            &d    = *data;
+    const Discretization  &mesh = d.m.discretization();
+    const Eigen::VectorXd &x    = d.m.unknowns();
+    const double           dz   = x[mesh.z_inner] - x[mesh.z_outer];
+    gradient =
+      (dz >= 0. ? 1. : -1.) * (d.du.row(mesh.z_inner) - d.du.row(mesh.z_outer)).transpose();
     return std::abs(dz);
   }
 } // namespace cdea

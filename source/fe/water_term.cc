@@ -59,6 +59,13 @@ namespace cdea
     return o.str();
   }
 
+  LiquidColumn WaterTerm::liquid_column() const
+  {
+    if (!settings.enabled)
+      return {};
+    return {settings.density, settings.water_volume, settings.tube_area};
+  }
+
   void WaterTerm::set_water(const WaterLoad &water)
   {
     settings = water;

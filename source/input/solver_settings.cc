@@ -1,4 +1,4 @@
-#include <cdea/fe/water_term.h>
+#include <cdea/fe/load_term.h>
 #include <cdea/input/parameters.h>
 #include <cdea/input/solver_settings.h>
 #include <cdea/input/validation.h>
@@ -69,6 +69,17 @@ namespace cdea
     return p.reservoir.width_mm * 1e-3 * p.reservoir.depth_mm * 1e-3;
   }
 
+  LiquidColumn liquid_column(const Parameters &p)
+  {
+    // The column of the load term that carries one (the water load's), moved
+    // with the disk when its inertia is on (doc/time.md).
+    if (p.time.inertia && p.time.water_inertia)
+      for (const auto &term : make_load_terms(p.load_terms.values))
+        if (const LiquidColumn column = term->liquid_column(); column.present())
+          return column;
+    return {};
+  }
+
   TimeSettings time_settings(const Parameters &p, const Scene &scene)
   {
     const auto  &t = p.time;
@@ -84,16 +95,7 @@ namespace cdea
     s.inertia      = t.inertia;
     s.rest_time    = t.rest_time();
     s.fields_interval = t.fields_interval_s;
-    // The water column's inertia (doc/time.md) is the time stepper's, with
-    // the water term's settings.
-    WaterTerm water;
-    water.parse_parameters(p.load_terms.values);
-    if (t.inertia && t.water_inertia && water.active())
-      {
-        s.water_density = water.water().density;
-        s.water_volume  = water.water().water_volume;
-        s.tube_area     = water.water().tube_area;
-      }
+    s.column       = liquid_column(p);
     const std::vector<double> peak = scene.path.voltages(scene.path.n_segments());
     switch (t.waveform)
       {

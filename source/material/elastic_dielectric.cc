@@ -46,6 +46,16 @@ namespace cdea
     return e;
   }
 
+  bool invariant_parameter_derivative(const double l1, const double l2,
+                                      const InvariantDerivatives &d, double &d_energy,
+                                      NominalStress &d_stress)
+  {
+    const StrainEnergy e = strain_energy_of_invariants(l1, l2, d, law_stress);
+    d_energy             = e.energy;
+    d_stress             = e.stress;
+    return true;
+  }
+
   // The voltage term -(e / 2) (l1 l2)^2 with e = eps Phi^2 / H^2 gives
   //   -e l1 l2^2 and -e l1^2 l2 to the stresses,
   //   -e l2^2, -2 e l1 l2, -e l1^2 to the tangent.

@@ -106,10 +106,7 @@ namespace cdea
         d = {1e3 * std::log(I2 / 3.), 0., 1e3 / I2};
       else
         return false;
-      const auto e = strain_energy_of_invariants(l1, l2, d, law_stress);
-      dW           = e.energy;
-      ds           = e.stress;
-      return true;
+      return invariant_parameter_derivative(l1, l2, d, dW, ds);
     }
   };
 

@@ -46,10 +46,7 @@ namespace cdea
       if (p != LawParameter::shear_modulus)
         return false;
       const double I1 = membrane_invariants(l1, l2).first;
-      const auto   e  = strain_energy_of_invariants(l1, l2, {0.5 * (I1 - 3.), 0.5}, law_stress);
-      dW              = e.energy;
-      ds              = e.stress;
-      return true;
+      return invariant_parameter_derivative(l1, l2, {0.5 * (I1 - 3.), 0.5}, dW, ds);
     }
   };
 

@@ -1,6 +1,7 @@
 #include <cdea/numerics/step_control.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace cdea
 {
@@ -82,5 +83,46 @@ namespace cdea
     reason_           = StepStop::none;
     if (!settings.cutbacks_in_total)
       cutbacks_ = 0;
+  }
+
+  StepAcceptance::StepAcceptance(const unsigned int embedded_order, const bool error_control,
+                                 const ErrorController controller)
+    : k(embedded_order + 1.)
+    , error_control_(error_control)
+    , controller(controller)
+  {}
+
+  double StepAcceptance::rejected(const bool converged, const double ratio)
+  {
+    after_rejection = true;
+    return converged ? std::clamp(0.9 * std::pow(ratio, -1. / k), 0.1, 0.9) : 0.25;
+  }
+
+  double StepAcceptance::accepted(const double ratio)
+  {
+    const double r      = std::max(ratio, 1e-10);
+    const double factor = 0.9 * std::pow(r, -controller.alpha / k) *
+                          std::pow(std::max(last_ratio, 1e-10), controller.beta / k);
+    const double most   = controller.capped_after_rejection && after_rejection ? 1. : 5.;
+    last_ratio          = r;
+    after_rejection     = false;
+    return std::clamp(factor, 0.2, most);
+  }
+
+  bool StepAcceptance::reject(StepController &control, const double attempted,
+                              const bool converged, const double ratio)
+  {
+    const double factor = rejected(converged, ratio);
+    return error_control_ ? control.reject_with_factor(attempted, factor) :
+                            control.reject(attempted);
+  }
+
+  void StepAcceptance::accept(StepController &control, const double attempted,
+                              const double ratio, const unsigned int iterations)
+  {
+    if (error_control_)
+      control.accept_with_factor(attempted, accepted(ratio));
+    else
+      control.accept(attempted, iterations);
   }
 } // namespace cdea

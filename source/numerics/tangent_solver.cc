@@ -1,3 +1,4 @@
+#include <cdea/numerics/fixed_size.h>
 #include <cdea/numerics/tangent_solver.h>
 
 #include <algorithm>
@@ -152,6 +153,15 @@ namespace cdea
                 b[i] -= b[j] * column[i];
           }
     }
+
+    /// f with the bandwidth fixed at compile time for the bandwidths 5, 7, 9
+    /// and 11 of the FE tangents of low degree, else at run time
+    /// (numerics/fixed_size.h).
+    template <typename F>
+    void with_bandwidth(const unsigned int bw, F &&f)
+    {
+      with_fixed_size<5, 7, 9, 11>(bw, std::forward<F>(f));
+    }
   } // namespace
 
   bool BandedLU::factorize(const BandMatrix &K)
@@ -161,23 +171,9 @@ namespace cdea
     if (K.bandwidth() <= widest_inline_band)
       {
         lu.reshape_like(K);
-        switch (kl)
-          {
-            case 5:
-              factorized = band_lu<5>(K.data(), lu.data(), n, kl, pivots.data());
-              break;
-            case 7:
-              factorized = band_lu<7>(K.data(), lu.data(), n, kl, pivots.data());
-              break;
-            case 9:
-              factorized = band_lu<9>(K.data(), lu.data(), n, kl, pivots.data());
-              break;
-            case 11:
-              factorized = band_lu<11>(K.data(), lu.data(), n, kl, pivots.data());
-              break;
-            default:
-              factorized = band_lu<0>(K.data(), lu.data(), n, kl, pivots.data());
-          }
+        with_bandwidth(kl, [&](auto bw_fixed) {
+          factorized = band_lu<bw_fixed()>(K.data(), lu.data(), n, kl, pivots.data());
+        });
         return factorized;
       }
     lu = K;
@@ -194,23 +190,9 @@ namespace cdea
     if (lu.bandwidth() <= widest_inline_band)
       {
         const unsigned int n = lu.size(), bw = lu.bandwidth();
-        switch (bw)
-          {
-            case 5:
-              band_lu_solve<5>(lu.data(), n, bw, pivots.data(), b.data());
-              break;
-            case 7:
-              band_lu_solve<7>(lu.data(), n, bw, pivots.data(), b.data());
-              break;
-            case 9:
-              band_lu_solve<9>(lu.data(), n, bw, pivots.data(), b.data());
-              break;
-            case 11:
-              band_lu_solve<11>(lu.data(), n, bw, pivots.data(), b.data());
-              break;
-            default:
-              band_lu_solve<0>(lu.data(), n, bw, pivots.data(), b.data());
-          }
+        with_bandwidth(bw, [&](auto bw_fixed) {
+          band_lu_solve<bw_fixed()>(lu.data(), n, bw, pivots.data(), b.data());
+        });
         return true;
       }
     const int  n = lu.size(), kl = lu.bandwidth(), ldab = lu.leading_dimension(), nrhs = 1;

@@ -15,11 +15,6 @@ namespace cdea
     , voltage_rates(std::move(voltage_rates))
   {}
 
-  double EsdirkStep::water_mass(const double V) const
-  {
-    return settings.water_mass_per_volume * std::max(settings.water_volume - V, 0.);
-  }
-
   SolveReport EsdirkStep::take(const TimePoint &start, const double h)
   {
     return take_stages(start, h);
@@ -106,13 +101,13 @@ namespace cdea
     if (s.dt > 0.)
       s.residual_scale = 40. * std::numeric_limits<double>::epsilon() / 1e-10 *
                          (settings.disk_mass * std::abs(s.disk_target)) / (gh * gh);
-    if (settings.water_mass_per_volume > 0. && water_mass(hat.V) > 0.)
+    if (settings.column.mass_per_volume() > 0. && column_mass(hat.V) > 0.)
       {
         s.dt                = gh;
         s.beta              = 1.;
-        s.volume_mass       = water_mass(hat.V);
+        s.volume_mass       = column_mass(hat.V);
         s.volume_reference  = hat.V;
-        s.volume_mass_slope = -settings.water_mass_per_volume;
+        s.volume_mass_slope = -settings.column.mass_per_volume();
         s.volume_target     = hat.V + gh * hat.V_dot;
         s.volume_start      = hat.V;
       }
@@ -200,10 +195,10 @@ namespace cdea
         ratio   = std::isfinite(z_error) ? std::max(ratio, std::abs(z_error) / z_scale) :
                                            std::numeric_limits<double>::infinity();
       }
-    if (settings.water_mass_per_volume > 0.)
+    if (settings.column.mass_per_volume() > 0.)
       {
         const double V_scale =
-          settings.displacement_tolerance * settings.tube_area + rtol * std::abs(end.motion.V);
+          settings.displacement_tolerance * settings.column.area + rtol * std::abs(end.motion.V);
         ratio = std::max({ratio, std::abs(estimate.V) / V_scale,
                           std::abs(estimate.V_dot) / (V_scale * omega)});
       }

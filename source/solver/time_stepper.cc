@@ -79,22 +79,6 @@ namespace cdea
     return l;
   }
 
-  LoadState TimeStepper::load_on_piece(const double t, const double inside) const
-  {
-    LoadState l = full_load(scene,
-                            inside < 0. ? std::vector<double>(scene.n_rings(), 0.) :
-                                          settings.waveform.voltages_on_piece(t, inside),
-                            t);
-    l.time = t;
-    return l;
-  }
-
-  std::vector<double> TimeStepper::voltage_rates(const double t, const double inside) const
-  {
-    return inside < 0. ? std::vector<double>(scene.n_rings(), 0.) :
-                         settings.waveform.rates_on_piece(t, inside);
-  }
-
   double TimeStepper::largest_step(const TimeSettings &settings)
   {
     const Waveform &w = settings.waveform;
@@ -167,7 +151,7 @@ namespace cdea
         inertia.beta        = beta;
         inertia.disk_mass   = scene.mass;
         inertia.disk_target = m.z + dt * m.v + dt * dt * (0.5 - beta) * m.a;
-        if (settings.water_density > 0.)
+        if (settings.column.present())
           {
             inertia.volume_mass   = water_column_mass(m);
             inertia.volume_target = m.V + dt * m.V_dot + dt * dt * (0.5 - beta) * m.V_ddot;
@@ -182,7 +166,7 @@ namespace cdea
       return report;
 
     const double z = model.disk_position();
-    const double V = settings.water_density > 0. ? model.enclosed_volume() : m.V;
+    const double V = settings.column.present() ? model.enclosed_volume() : m.V;
     if (settings.inertia)
       {
         const double a = (z - inertia.disk_target) / (beta * dt * dt);
@@ -215,14 +199,11 @@ namespace cdea
     return summary;
   }
 
-  // The water column above the frame plane (as a mass on the enclosed
+  // The liquid column above the frame plane (as a mass on the enclosed
   // volume), frozen over a step that starts with @p m.
   double TimeStepper::water_column_mass(const InertiaState &m) const
   {
-    if (!(settings.water_density > 0.))
-      return 0.;
-    const double height = (settings.water_volume - m.V) / settings.tube_area;
-    return settings.water_density * std::max(height, 0.) / settings.tube_area;
+    return settings.column.present() ? settings.column.mass(m.V) : 0.;
   }
 
   double TimeStepper::kinetic_energy(const double volume_mass) const
@@ -264,7 +245,7 @@ namespace cdea
     }
     motion   = InertiaState();
     motion.z = model.disk_position();
-    motion.V = settings.water_density > 0. ? model.enclosed_volume() : 0.;
+    motion.V = settings.column.present() ? model.enclosed_volume() : 0.;
 
     energy              = EnergyAccount();
     energy.last         = model.energy_budget();

@@ -1,6 +1,6 @@
 // The error-controlled ESDIRK path of the time stepper (time_stepper.h):
-// the step from its start state, the step-size factor from the error
-// estimate, and the accepted or rejected step with the shared step
+// the step from its start state, accepted or rejected by its error estimate
+// (StepAcceptance with Gustafsson's PI controller) through the shared step
 // controller. The fixed-step path is time_stepper.cc.
 #include <cdea/base/format.h>
 #include <cdea/model/output_fields.h>
@@ -13,21 +13,15 @@
 
 namespace cdea
 {
-  // The ESDIRK step, the state it starts from and the weight of velocity
-  // errors: the disk's angular frequency sqrt(k/m) at the start (1 rad/s
-  // without inertia).
-  void TimeStepper::start_esdirk()
+  std::unique_ptr<EsdirkStep> make_esdirk_step(TransientModel &model, const Scene &scene,
+                                               const TimeSettings &settings,
+                                               const Waveform     &waveform)
   {
     EsdirkStepSettings e;
     e.tableau   = esdirk_tableau(settings.method);
     e.disk_mass = settings.inertia ? scene.mass : 0.;
-    if (settings.inertia && settings.water_density > 0.)
-      {
-        e.water_mass_per_volume =
-          settings.water_density / (settings.tube_area * settings.tube_area);
-        e.water_volume = settings.water_volume;
-        e.tube_area    = settings.tube_area;
-      }
+    if (settings.inertia && settings.column.present())
+      e.column = settings.column;
     e.relative_tolerance     = settings.relative_tolerance;
     e.displacement_tolerance = settings.displacement_tolerance;
     e.internal_tolerance     = settings.internal_tolerance;
@@ -35,9 +29,24 @@ namespace cdea
       e.angular_frequency = std::sqrt(std::max(model.disk_stiffness(), 0.) / e.disk_mass);
     if (!(e.angular_frequency > 0.))
       e.angular_frequency = 1.;
-    esdirk = std::make_unique<EsdirkStep>(
-      model, e, [this](const double t, const double inside) { return load_on_piece(t, inside); },
-      [this](const double t, const double inside) { return voltage_rates(t, inside); });
+    const std::vector<double> rest(scene.n_rings(), 0.);
+    return std::make_unique<EsdirkStep>(
+      model, e,
+      [&scene, &waveform, rest](const double t, const double inside) {
+        LoadState l =
+          full_load(scene, inside < 0. ? rest : waveform.voltages_on_piece(t, inside), t);
+        l.time = t;
+        return l;
+      },
+      [&waveform, rest](const double t, const double inside) {
+        return inside < 0. ? rest : waveform.rates_on_piece(t, inside);
+      });
+  }
+
+  // The ESDIRK step and the state it starts from.
+  void TimeStepper::start_esdirk()
+  {
+    esdirk                 = make_esdirk_step(model, scene, settings, settings.waveform);
     point                  = TimePoint();
     point.t                = t_now;
     point.state            = model.state();
@@ -45,23 +54,9 @@ namespace cdea
     point.dissipation_rate = model.dissipation_rate();
     point.charges          = energy.last.charge;
     result.error_estimate  = 0.;
-    last_ratio             = 1.;
-    after_rejection        = false;
-  }
-
-  // The PI controller's factor for the next step after an accepted one
-  // (Gustafsson's: 0.9 r_n^(-0.7/k) r_(n-1)^(0.4/k), k = embedded order + 1),
-  // in [0.2, 5], at most 1 right after a rejection.
-  double TimeStepper::next_step_factor(const double ratio)
-  {
-    const double k = esdirk_tableau(settings.method)->embedded_order + 1.;
-    const double r = std::max(ratio, 1e-10);
-    double       factor =
-      0.9 * std::pow(r, -0.7 / k) * std::pow(std::max(last_ratio, 1e-10), 0.4 / k);
-    factor = std::clamp(factor, 0.2, after_rejection ? 1. : 5.);
-    last_ratio      = r;
-    after_rejection = false;
-    return factor;
+    acceptance             = std::make_unique<StepAcceptance>(
+      esdirk_tableau(settings.method)->embedded_order, settings.control == TimeStepControl::error,
+      ErrorController::proportional_integral());
   }
 
   bool TimeStepper::reject_esdirk_step(StepController &control, const double h,
@@ -70,14 +65,7 @@ namespace cdea
     model.set_state(point.state);
     motion = point.motion;
     ++result.rejected_steps;
-    after_rejection = true;
-    const bool error_control = settings.control == TimeStepControl::error;
-    double     factor        = 0.25;
-    if (solved.converged)
-      factor = std::clamp(0.9 * std::pow(esdirk->error_ratio(),
-                                         -1. / (esdirk_tableau(settings.method)->embedded_order + 1.)),
-                          0.1, 0.9);
-    if (error_control ? control.reject_with_factor(h, factor) : control.reject(h))
+    if (acceptance->reject(control, h, solved.converged, esdirk->error_ratio()))
       return true;
     const double t_next = t_now + h;
     result.message = solved.converged ?
@@ -101,7 +89,7 @@ namespace cdea
     if (!settings.inertia)
       {
         point.motion.v     = (point.motion.z - start.motion.z) / h;
-        point.motion.V     = settings.water_density > 0. ? model.enclosed_volume() : 0.;
+        point.motion.V     = settings.column.present() ? model.enclosed_volume() : 0.;
         point.motion.V_dot = (point.motion.V - start.motion.V) / h;
       }
     motion = point.motion;
@@ -120,8 +108,7 @@ namespace cdea
     const SolveReport solved = esdirk->take(point, h);
     result.solves += esdirk->solves();
     result.newton_iterations += esdirk->iterations();
-    const bool error_control = settings.control == TimeStepControl::error;
-    if (!solved.converged || (error_control && !(esdirk->error_ratio() <= 1.)))
+    if (!acceptance->accepts(solved.converged, esdirk->error_ratio()))
       return reject_esdirk_step(control, h, solved);
 
     StepEnds ends;
@@ -129,7 +116,7 @@ namespace cdea
     ends.motion0                = point.motion;
     const TimePoint start       = point;
     accept_esdirk_step(h);
-    const double volume_mass = settings.water_density > 0. ? esdirk->water_mass(motion.V) : 0.;
+    const double volume_mass = settings.column.present() ? esdirk->column_mass(motion.V) : 0.;
     const auto step_from_start = [&](const double theta) {
       model.set_state(start.state);
       if (!esdirk->take(start, theta * h).converged)
@@ -144,10 +131,7 @@ namespace cdea
       (esdirk->iterations() + esdirk->solves() - 1) / std::max(esdirk->solves(), 1u);
     finish_step(ends, h, t_next, breakpoint, volume_mass, esdirk->iterations(), step_from_start,
                 previous);
-    if (error_control)
-      control.accept_with_factor(h, next_step_factor(esdirk->error_ratio()));
-    else
-      control.accept(h, per_stage);
+    acceptance->accept(control, h, esdirk->error_ratio(), per_stage);
     return true;
   }
 } // namespace cdea

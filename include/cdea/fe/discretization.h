@@ -11,10 +11,11 @@
 // the reference derivatives over h, and the weights scale with h.
 
 #include <cdea/model/scene.h>
+#include <cdea/numerics/fixed_size.h>
 
 #include <cmath>
 #include <memory>
-#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace cdea
@@ -132,24 +133,11 @@ namespace cdea
 
   /// f(std::integral_constant<unsigned int, n>{}) for the n = 2 (p + 1) dofs
   /// per cell of the degrees p = 1..8 the input allows, else f with 0: cell
-  /// loops written for a compile-time n (unrolled and vectorized, the same
-  /// operations per entry) with n = 0 meaning "n at run time".
+  /// loops written for a compile-time n (numerics/fixed_size.h).
   template <typename F>
   void with_dofs_per_cell(const unsigned int n, F &&f)
   {
-    using std::integral_constant;
-    switch (n)
-      {
-        case 4: return f(integral_constant<unsigned int, 4>{});
-        case 6: return f(integral_constant<unsigned int, 6>{});
-        case 8: return f(integral_constant<unsigned int, 8>{});
-        case 10: return f(integral_constant<unsigned int, 10>{});
-        case 12: return f(integral_constant<unsigned int, 12>{});
-        case 14: return f(integral_constant<unsigned int, 14>{});
-        case 16: return f(integral_constant<unsigned int, 16>{});
-        case 18: return f(integral_constant<unsigned int, 18>{});
-        default: return f(integral_constant<unsigned int, 0>{});
-      }
+    with_fixed_size<4, 6, 8, 10, 12, 14, 16, 18>(n, std::forward<F>(f));
   }
 
   /// Calls f(c, q, kinematics) at every point q of @p rule in every cell c,

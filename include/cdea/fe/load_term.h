@@ -16,6 +16,7 @@
 
 #include <cdea/base/parameter_declarations.h>
 #include <cdea/fe/cell_kernel.h>
+#include <cdea/model/transient_model.h>
 
 #include <memory>
 #include <string>
@@ -55,6 +56,11 @@ namespace cdea
     /// messages that refuse the term name them.
     virtual std::string switched_on() const = 0;
     virtual std::string off_value() const   = 0;
+
+    /// The liquid column the term's load moves with the enclosed volume (the
+    /// water load's), whose inertia time runs and the small-signal dynamics
+    /// take (transient_model.h); none by default.
+    virtual LiquidColumn liquid_column() const { return {}; }
 
     /// A line about the term for the start of `cdea run` (empty: none).
     virtual std::string describe() const { return {}; }

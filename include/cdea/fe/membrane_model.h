@@ -33,6 +33,7 @@
 namespace cdea
 {
   class LoadTerm;
+  class ModelAccess;
   class ParameterValues;
 
   class MembraneModel : public TransientModel
@@ -135,14 +136,17 @@ namespace cdea
     std::vector<double> charges() const override;
     double              dissipation_rate() const override;
 
+    /// Read-only access to the model for the computations built on its
+    /// state and tangent (model_access.h): sensitivities, linear dynamics,
+    /// sensitivities through time.
+    ModelAccess &access();
+
   private:
-    /// Sensitivities use the tangent of the converged state (fe/sensitivities.h).
-    friend class StateSensitivity;
-    friend class LinearizedDynamics;
-    friend class TimeSensitivity;
     class Impl;
+    class Access;
     class Continuation;
     std::unique_ptr<Impl>                impl;
+    std::unique_ptr<Access>              model_access;
     std::unique_ptr<ContinuationProblem> continuation_problem;
   };
 } // namespace cdea

@@ -35,6 +35,7 @@
 namespace cdea
 {
   class MembraneModel;
+  class ModelAccess;
 
   enum class ParameterKind
   {
@@ -131,7 +132,7 @@ namespace cdea
                             const Eigen::VectorXd &dJ_dp_explicit) const;
 
   private:
-    MembraneModel              &model;
+    ModelAccess                &model; ///< the model's state and tangent, read-only
     std::vector<SceneParameter> parameters_;
     Eigen::MatrixXd             dR_dp, dx_dp;
     double                      displacement_ = 0., volume_ = 0.;

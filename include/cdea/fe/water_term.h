@@ -48,6 +48,8 @@ namespace cdea
     std::string describe() const override;
     /// "  water: free surface ... mm above the frame plane"
     std::string describe_state(const StepSummary &summary) const override;
+    /// The water in the cone and the level tube, when the load is on.
+    LiquidColumn liquid_column() const override;
 
     void             set_water(const WaterLoad &water);
     const WaterLoad &water() const { return settings; }

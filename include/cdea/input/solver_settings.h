@@ -39,6 +39,10 @@ namespace cdea
   /// Cross-section width x depth of the pump's level tube (m^2).
   double tube_area(const Parameters &p);
 
+  /// The liquid column whose inertia a time run carries with the disk's
+  /// (Time/Inertia and Time/Water inertia on): that of the load term which
+  /// has one (LoadTerm::liquid_column()); none otherwise.
+  LiquidColumn liquid_column(const Parameters &p);
 
   /// The time stepper's settings (waveform from the last waypoint or the table).
   TimeSettings time_settings(const Parameters &p, const Scene &scene);

@@ -44,6 +44,14 @@ namespace cdea
   StrainEnergy strain_energy_of_invariants(double l1, double l2, const InvariantDerivatives &d,
                                            unsigned int request);
 
+  /// The derivative in one of a law's constants of an energy of the
+  /// invariants, @p d holding the derivatives in it of W, W1 and W2: the
+  /// energy's into @p d_energy, the stresses' into @p d_stress (the chain
+  /// rule of strain_energy_of_invariants()). True, for
+  /// ElasticDielectricLaw::strain_energy_derivative() to return.
+  bool invariant_parameter_derivative(double l1, double l2, const InvariantDerivatives &d,
+                                      double &d_energy, NominalStress &d_stress);
+
   class ElasticDielectricLaw : public MembraneLaw
   {
   public:

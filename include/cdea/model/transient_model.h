@@ -17,15 +17,42 @@
 #include <cdea/material/membrane_law.h>
 #include <cdea/model/equilibrium_model.h>
 
-
+#include <algorithm>
 #include <vector>
 
 namespace cdea
 {
+  /// A liquid column that moves with the enclosed volume V: the pump's water
+  /// (the water load term gives it, LoadTerm::liquid_column()), of density
+  /// rho, W in the cone and a level tube of cross-section S together, its
+  /// free surface at the height h = (W - V) / S. Its mass on V is
+  /// m_V = rho h / S (kg/m^4), zero once the tube is empty, and linear in V
+  /// with the slope -rho / S^2.
+  struct LiquidColumn
+  {
+    double density = 0.; ///< kg/m^3; 0: no column
+    double volume  = 0.; ///< m^3, W
+    double area    = 1.; ///< m^2, S
+
+    bool present() const { return density > 0.; }
+    /// m_V = rho max(h, 0) / S at @p V (the fixed-step schemes, the
+    /// frequency response).
+    double mass(const double V) const { return density * std::max((volume - V) / area, 0.) / area; }
+    /// rho / S^2 (kg/m^7), -dm_V/dV.
+    double mass_per_volume() const { return density / (area * area); }
+    /// The same m_V as mass_per_volume() max(W - V, 0): the ESDIRK stages'
+    /// form, whose slope their inertia term takes (rounded apart from mass();
+    /// each path keeps its own).
+    double mass_by_slope(const double V) const
+    {
+      return mass_per_volume() * std::max(volume - V, 0.);
+    }
+  };
+
   /// The inertia terms of one time step (dt = 0: none).
   ///
-  /// The water column's mass m_V = rho h / S^2 depends on V through the
-  /// column height h = (V_w - V) / S. Newmark's steps freeze it over a step
+  /// The water column's mass m_V (LiquidColumn) depends on V through the
+  /// column height h = (W - V) / S. Newmark's steps freeze it over a step
   /// (volume_mass_slope = 0). A Runge-Kutta stage (dt = gamma h, beta = 1)
   /// keeps it exact: the equation of motion of the kinetic energy
   /// m_V(V) V'^2 / 2 is m_V(V) V'' + m_V'(V) V'^2 / 2 = force, with

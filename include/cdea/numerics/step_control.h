@@ -17,6 +17,19 @@
 // say for each case. accept_with_factor() and reject_with_factor() take the
 // factor from the caller instead (from an error estimate, say), under the
 // same cap, minimum and count of cut-backs.
+//
+// StepAcceptance is the other half for steps with an embedded error estimate
+// (the ESDIRK steps of the time runs, the creep sensitivities and the
+// periodic steady state): whether a step is accepted, and the factor of the
+// next one from its error ratio r (the largest weighted error; accepted if
+// r <= 1), with k the embedded order + 1:
+//   rejected:  0.9 r^(-1/k) in [0.1, 0.9]; a failed solve 1/4;
+//   accepted:  0.9 r_n^(-alpha/k) r_(n-1)^(beta/k) in [0.2, 5], at most 1
+//              right after a rejection if the controller says so:
+//              Gustafsson's PI controller (alpha 0.7, beta 0.4, capped after
+//              a rejection) or the elementary one (alpha 1, beta 0).
+// Without error control (fixed steps) only a failed solve rejects a step,
+// and the StepController's own cut-back and growth size the next.
 
 #include <limits>
 #include <string>
@@ -111,5 +124,54 @@ namespace cdea
 
     double   base(StepBase which, double attempted) const;
     StepStop stop_after(double next_step, unsigned int cutbacks) const;
+  };
+
+  /// The controller of the next step after an accepted one (see above).
+  struct ErrorController
+  {
+    double alpha = 1.; ///< exponent of this step's ratio, over k
+    double beta  = 0.; ///< exponent of the last step's ratio, over k
+    bool   capped_after_rejection = false; ///< no growth right after a rejection
+
+    /// Gustafsson's PI controller (the time runs).
+    static ErrorController proportional_integral() { return {0.7, 0.4, true}; }
+    /// 0.9 r^(-1/k) (the creep sensitivities and the periodic steady state).
+    static ErrorController elementary() { return {1., 0., false}; }
+  };
+
+  class StepAcceptance
+  {
+  public:
+    /// For an estimate of order @p embedded_order, with error control
+    /// (@p error_control) or fixed steps.
+    StepAcceptance(unsigned int embedded_order, bool error_control,
+                   ErrorController controller);
+
+    bool error_control() const { return error_control_; }
+    /// Whether a step is accepted: its solve converged and, under error
+    /// control, its error ratio @p ratio is at most 1.
+    bool accepts(bool converged, double ratio) const
+    {
+      return converged && (!error_control_ || ratio <= 1.);
+    }
+
+    /// The factor of the next attempt after a rejected one.
+    double rejected(bool converged, double ratio);
+    /// The factor of the next step after an accepted one of error ratio @p ratio.
+    double accepted(double ratio);
+
+    /// The same through @p control for the attempt @p attempted: under error
+    /// control with these factors, else by the controller's own rules (@p
+    /// iterations of the solve). reject() is false if the controller gives up.
+    bool reject(StepController &control, double attempted, bool converged, double ratio);
+    void accept(StepController &control, double attempted, double ratio,
+                unsigned int iterations);
+
+  private:
+    double          k;
+    bool            error_control_;
+    ErrorController controller;
+    double          last_ratio      = 1.;
+    bool            after_rejection = false;
   };
 } // namespace cdea

@@ -55,11 +55,9 @@ namespace cdea
   {
     const EsdirkTableau *tableau   = nullptr;
     double               disk_mass = 0.; ///< kg; 0: the disk has no inertia
-    /// The water column: m_V(V) = water_mass_per_volume (water_volume - V) / S^2,
-    /// rho and S folded in: water_mass_per_volume = rho / S^2 (0: none).
-    double water_mass_per_volume = 0.;
-    double water_volume          = 0.; ///< m^3
-    double tube_area             = 1.; ///< m^2
+    /// The liquid column on the enclosed volume (the pump's water; none:
+    /// no such inertia).
+    LiquidColumn column;
     double relative_tolerance     = 1e-6;
     double displacement_tolerance = 1e-9; ///< m
     double internal_tolerance     = 1e-9;
@@ -94,8 +92,9 @@ namespace cdea
     unsigned int iterations() const { return newton_iterations; }
     unsigned int solves() const { return stage_solves; }
 
-    /// The water column's mass rho h / S at volume @p V (kg/m^4).
-    double water_mass(double V) const;
+    /// The liquid column's mass rho h / S at volume @p V as the stages take
+    /// it (LiquidColumn::mass_by_slope(), kg/m^4).
+    double column_mass(double V) const { return settings.column.mass_by_slope(V); }
     /// Forget the last steps' stages as predictors (after a jump in the state).
     void clear_history() { previous.clear(); }
 

@@ -9,12 +9,13 @@
 //  3. the voltage waveform from t = 0 to its end in implicit steps of at most
 //     `max_step` (and, for a sine, 1/16 of its period), landing on every
 //     breakpoint of the waveform. An ESDIRK method (esdirk_step.h, the
-//     default) takes each step in stages and sizes the next from its error
-//     estimate (a PI controller through StepController's accept_with_factor
-//     and reject_with_factor), or takes fixed steps. The fixed-step schemes
-//     of earlier versions solve each step once with the internal variables'
-//     update (backward Euler or the trapezoidal rule) and, if on, the Newmark
-//     inertia of the disk (and the pump's water column):
+//     default) takes each step in stages and accepts it and sizes the next
+//     from its error estimate (StepAcceptance with a PI controller, through
+//     StepController's accept_with_factor and reject_with_factor), or takes
+//     fixed steps. The fixed-step schemes of earlier versions solve each
+//     step once with the internal variables' update (backward Euler or the
+//     trapezoidal rule) and, if on, the Newmark inertia of the disk (and the
+//     pump's water column):
 //       a1 = (z1 - z_pred) / (beta dt^2),  v1 = v0 + dt ((1 - gamma) a0 + gamma a1).
 //     Every scheme halves the step where Newton fails and, with fixed steps,
 //     grows it back after easy steps (StepController, numerics/step_control.h).
@@ -67,11 +68,21 @@ namespace cdea
     double rest_time = std::numeric_limits<double>::infinity();
     /// Fields wanted every this much time besides the breakpoints (0: not).
     double fields_interval = 0.;
-    /// The pump's water column (transient_model.h); density 0: none.
-    double water_density = 0.; ///< kg/m^3
-    double water_volume  = 0.; ///< m^3
-    double tube_area     = 1.; ///< m^2
+    /// The liquid column on the enclosed volume whose inertia the steps
+    /// carry with the disk's (the pump's water; transient_model.h); none:
+    /// not present.
+    LiquidColumn column;
   };
+
+  /// An ESDIRK step of @p settings' method (an ESDIRK one) on @p model: the
+  /// disk's mass with inertia, the liquid column, the tolerances, velocity
+  /// errors weighed by the disk's angular frequency sqrt(k/m) at the model's
+  /// state (1 rad/s without inertia), and the load on the pieces of @p
+  /// waveform (zero voltage before t = 0). @p scene and @p waveform must
+  /// outlive the step.
+  std::unique_ptr<EsdirkStep> make_esdirk_step(TransientModel &model, const Scene &scene,
+                                               const TimeSettings &settings,
+                                               const Waveform     &waveform);
 
   class TimeStepper
   {
@@ -133,14 +144,12 @@ namespace cdea
     };
 
     /// The ESDIRK path: its step, the state at t_now (with the rates the
-    /// next step starts from), the last error ratio of the PI controller,
-    /// whether the step being tried follows a rejection, and the disk's
-    /// angular frequency that weighs velocity errors.
-    std::unique_ptr<EsdirkStep> esdirk;
-    TimePoint                   point;
-    double                      last_ratio         = 1.;
-    bool                        after_rejection    = false;
-    double                      largest_voltage    = 0.;
+    /// next step starts from) and the acceptance of its steps by their
+    /// error estimate (with the PI controller's memory).
+    std::unique_ptr<EsdirkStep>     esdirk;
+    TimePoint                       point;
+    std::unique_ptr<StepAcceptance> acceptance;
+    double                          largest_voltage = 0.;
 
     LoadStepper                      *quasi_static_stepper = nullptr;
     std::shared_ptr<const StepFields> reported_fields;
@@ -156,9 +165,6 @@ namespace cdea
     bool time_stage_stability() const { return quasi_static.stability_check && !settings.inertia; }
     LoadState           load_at(double t) const;
     std::vector<double> voltages_at(double t) const;
-    /// On the waveform's piece holding @p inside (Waveform::voltages_on_piece).
-    LoadState           load_on_piece(double t, double inside) const;
-    std::vector<double> voltage_rates(double t, double inside) const;
     bool                run_quasi_static();
     StepSummary         start_time_stage();
     StepControlSettings step_control() const;
@@ -170,7 +176,6 @@ namespace cdea
                                  StepSummary &previous);
     bool        reject_esdirk_step(StepController &control, double h, const SolveReport &solved);
     void        accept_esdirk_step(double h);
-    double      next_step_factor(double ratio);
     /// After an accepted step of length h from ends.state0: the columns, the
     /// rows and the onset search (with @p step_from_start, which leaves the
     /// model and motion at a fraction of the step), common to both paths.
