@@ -179,20 +179,24 @@ namespace cdea
     return d;
   }
 
+  namespace
+  {
+    /// The specimen's size entries and what each is.
+    const std::pair<const char *, const char *> specimen_sizes[3] = {
+      {"Specimen gauge length (mm)",
+       "Undeformed length between the grips: stretch = 1 + displacement / gauge length"},
+      {"Specimen width (mm)", "Undeformed width of the loaded cross-section"},
+      {"Specimen thickness (mm)", "Undeformed thickness: nominal stress = force / (width thickness)"}};
+  } // namespace
+
   void declare_specimen_parameters(ParameterDeclarations &prm)
   {
     prm.declare_text("Calibration", "Specimen test", "uniaxial",
                      "The test of raw machine data (time_s, displacement_mm, force_N): "
                      "uniaxial, equibiaxial or pure shear.");
-    prm.declare_number("Calibration", "Specimen gauge length (mm)", "0",
-                       "Undeformed length between the grips of raw machine data: stretch = 1 + "
-                       "displacement / gauge length (0: not given).");
-    prm.declare_number("Calibration", "Specimen width (mm)", "0",
-                       "Undeformed width of the loaded cross-section of raw machine data "
-                       "(0: not given).");
-    prm.declare_number("Calibration", "Specimen thickness (mm)", "0",
-                       "Undeformed thickness of raw machine data: nominal stress = force / "
-                       "(width thickness) (0: not given).");
+    for (const auto &[entry, meaning] : specimen_sizes)
+      prm.declare_number("Calibration", entry, "0",
+                         std::string(meaning) + " of raw machine data (0: not given).");
   }
 
   TestSpecimen parse_specimen(const ParameterValues &values)
@@ -208,12 +212,14 @@ namespace cdea
                        "got '" + test + "'");
     const auto size = [&](const std::string &entry) {
       const double v = values.number("Calibration/" + entry);
-      require_range(v, 0., 1e4, "Calibration/" + entry, "", true);
+      if (!(v >= 0. && v <= 1e4))
+        throw InputError("Calibration/" + entry +
+                         " must be from 0 (not given) to 1e4 mm, got " + format_number(v));
       return 1e-3 * v;
     };
-    s.gauge_length = size("Specimen gauge length (mm)");
-    s.width        = size("Specimen width (mm)");
-    s.thickness    = size("Specimen thickness (mm)");
+    s.gauge_length = size(specimen_sizes[0].first);
+    s.width        = size(specimen_sizes[1].first);
+    s.thickness    = size(specimen_sizes[2].first);
     return s;
   }
 } // namespace cdea
