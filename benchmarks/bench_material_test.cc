@@ -39,14 +39,9 @@ namespace
   Scene film()
   {
     Scene s                  = paper_scene({1., 3.}, {{0.}});
-    s.material_model         = "viscoelastic";
     s.material.shear_modulus = 25e3;
     s.material.jlim          = 40.;
-    s.law_constants = {{"Network B shear modulus (kPa)", 45.}, {"Network B Jlim", 100.},
-                       {"Relaxation time (s)", 2.}};
-    s.law_texts     = {{"Branch shear moduli (kPa)", "30, 15, 8"},
-                       {"Branch relaxation times (s)", "1, 10, 100"}};
-    return s;
+    return spectrum_scene(s, {30., 15., 8.}, {1., 10., 100.}, 100.);
   }
 
   std::vector<SceneParameter> constants()
