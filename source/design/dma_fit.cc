@@ -41,7 +41,8 @@ namespace cdea
     {
       std::string list = creep ? "shear modulus, Jlim, permittivity" : "shear modulus";
       for (const LawConstant &c : law.own_constants())
-        list += ", " + c.entry;
+        if (c.entry.compare(0, 7, "Branch ") == 0)
+          list += ", " + c.entry;
       return list;
     }
   } // namespace
@@ -219,11 +220,8 @@ namespace cdea
       return settings;
     settings.window.assign(settings.free.size(), {0., HUGE_VAL});
     for (std::size_t j = 0; j < settings.free.size(); ++j)
-      {
-        const int own = own_constant_index(law_parameter_of(scene, settings.free[j]));
-        if (own >= 0 && own % 2 == 1)
-          settings.window[j] = {shortest, longest};
-      }
+      if (is_branch_constant(settings.free[j]) && branch_of(settings.free[j]).second)
+        settings.window[j] = {shortest, longest};
     return settings;
   }
 

@@ -207,6 +207,7 @@ namespace cdea
       r.condition = sv[K - 1] > 0. ? sv[0] / sv[K - 1] : std::numeric_limits<double>::infinity();
       r.standard_errors.assign(K, nan);
       r.correlation = Eigen::MatrixXd::Constant(K, K, nan);
+      r.covariance  = r.correlation;
       if (!(r.condition < singular_condition))
         {
           r.warnings.push_back("the data do not determine " +
@@ -228,6 +229,7 @@ namespace cdea
         s2 * V * sv.array().square().inverse().matrix().asDiagonal() * V.transpose();
       const Eigen::MatrixXd cov =
         norms.cwiseInverse().asDiagonal() * cn * norms.cwiseInverse().asDiagonal();
+      r.covariance = cov;
       for (std::size_t j = 0; j < K; ++j)
         r.standard_errors[j] = std::sqrt(cov(j, j));
       for (std::size_t i = 0; i < K; ++i)
@@ -281,6 +283,7 @@ namespace cdea
 
     r.standard_errors.assign(K, nan);
     r.correlation = Eigen::MatrixXd::Constant(K, K, nan);
+    r.covariance  = r.correlation;
     r.values      = r.initial;
     r.rms         = nan;
     r.condition   = nan;

@@ -14,18 +14,7 @@ namespace cdea
 {
   namespace
   {
-    /// As for displacement-voltage points: a fit evaluates every row at
-    /// every iteration.
-    constexpr std::size_t max_rows       = 10000;
     constexpr std::size_t max_file_bytes = std::size_t(64) << 20;
-
-    std::string read_data_file(const std::string &file)
-    {
-      const FileRead read = read_regular_file(file, max_file_bytes);
-      if (!read.ok)
-        throw InputError("cannot read data file '" + file + "': " + read.error);
-      return read.bytes;
-    }
 
     /// "FILE, line N, column NAME".
     std::string place(const std::string &file, const unsigned int line, const std::string &name)
@@ -33,6 +22,14 @@ namespace cdea
       return file + ", line " + std::to_string(line) + ", column " + name;
     }
   } // namespace
+
+  std::string read_data_file(const std::string &file)
+  {
+    const FileRead read = read_regular_file(file, max_file_bytes);
+    if (!read.ok)
+      throw InputError("cannot read data file '" + file + "': " + read.error);
+    return read.bytes;
+  }
 
   std::vector<std::string> csv_fields(const std::string &line)
   {
@@ -68,23 +65,27 @@ namespace cdea
     return fit_data_kind(in);
   }
 
-  FitDataKind fit_data_kind(std::istream &in)
+  std::vector<std::string> csv_header(std::istream &in)
   {
     std::string line;
     for (unsigned int number = 1; std::getline(in, line); ++number)
       {
         line = csv_content(line, number);
-        if (line.find_first_not_of(" \t") == std::string::npos)
-          continue;
-        const auto fields = csv_fields(line);
-        const auto has    = [&](const std::string &name) {
-          return std::find(fields.begin(), fields.end(), name) != fields.end();
-        };
-        return has("frequency_Hz") ? FitDataKind::dma :
-               has("time_s")       ? FitDataKind::creep :
-                                     FitDataKind::displacement_voltage;
+        if (line.find_first_not_of(" \t") != std::string::npos)
+          return csv_fields(line);
       }
-    return FitDataKind::displacement_voltage;
+    return {};
+  }
+
+  FitDataKind fit_data_kind(std::istream &in)
+  {
+    const auto fields = csv_header(in);
+    const auto has    = [&](const std::string &name) {
+      return std::find(fields.begin(), fields.end(), name) != fields.end();
+    };
+    return has("frequency_Hz") ? FitDataKind::dma :
+           has("time_s")       ? FitDataKind::creep :
+                                 FitDataKind::displacement_voltage;
   }
 
   int CsvTable::column(const std::string &name) const
@@ -95,7 +96,8 @@ namespace cdea
 
   CsvTable read_csv_table(std::istream &in, const std::string &file,
                           const std::function<bool(const std::string &)> &known,
-                          const std::string &expected, const std::vector<std::string> &required)
+                          const std::string &expected, const std::vector<std::string> &required,
+                          const std::size_t max_rows)
   {
     CsvTable    table;
     std::string line;
@@ -119,6 +121,7 @@ namespace cdea
                                    std::to_string(k + 1) + ")");
                 table.names.push_back(fields[k]);
               }
+            table.header_line = number;
             for (const std::string &name : required)
               if (table.column(name) < 0)
                 throw InputError(where + ": no column " + name + " (expected " + expected + ")");

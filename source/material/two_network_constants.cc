@@ -2,7 +2,8 @@
 // constants (MembraneLaw::own_constants()): what a fit frees and what the
 // parameter derivatives of the spectrum differentiate. The convention,
 // fixed for every user of own_constant(k): [mu_1 (Pa), tau_1 (s), mu_2,
-// tau_2, ...].
+// tau_2, ...], then, with a shear-thinning viscosity, its five constants
+// (ShearThinning::own_constants()) at own_constant(2 n) .. own_constant(2 n + 4).
 
 #include <cdea/base/format.h>
 #include <cdea/base/text.h>
@@ -64,6 +65,10 @@ namespace cdea
         list.push_back(
           {branch_constant_entry(k, true), shortest_time, longest_time, branch.relaxation_time});
       }
+    // The shear-thinning viscosity's constants follow the branches'.
+    if (thinning.enabled)
+      for (const LawConstant &c : ShearThinning::own_constants())
+        list.push_back(c);
     return list;
   }
 } // namespace cdea

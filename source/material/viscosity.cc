@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace cdea
@@ -74,6 +75,52 @@ namespace cdea
         (h > 0. ? hi : lo) = mid;
       }
     return 0.5 * (lo + hi);
+  }
+
+  std::vector<LawConstant> ShearThinning::own_constants()
+  {
+    // Open lower ends (r, the exponents above 0) kept a little above 0.
+    return {{"Shear thinning eta_inf/eta_0", 1e-12, 1.},
+            {"Shear thinning K1/eta_0", 0., 1e6},
+            {"Shear thinning beta1", 1e-3, 10.},
+            {"Shear thinning K2 (1/kPa^2)", 0., 1e6},
+            {"Shear thinning beta2", 1e-3, 10.}};
+  }
+
+  double ShearThinning::factor_derivative(const unsigned int k, const Eigen::Vector2d &e,
+                                          const Eigen::Vector2d &sigma) const
+  {
+    const double x1 = std::exp(2. * e[0]), x2 = std::exp(2. * e[1]),
+                 x3 = std::exp(-2. * (e[0] + e[1]));
+    const double i1 = x1 + x2 + x3, S = std::pow(i1, beta1) - std::pow(3., beta1);
+    const double j2 = second_invariant(sigma);
+    const double p  = k2 > 0. && j2 > 0. ? std::pow(k2 * j2, beta2) : 0.;
+    const double D = 1. + p, A = 1. - r + k1 * S;
+    switch (k)
+      {
+        case 0:
+          return 1. - 1. / D;
+        case 1:
+          return S / D;
+        case 2:
+          return k1 * (std::pow(i1, beta1) * std::log(i1) - std::pow(3., beta1) * std::log(3.)) / D;
+        case 3:
+          {
+            // dp/dK2 = beta2 p / K2; at K2 = 0 it is J2 (beta2 = 1), 0 (beta2
+            // > 1) or infinite (beta2 < 1).
+            double dp = 0.;
+            if (k2 > 0.)
+              dp = beta2 * p / k2;
+            else if (j2 > 0. && beta2 <= 1.)
+              dp = beta2 == 1. ? j2 : std::numeric_limits<double>::quiet_NaN();
+            return -1e-6 * A * dp / (D * D);
+          }
+        case 4:
+          return p > 0. ? -A * p * std::log(k2 * j2) / (D * D) : 0.;
+        default:
+          break;
+      }
+    return std::numeric_limits<double>::quiet_NaN();
   }
 
   BranchResidual branch_residual(const ShearThinning &thinning, const double eta0, const double c,

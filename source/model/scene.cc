@@ -1,3 +1,4 @@
+#include <cdea/base/format.h>
 #include <cdea/model/scene.h>
 
 namespace cdea
@@ -48,5 +49,24 @@ namespace cdea
         v *= 1e3;
     scene.path = VoltagePath(volts);
     return scene;
+  }
+
+  Scene spectrum_scene(Scene base, const std::vector<double> &moduli_kPa,
+                       const std::vector<double> &times_s, const double branch_jlim)
+  {
+    const auto list = [](const std::vector<double> &values) {
+      std::string text;
+      for (const double v : values)
+        text += (text.empty() ? "" : ", ") + format_number(v, 17);
+      return text;
+    };
+    base.material_model = "viscoelastic";
+    // The one-branch entries are read (Network B Jlim: every branch's).
+    base.law_constants["Network B shear modulus (kPa)"] = moduli_kPa.empty() ? 1. : moduli_kPa[0];
+    base.law_constants["Network B Jlim"]                = branch_jlim;
+    base.law_constants["Relaxation time (s)"]           = times_s.empty() ? 1. : times_s[0];
+    base.law_texts["Branch shear moduli (kPa)"]         = list(moduli_kPa);
+    base.law_texts["Branch relaxation times (s)"]       = list(times_s);
+    return base;
   }
 } // namespace cdea

@@ -155,6 +155,8 @@ namespace cdea
   {
     std::vector<double> initial, values, standard_errors; ///< SI units
     Eigen::MatrixXd     correlation;
+    /// s^2 (J^T W J)^-1 (SI units; NaN where there are no standard errors).
+    Eigen::MatrixXd     covariance;
     Eigen::VectorXd     fitted, residuals; ///< m, per point (model - measured)
     double              rms = 0.;          ///< sqrt(sum w r^2 / sum w), m
     double              condition = 0.;    ///< of the column-scaled Jacobian

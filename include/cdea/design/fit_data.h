@@ -18,6 +18,14 @@ namespace cdea
   /// end and (on the first line) UTF-8 byte order mark.
   std::string csv_content(std::string line, unsigned int number);
 
+  /// The bytes of data file @p file (a regular file of at most 64 MB);
+  /// InputError naming it if it cannot be read.
+  std::string read_data_file(const std::string &file);
+
+  /// The fields of the header line of CSV text @p in (the first line that is
+  /// not blank or a comment; none if there is none), read to that line.
+  std::vector<std::string> csv_header(std::istream &in);
+
   /// What a data file holds, by the columns of its header line.
   enum class FitDataKind
   {
@@ -71,15 +79,18 @@ namespace cdea
   /// A CSV table of numbers by column name: @p known tells which names a
   /// header may have (@p expected describes them in the message for another),
   /// each once, @p required must be there. Rows as read, by header position.
+  /// At most @p max_rows rows (a fit evaluates every row at every iteration).
   struct CsvTable
   {
     std::vector<std::string>         names;
     std::vector<std::vector<double>> rows;
     std::vector<unsigned int>        lines; ///< the file's line of each row
+    unsigned int                     header_line = 0;
     /// The position of @p name in a row (-1: not a column).
     int column(const std::string &name) const;
   };
   CsvTable read_csv_table(std::istream &in, const std::string &name,
                           const std::function<bool(const std::string &)> &known,
-                          const std::string &expected, const std::vector<std::string> &required);
+                          const std::string &expected, const std::vector<std::string> &required,
+                          std::size_t max_rows = 10000);
 } // namespace cdea

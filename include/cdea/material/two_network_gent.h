@@ -129,7 +129,8 @@ namespace cdea
 
     /// The branches' moduli and relaxation times in the order [mu_1 (Pa),
     /// tau_1 (s), mu_2, tau_2, ...]: own_constant(2 (k - 1)) is mu_k,
-    /// own_constant(2 (k - 1) + 1) tau_k (two_network_constants.cc).
+    /// own_constant(2 (k - 1) + 1) tau_k (two_network_constants.cc); with a
+    /// shear-thinning viscosity then its five constants (viscosity.h).
     std::vector<LawConstant> own_constants() const override;
 
     /// Network A's limit (spring B's depends on the viscous stretches).
@@ -157,7 +158,8 @@ namespace cdea
                    InternalLinearization &out) const override;
     /// Network A's constants as parameter_derivative(), no rate; branch k's
     /// mu_k = own_constant(2(k-1)) (Pa) and tau_k = own_constant(2(k-1)+1)
-    /// (s): source/material/two_network_parameters.cc.
+    /// (s), and the shear-thinning constants (no stress, every branch's
+    /// rate): source/material/two_network_parameters.cc.
     bool evolving_parameter_derivative(const LawInput &input, const double *stored,
                                        LawParameter parameter, NominalStress &d_stress,
                                        double *d_rate) const override;

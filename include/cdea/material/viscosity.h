@@ -21,7 +21,11 @@
 // with tau = eta_0 / mu_B is the paper's law. r = 1 and k1 = 0 (or K2 = 0
 // and k1 = 0) give phi = 1: the Newtonian dashpot.
 
+#include <cdea/material/membrane_law.h>
+
 #include <Eigen/Core>
+
+#include <vector>
 
 namespace cdea
 {
@@ -49,6 +53,21 @@ namespace cdea
     /// phi)^2 J2(N q) and phi is the root of a scalar equation whose right
     /// side falls as phi grows (bisection on [r, r + 1 - r + k1 (...)]).
     double factor_at_rate(const Eigen::Vector2d &e, const Eigen::Vector2d &q, double eta0) const;
+
+    /// The five constants as a law's own constants (LawConstant: the entries
+    /// "Shear thinning eta_inf/eta_0", "... K1/eta_0", "... beta1",
+    /// "... K2 (1/kPa^2)", "... beta2" and the intervals a fit keeps them
+    /// in, inside the entries' checks), in this order.
+    static std::vector<LawConstant> own_constants();
+    /// d phi / d(constant @p k of own_constants()), per unit of its entry, at
+    /// @p e and @p sigma (fixed):
+    ///   d/dr = 1 - 1/D,   d/dk1 = S / D,   d/dbeta1 = k1 (I1v^beta1 ln I1v - 3^beta1 ln 3) / D,
+    ///   d/dK2 = -A beta2 p / (K2 D^2),   d/dbeta2 = -A p ln(K2 J2) / D^2,
+    /// with S = I1v^beta1 - 3^beta1, A = 1 - r + k1 S, p = (K2 J2)^beta2,
+    /// D = 1 + p (K2 per 1/kPa^2: 1e-6 of the per 1/Pa^2 value). NaN where it
+    /// is infinite (K2 = 0 with beta2 < 1 and J2 > 0).
+    double factor_derivative(unsigned int k, const Eigen::Vector2d &e,
+                             const Eigen::Vector2d &sigma) const;
 
     /// The entries of subsection Material: "Viscosity" (newtonian or shear
     /// thinning) and "Shear thinning eta_inf/eta_0", "... K1/eta_0",

@@ -57,4 +57,11 @@ namespace cdea
   /// (r/a) and voltage-path waypoints in kV: for tests, benchmarks and studies.
   Scene paper_scene(const std::vector<double>              &ring_edges_over_a,
                     const std::vector<std::vector<double>> &waypoints_kV);
+
+  /// @p base with the viscoelastic film (Material/Model = viscoelastic):
+  /// network A its film, a relaxation spectrum of Gent branches with the
+  /// moduli @p moduli_kPa (kPa), relaxation times @p times_s (s) and Jlim
+  /// @p branch_jlim: for tests, benchmarks and studies.
+  Scene spectrum_scene(Scene base, const std::vector<double> &moduli_kPa,
+                       const std::vector<double> &times_s, double branch_jlim);
 } // namespace cdea
