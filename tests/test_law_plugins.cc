@@ -1,4 +1,4 @@
-// Material laws as plugins (material/law_factory.h, input/parameters_plugins.h):
+// Material laws as plugins (material/law_factory.h, input/parameters_plugins.cc):
 //  - every registered law is built from its defaults (parameter text that
 //    only names it in Material/Model) and from a parameter file that sets its
 //    entries;
@@ -43,8 +43,10 @@ namespace cdea
 
     static void declare_parameters(ParameterDeclarations &prm)
     {
-      prm.declare_number("Material", "Test stiffening factor", "2",
-                         "Shear modulus of the test law over Shear modulus.");
+      prm.enter_subsection("Material");
+      prm.add_number("Test stiffening factor", "2",
+                     "Shear modulus of the test law over Shear modulus.");
+      prm.leave_subsection();
     }
 
     static std::shared_ptr<const MembraneLaw> parse_parameters(const LawSettings &settings)

@@ -1,4 +1,4 @@
-// Load terms as plugins (fe/load_term.h, input/parameters_plugins.h):
+// Load terms as plugins (fe/load_term.h, input/parameters_plugins.cc):
 //  - every registered term declares its entries in the parameter file, is
 //    built from its defaults (off: a file without its entries runs as before)
 //    and from a parameter file that switches it on;
@@ -39,7 +39,9 @@ namespace cdea
   public:
     static void declare_parameters(ParameterDeclarations &prm)
     {
-      prm.declare_number("Loading", "Test force (N)", "0", "A force on the disk (0: off).");
+      prm.enter_subsection("Loading");
+      prm.add_number("Test force (N)", "0", "A force on the disk (0: off).");
+      prm.leave_subsection();
     }
     void parse_parameters(const ParameterValues &values) override
     {

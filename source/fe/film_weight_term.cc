@@ -31,12 +31,18 @@ namespace cdea
   public:
     static void declare_parameters(ParameterDeclarations &prm)
     {
-      prm.declare_number("Material", "Density (kg/m^3)", "0",
-                         "Density rho of the film: its own weight, rho g H per area of the "
-                         "undeformed film, pulls the membrane down like the dead load (ramped "
-                         "with it). 0: the film's weight is neglected.");
-      prm.read_number("Loading", "Gravity (m/s^2)");
-      prm.read_number("Geometry", "Film thickness (mm)");
+      prm.enter_subsection("Material");
+      prm.add_number("Density (kg/m^3)", "0",
+                     "Density rho of the film: its own weight, rho g H per area of the "
+                     "undeformed film, pulls the membrane down like the dead load (ramped "
+                     "with it). 0: the film's weight is neglected.");
+      prm.leave_subsection();
+      prm.enter_subsection("Loading");
+      prm.read_number("Gravity (m/s^2)");
+      prm.leave_subsection();
+      prm.enter_subsection("Geometry");
+      prm.read_number("Film thickness (mm)");
+      prm.leave_subsection();
     }
 
     void parse_parameters(const ParameterValues &values) override

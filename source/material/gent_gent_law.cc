@@ -30,9 +30,11 @@ namespace cdea
 
     static void declare_parameters(ParameterDeclarations &prm)
     {
-      prm.declare_number("Material", "Gent-Gent C2 (kPa)", "0",
-                         "Coefficient C2 of log(I2 / 3) in the Gent-Gent law (its I1 part is the "
-                         "Gent law of Shear modulus and Jlim); at least 0.");
+      prm.enter_subsection("Material");
+      prm.add_number("Gent-Gent C2 (kPa)", "0",
+                     "Coefficient C2 of log(I2 / 3) in the Gent-Gent law (its I1 part is the "
+                     "Gent law of Shear modulus and Jlim); at least 0.");
+      prm.leave_subsection();
     }
 
     static std::shared_ptr<const MembraneLaw> parse_parameters(const LawSettings &settings)

@@ -28,9 +28,11 @@ namespace cdea
 
     static void declare_parameters(ParameterDeclarations &prm)
     {
-      prm.declare_number("Material", "Mooney-Rivlin C2 (kPa)", "0",
-                         "Coefficient C2 of I2 - 3 in the Mooney-Rivlin law (C1 = Shear "
-                         "modulus / 2); at least 0.");
+      prm.enter_subsection("Material");
+      prm.add_number("Mooney-Rivlin C2 (kPa)", "0",
+                     "Coefficient C2 of I2 - 3 in the Mooney-Rivlin law (C1 = Shear "
+                     "modulus / 2); at least 0.");
+      prm.leave_subsection();
     }
 
     static std::shared_ptr<const MembraneLaw> parse_parameters(const LawSettings &settings)

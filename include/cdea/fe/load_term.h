@@ -8,7 +8,7 @@
 //
 // with what it supports beyond the quasi-static FE run. The core lists no
 // term: input/ declares and reads every registered term's entries
-// (parameters_plugins.h), MembraneModel builds the terms the parameters
+// (input/parameters_plugins.cc), MembraneModel builds the terms the parameters
 // switch on (set_load_terms()), and the checks of input/ refuse a command or
 // an option that a term switched on does not support, naming its entry. The
 // term files (source/fe/*_term.cc) are linked whole into every program (an

@@ -15,7 +15,7 @@
 //
 // Material/Model's selection is the registered names, its documentation the
 // laws' descriptions ("'NAME': description", in name order); input/ declares
-// and reads the entries (parameters_plugins.h), so a law with constants of its
+// and reads the entries (input/parameters_plugins.cc), so a law with constants of its
 // own touches no file outside its own. The settings are plain data (no
 // deal.II). The law files are linked whole into every program (an object
 // library in CMakeLists.txt), so that no registration is dropped by the linker.
