@@ -45,8 +45,8 @@ run-paraview|run|paraview.prm|-|
 run-staircase-full|run|staircase-full.prm|-|--set Time/Time step (s)=1
 run-staircase-rv1.7|run|staircase-rv1.7.prm|-|--set Time/Time step (s)=1
 run-shear-thinning|run|shear-thinning.prm|-|--set Time/Time step (s)=1
-run-pump-time|run|pump-time.prm|-|--set Time/End time (s)=2
-run-spectrum|run|spectrum.prm|-|--set Time/End time (s)=2
+run-pump-time|run|pump-time.prm|-|--set Time/Cycles=1
+run-spectrum|run|spectrum.prm|-|--set Time/Cycles=1
 run-response|run|response.prm|-|
 shoot-default|shoot|default.prm|-|
 shoot-partitioned-rv1.7|shoot|partitioned-rv1.7.prm|-|
@@ -81,26 +81,30 @@ wanted() {
   return 1
 }
 
-# The lines of a command's output that hold wall times differ between any two
-# runs: their numbers are masked, the rest compared as it is.
+# What differs between any two runs of the same build is masked: wall times
+# (and a frequency sweep's seconds per frequency before its "k/N"), and the
+# number of checkpoints, which are taken by the clock.
 mask_times() {
-  sed -E -e '/( ms| s|wall time|[0-9] s on |left\)?$| s in all| s$)/ s/[0-9]+(\.[0-9]+)?(e[-+]?[0-9]+)? ?(ms|s)\b/<time>/g'
+  sed -E -e '/( ms| s|wall time|[0-9] s on |left\)?$| s in all| s$)/ s/[0-9]+(\.[0-9]+)?(e[-+]?[0-9]+)? ?(ms|s)\b/<time>/g' \
+         -e 's/[0-9.]+( +[0-9]+\/[0-9]+, )/<time>\1/' \
+         -e 's/[0-9]+ checkpoints/<n> checkpoints/'
 }
 
 cases | while IFS='|' read -r name command prm data sets; do
   wanted "$@" || continue
   dir="$out/$name"
   mkdir -p "$dir"
-  args=("$command" "$src/prm/$prm")
-  [ "$data" != - ] && args+=("$src/prm/$data")
+  args=("$command" "prm/$prm")
+  [ "$data" != - ] && args+=("prm/$data")
   extra=()
   if [ -n "$sets" ]; then
     extra=(--set "${sets#--set }")
   fi
   start=$(date +%s.%N)
   set +e
-  (cd "$dir" && "$build/cdea" "${args[@]}" "${extra[@]}" --set "Output/Directory=$dir/files" \
-      > stdout.raw 2> stderr.raw)
+  # From the source folder, as the examples' relative table files expect.
+  (cd "$src" && "$build/cdea" "${args[@]}" "${extra[@]}" --set "Output/Directory=$dir/files" \
+      > "$dir/stdout.raw" 2> "$dir/stderr.raw")
   rc=$?
   set -e
   end=$(date +%s.%N)
@@ -111,6 +115,6 @@ cases | while IFS='|' read -r name command prm data sets; do
   echo "$rc" > "$dir/exit_code"
   printf '%-28s exit %s  %6.1f s\n' "$name" "$rc" "$(echo "$end - $start" | bc)"
   PYTHONPATH="$build/python" "$python" "$src/scripts/python_products.py" \
-    "$command" "$src/prm/$prm" "$data" "$sets" "$dir/python.pickle" "$src" \
+    "$command" "prm/$prm" "$data" "$sets" "$dir/python.pickle" "$src" \
     > "$dir/python.txt" 2>&1 || echo "python: see $dir/python.txt"
 done
