@@ -49,7 +49,7 @@ namespace cdea
       prm.leave_subsection();
     }
 
-    static std::shared_ptr<const MembraneLaw> parse_parameters(const LawSettings &settings)
+    static std::shared_ptr<const MembraneLaw> create(const LawSettings &settings)
     {
       const double f = settings.constant("Test stiffening factor");
       if (!(f > 0. && f <= 10.))
@@ -69,8 +69,8 @@ namespace cdea
     const double            factor;
   };
 
-  CDEA_REGISTER_MEMBRANE_LAW(StiffenedGentLaw, "stiffened test",
-                             "the test program's Gent law, stiffer by Test stiffening factor.")
+  CDEA_REGISTER_PLUGIN(MembraneLaws, StiffenedGentLaw, "stiffened test", 0,
+                       "the test program's Gent law, stiffer by Test stiffening factor.")
 } // namespace cdea
 
 using namespace cdea;
@@ -103,7 +103,7 @@ namespace
 
 int main()
 {
-  const std::vector<std::string> names = membrane_law_names();
+  const std::vector<std::string> names = MembraneLaws::names();
   const auto has = [&](const std::string &name) {
     return std::find(names.begin(), names.end(), name) != names.end();
   };
@@ -111,7 +111,7 @@ int main()
         "the test program's law is registered beside the library's");
 
   std::cout << "Every law from its defaults\n";
-  for (const std::string &name : membrane_law_names())
+  for (const std::string &name : MembraneLaws::names())
     {
       const Parameters p   = read_parameters(ParameterInput::text(law_text(name)));
       const auto       law = make_membrane_law(p.material_law.settings(p.scene().material));

@@ -43,6 +43,8 @@ namespace cdea
       prm.add_number("Test force (N)", "0", "A force on the disk (0: off).");
       prm.leave_subsection();
     }
+    explicit TestForceTerm(const ParameterValues &values) { parse_parameters(values); }
+
     void parse_parameters(const ParameterValues &values) override
     {
       force = values.number("Loading/Test force (N)");
@@ -73,7 +75,7 @@ namespace cdea
     double force = 0.;
   };
 
-  CDEA_REGISTER_LOAD_TERM(TestForceTerm, "test force", 0)
+  CDEA_REGISTER_PLUGIN(LoadTerms, TestForceTerm, "test force", 0, "a force on the disk")
 } // namespace cdea
 
 using namespace cdea;
@@ -109,7 +111,7 @@ namespace
   void check_registered_terms()
   {
     std::vector<std::string> names;
-    for (const LoadTermPlugin &plugin : load_term_plugins())
+    for (const LoadTerms::Plugin &plugin : LoadTerms::plugins())
       names.push_back(plugin.name);
     const auto has = [&](const std::string &name) {
       return std::find(names.begin(), names.end(), name) != names.end();
@@ -118,7 +120,7 @@ namespace
           "the test program's term is registered beside the library's, in name order");
     const std::string file     = default_parameter_file();
     const Parameters  defaults = read("");
-    for (const LoadTermPlugin &plugin : load_term_plugins())
+    for (const LoadTerms::Plugin &plugin : LoadTerms::plugins())
       {
         ParameterDeclarations declared;
         plugin.declare_parameters(declared);
@@ -127,7 +129,7 @@ namespace
           if (e.declared_here)
             in_file = in_file && file.find("set " + e.name) != std::string::npos;
         check(in_file, plugin.name + ": its entries are in the parameter file");
-        check(!parse_load_term(plugin, defaults.load_terms.values)->active(),
+        check(!plugin.create(defaults.load_terms.values)->active(),
               plugin.name + ": built from its defaults, and off");
       }
     check(make_fe_model(defaults, defaults.scene())->load_terms().empty(),

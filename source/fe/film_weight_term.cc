@@ -45,6 +45,8 @@ namespace cdea
       prm.leave_subsection();
     }
 
+    explicit FilmWeightTerm(const ParameterValues &values) { parse_parameters(values); }
+
     void parse_parameters(const ParameterValues &values) override
     {
       density = values.number(density_entry);
@@ -98,6 +100,7 @@ namespace cdea
     double gravity_share   = 0.;
   };
 
-  CDEA_REGISTER_LOAD_TERM(FilmWeightTerm, "film weight",
-                          supports_time_runs | supports_arc_length | supports_stability)
+  CDEA_REGISTER_PLUGIN(LoadTerms, FilmWeightTerm, "film weight",
+                       supports_time_runs | supports_arc_length | supports_stability,
+                       "the film's own weight, rho g H per area of the undeformed film")
 } // namespace cdea

@@ -163,6 +163,7 @@ namespace cdea
       }
   }
 
-  CDEA_REGISTER_LOAD_TERM(WaterTerm, "water",
-                          supports_time_runs | supports_arc_length | supports_stability)
+  CDEA_REGISTER_PLUGIN(LoadTerms, WaterTerm, "water",
+                       supports_time_runs | supports_arc_length | supports_stability,
+                       "the pump's water: its hydrostatic pressure on the membrane and the disk")
 } // namespace cdea

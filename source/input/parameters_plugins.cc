@@ -16,7 +16,7 @@ namespace cdea
       std::string law_selection()
       {
         std::string names;
-        for (const std::string &name : membrane_law_names())
+        for (const std::string &name : MembraneLaws::names())
           names += (names.empty() ? "" : "|") + name;
         return names;
       }
@@ -25,11 +25,11 @@ namespace cdea
     void MaterialLaw::declare(ParameterDeclarations &prm)
     {
       prm.enter_subsection("Material");
-      prm.add_choice("Model", LawSettings().model, law_selection(), membrane_law_documentation(),
+      prm.add_choice("Model", LawSettings().model, law_selection(), MembraneLaws::documentation(),
                      [this](const EntryValue &v) { model = std::get<std::string>(v); });
       prm.leave_subsection();
       // Every law's entries, by name: numbers into constants, texts into texts.
-      const ParameterDeclarations laws = membrane_law_parameters();
+      const ParameterDeclarations laws = MembraneLaws::parameters();
       for (EntryDeclaration e : laws.entries())
         {
           if (e.kind == EntryKind::text)
@@ -54,9 +54,9 @@ namespace cdea
       return s;
     }
 
-    void LoadTerms::declare(ParameterDeclarations &prm, const bool reservoir)
+    void LoadTermValues::declare(ParameterDeclarations &prm, const bool reservoir)
     {
-      const ParameterDeclarations terms = load_term_parameters();
+      const ParameterDeclarations terms = LoadTerms::parameters();
       ParameterDeclarations       which;
       for (const EntryDeclaration &e : terms.entries())
         if ((e.subsection == "Reservoir") == reservoir)

@@ -37,7 +37,7 @@ namespace cdea
       prm.leave_subsection();
     }
 
-    static std::shared_ptr<const MembraneLaw> parse_parameters(const LawSettings &settings)
+    static std::shared_ptr<const MembraneLaw> create(const LawSettings &settings)
     {
       const double c2 = settings.constant("Gent-Gent C2 (kPa)");
       if (!(c2 >= 0. && c2 <= 1e9))
@@ -115,7 +115,7 @@ namespace cdea
     }
   };
 
-  CDEA_REGISTER_MEMBRANE_LAW(GentGentLaw, "gent-gent",
-                             "the Gent-Gent law: the Gent law of Shear modulus and Jlim plus "
-                             "Gent-Gent C2 log(I2 / 3) (Pucci and Saccomandi 2002).")
+  CDEA_REGISTER_PLUGIN(MembraneLaws, GentGentLaw, "gent-gent", 0,
+                       "the Gent-Gent law: the Gent law of Shear modulus and Jlim plus "
+                       "Gent-Gent C2 log(I2 / 3) (Pucci and Saccomandi 2002).")
 } // namespace cdea

@@ -55,7 +55,7 @@ namespace cdea
       prm.leave_subsection();
     }
 
-    static std::shared_ptr<const MembraneLaw> parse_parameters(const LawSettings &settings)
+    static std::shared_ptr<const MembraneLaw> create(const LawSettings &settings)
     {
       std::array<OgdenTerm, 3> t;
       t[0] = {settings.material.shear_modulus, settings.constant("Ogden alpha 1")};
@@ -155,7 +155,7 @@ namespace cdea
     }
   };
 
-  CDEA_REGISTER_MEMBRANE_LAW(OgdenLaw, "ogden",
-                             "the Ogden law of up to three terms sum (mu_p / alpha_p) (l1^alpha_p "
-                             "+ l2^alpha_p + l3^alpha_p - 3), mu_1 = Shear modulus (Ogden 1972).")
+  CDEA_REGISTER_PLUGIN(MembraneLaws, OgdenLaw, "ogden", 0,
+                       "the Ogden law of up to three terms sum (mu_p / alpha_p) (l1^alpha_p "
+                       "+ l2^alpha_p + l3^alpha_p - 3), mu_1 = Shear modulus (Ogden 1972).")
 } // namespace cdea

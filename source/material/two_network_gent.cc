@@ -530,7 +530,7 @@ namespace cdea
       const std::string law = trim_blanks(settings.text("Branch law", "elastic"));
       if (law == "elastic")
         return {};
-      const std::vector<std::string> names = membrane_law_names();
+      const std::vector<std::string> names = MembraneLaws::names();
       if (std::find(names.begin(), names.end(), law) == names.end() || law == settings.model)
         throw InputError("Material/Branch law must name an elastic law of Material/Model "
                          "other than '" + settings.model + "', got '" + law + "'");
@@ -550,7 +550,7 @@ namespace cdea
     }
   } // namespace
 
-  std::shared_ptr<const MembraneLaw> TwoNetworkGentLaw::parse_parameters(const LawSettings &settings)
+  std::shared_ptr<const MembraneLaw> TwoNetworkGentLaw::create(const LawSettings &settings)
   {
     std::vector<ViscousNetwork> branches = listed_branches(settings);
     if (branches.empty())
@@ -569,10 +569,10 @@ namespace cdea
                                                std::move(springs), ShearThinning::parse(settings));
   }
 
-  CDEA_REGISTER_MEMBRANE_LAW(TwoNetworkGentLaw, "viscoelastic",
-                             "the 'elastic' law is network A (the long-time response), in "
-                             "parallel with "
-                             "network B, a Gent spring in series with a dashpot (two-network "
-                             "model of Hong 2011 and Zhao, Koh, Suo 2011); needs Time/Enabled = "
-                             "true.")
+  CDEA_REGISTER_PLUGIN(MembraneLaws, TwoNetworkGentLaw, "viscoelastic", 0,
+                       "the 'elastic' law is network A (the long-time response), in "
+                       "parallel with "
+                       "network B, a Gent spring in series with a dashpot (two-network "
+                       "model of Hong 2011 and Zhao, Koh, Suo 2011); needs Time/Enabled = "
+                       "true.")
 } // namespace cdea

@@ -303,7 +303,7 @@ namespace cdea
     /// The entries the registered load terms declare, and those of the core
     /// they read, by path: what MembraneModel::set_load_terms() and the
     /// checks of validation.h build the terms from.
-    struct LoadTerms
+    struct LoadTermValues
     {
       ParameterValues values;
       /// Declares the terms' entries of subsection Reservoir (@p reservoir
@@ -329,7 +329,7 @@ namespace cdea
     parameters::Output         output;
     parameters::MaterialLaw    material_law;
     parameters::Time           time;
-    parameters::LoadTerms      load_terms;
+    parameters::LoadTermValues load_terms;
     parameters::Response       response;
     parameters::SteadyState    steady_state;
     parameters::FrequencySweep frequency_sweep;
