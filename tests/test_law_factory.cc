@@ -59,7 +59,7 @@ namespace
 
 int main()
 {
-  check(membrane_law_names() == std::vector<std::string>{"elastic", "gent-gent", "mooney-rivlin",
+  check(MembraneLaws::names() == std::vector<std::string>{"elastic", "gent-gent", "mooney-rivlin",
                                                          "neo-hooke", "ogden", "viscoelastic"},
         "the laws registered under the names of Material/Model");
 

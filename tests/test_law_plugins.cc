@@ -1,4 +1,4 @@
-// Material laws as plugins (material/law_factory.h, input/parameters_plugins.h):
+// Material laws as plugins (material/law_factory.h, input/parameters_plugins.cc):
 //  - every registered law is built from its defaults (parameter text that
 //    only names it in Material/Model) and from a parameter file that sets its
 //    entries;
@@ -43,11 +43,13 @@ namespace cdea
 
     static void declare_parameters(ParameterDeclarations &prm)
     {
-      prm.declare_number("Material", "Test stiffening factor", "2",
-                         "Shear modulus of the test law over Shear modulus.");
+      prm.enter_subsection("Material");
+      prm.add_number("Test stiffening factor", "2",
+                     "Shear modulus of the test law over Shear modulus.");
+      prm.leave_subsection();
     }
 
-    static std::shared_ptr<const MembraneLaw> parse_parameters(const LawSettings &settings)
+    static std::shared_ptr<const MembraneLaw> create(const LawSettings &settings)
     {
       const double f = settings.constant("Test stiffening factor");
       if (!(f > 0. && f <= 10.))
@@ -67,8 +69,8 @@ namespace cdea
     const double            factor;
   };
 
-  CDEA_REGISTER_MEMBRANE_LAW(StiffenedGentLaw, "stiffened test",
-                             "the test program's Gent law, stiffer by Test stiffening factor.")
+  CDEA_REGISTER_PLUGIN(MembraneLaws, StiffenedGentLaw, "stiffened test", 0,
+                       "the test program's Gent law, stiffer by Test stiffening factor.")
 } // namespace cdea
 
 using namespace cdea;
@@ -101,7 +103,7 @@ namespace
 
 int main()
 {
-  const std::vector<std::string> names = membrane_law_names();
+  const std::vector<std::string> names = MembraneLaws::names();
   const auto has = [&](const std::string &name) {
     return std::find(names.begin(), names.end(), name) != names.end();
   };
@@ -109,7 +111,7 @@ int main()
         "the test program's law is registered beside the library's");
 
   std::cout << "Every law from its defaults\n";
-  for (const std::string &name : membrane_law_names())
+  for (const std::string &name : MembraneLaws::names())
     {
       const Parameters p   = read_parameters(ParameterInput::text(law_text(name)));
       const auto       law = make_membrane_law(p.material_law.settings(p.scene().material));

@@ -1,4 +1,4 @@
-// Load terms as plugins (fe/load_term.h, input/parameters_plugins.h):
+// Load terms as plugins (fe/load_term.h, input/parameters_plugins.cc):
 //  - every registered term declares its entries in the parameter file, is
 //    built from its defaults (off: a file without its entries runs as before)
 //    and from a parameter file that switches it on;
@@ -44,8 +44,12 @@ namespace cdea
   public:
     static void declare_parameters(ParameterDeclarations &prm)
     {
-      prm.declare_number("Loading", "Test force (N)", "0", "A force on the disk (0: off).");
+      prm.enter_subsection("Loading");
+      prm.add_number("Test force (N)", "0", "A force on the disk (0: off).");
+      prm.leave_subsection();
     }
+    explicit TestForceTerm(const ParameterValues &values) { parse_parameters(values); }
+
     void parse_parameters(const ParameterValues &values) override
     {
       force = values.number("Loading/Test force (N)");
@@ -76,7 +80,7 @@ namespace cdea
     double force = 0.;
   };
 
-  CDEA_REGISTER_LOAD_TERM(TestForceTerm, "test force", 0)
+  CDEA_REGISTER_PLUGIN(LoadTerms, TestForceTerm, "test force", 0, "a force on the disk")
 } // namespace cdea
 
 using namespace cdea;
@@ -112,7 +116,7 @@ namespace
   void check_registered_terms()
   {
     std::vector<std::string> names;
-    for (const LoadTermPlugin &plugin : load_term_plugins())
+    for (const LoadTerms::Plugin &plugin : LoadTerms::plugins())
       names.push_back(plugin.name);
     const auto has = [&](const std::string &name) {
       return std::find(names.begin(), names.end(), name) != names.end();
@@ -121,7 +125,7 @@ namespace
           "the test program's term is registered beside the library's, in name order");
     const std::string file     = default_parameter_file();
     const Parameters  defaults = read("");
-    for (const LoadTermPlugin &plugin : load_term_plugins())
+    for (const LoadTerms::Plugin &plugin : LoadTerms::plugins())
       {
         ParameterDeclarations declared;
         plugin.declare_parameters(declared);
@@ -130,7 +134,7 @@ namespace
           if (e.declared_here)
             in_file = in_file && file.find("set " + e.name) != std::string::npos;
         check(in_file, plugin.name + ": its entries are in the parameter file");
-        check(!parse_load_term(plugin, defaults.load_terms.values)->active(),
+        check(!plugin.create(defaults.load_terms.values)->active(),
               plugin.name + ": built from its defaults, and off");
       }
     check(make_fe_model(defaults, defaults.scene())->load_terms().empty(),

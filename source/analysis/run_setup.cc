@@ -2,7 +2,6 @@
 #include <cdea/input/solver_settings.h>
 #include <cdea/shooting/shooting_model.h>
 #include <cdea/solver/postprocessors.h>
-#include <cdea/solver/state_check.h>
 
 namespace cdea
 {
@@ -26,9 +25,13 @@ namespace cdea
   std::vector<TimeStepper::PostprocessorFactory> run_postprocessors(const Parameters &p,
                                                                     const Scene      &scene)
   {
-    const double area = tube_area(p), frame_radius = scene.frame_radius;
-    return {[area] { return std::make_unique<EnclosedVolume>(area); },
-            [frame_radius] { return std::make_unique<NonPhysicalCheck>(frame_radius); }};
+    PostprocessorSetup setup = postprocessor_setup(scene, stepping_settings(p));
+    setup.tube_area          = tube_area(p);
+    std::vector<TimeStepper::PostprocessorFactory> list;
+    for (const Postprocessors::Plugin &plugin : Postprocessors::plugins())
+      if (plugin.flags & on_runs)
+        list.push_back([create = plugin.create, setup] { return create(setup); });
+    return list;
   }
 
   void add_run_postprocessors(LoadStepper &stepper, const Parameters &p, const Scene &scene)

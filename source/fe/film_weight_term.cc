@@ -31,13 +31,21 @@ namespace cdea
   public:
     static void declare_parameters(ParameterDeclarations &prm)
     {
-      prm.declare_number("Material", "Density (kg/m^3)", "0",
-                         "Density rho of the film: its own weight, rho g H per area of the "
-                         "undeformed film, pulls the membrane down like the dead load (ramped "
-                         "with it). 0: the film's weight is neglected.");
-      prm.read_number("Loading", "Gravity (m/s^2)");
-      prm.read_number("Geometry", "Film thickness (mm)");
+      prm.enter_subsection("Material");
+      prm.add_number("Density (kg/m^3)", "0",
+                     "Density rho of the film: its own weight, rho g H per area of the "
+                     "undeformed film, pulls the membrane down like the dead load (ramped "
+                     "with it). 0: the film's weight is neglected.");
+      prm.leave_subsection();
+      prm.enter_subsection("Loading");
+      prm.read_number("Gravity (m/s^2)");
+      prm.leave_subsection();
+      prm.enter_subsection("Geometry");
+      prm.read_number("Film thickness (mm)");
+      prm.leave_subsection();
     }
+
+    explicit FilmWeightTerm(const ParameterValues &values) { parse_parameters(values); }
 
     void parse_parameters(const ParameterValues &values) override
     {
@@ -92,6 +100,7 @@ namespace cdea
     double gravity_share   = 0.;
   };
 
-  CDEA_REGISTER_LOAD_TERM(FilmWeightTerm, "film weight",
-                          supports_time_runs | supports_arc_length | supports_stability)
+  CDEA_REGISTER_PLUGIN(LoadTerms, FilmWeightTerm, "film weight",
+                       supports_time_runs | supports_arc_length | supports_stability,
+                       "the film's own weight, rho g H per area of the undeformed film")
 } // namespace cdea

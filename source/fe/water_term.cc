@@ -11,15 +11,19 @@ namespace cdea
 {
   void WaterTerm::declare_parameters(ParameterDeclarations &prm)
   {
-    prm.declare_number("Reservoir", "Water volume (ml)", "150",
-                       "Water in the pump module (for the hydrostatic load).");
-    prm.declare_number("Reservoir", "Water density (kg/m^3)", "1000", "Density of the water.");
-    prm.declare_flag("Reservoir", "Water load", "false",
-                     "Apply the water's hydrostatic pressure to the membrane and the disk "
-                     "(a follower load). Off: the water only measures the volume change.");
-    prm.read_number("Reservoir", "Width (mm)");
-    prm.read_number("Reservoir", "Depth (mm)");
-    prm.read_number("Loading", "Gravity (m/s^2)");
+    prm.enter_subsection("Reservoir");
+    prm.add_number("Water volume (ml)", "150",
+                   "Water in the pump module (for the hydrostatic load).");
+    prm.add_number("Water density (kg/m^3)", "1000", "Density of the water.");
+    prm.add_flag("Water load", "false",
+                 "Apply the water's hydrostatic pressure to the membrane and the disk "
+                 "(a follower load). Off: the water only measures the volume change.");
+    prm.read_number("Width (mm)");
+    prm.read_number("Depth (mm)");
+    prm.leave_subsection();
+    prm.enter_subsection("Loading");
+    prm.read_number("Gravity (m/s^2)");
+    prm.leave_subsection();
   }
 
   void WaterTerm::parse_parameters(const ParameterValues &values)
@@ -166,6 +170,7 @@ namespace cdea
       }
   }
 
-  CDEA_REGISTER_LOAD_TERM(WaterTerm, "water",
-                          supports_time_runs | supports_arc_length | supports_stability)
+  CDEA_REGISTER_PLUGIN(LoadTerms, WaterTerm, "water",
+                       supports_time_runs | supports_arc_length | supports_stability,
+                       "the pump's water: its hydrostatic pressure on the membrane and the disk")
 } // namespace cdea

@@ -3,6 +3,8 @@
 #include <cdea/input/parameters.h>
 
 #include <cmath>
+#include <map>
+#include <memory>
 #include <sstream>
 
 namespace cdea
@@ -13,355 +15,113 @@ namespace cdea
   using dealii::Patterns::Double;
   using dealii::Patterns::Integer;
 
-  namespace parameters
+  namespace
   {
-    void Geometry::declare(ParameterHandler &prm)
+    /// The registered subsections by position, made on first use
+    /// (registrations run during static initialisation, in an order the
+    /// language leaves open).
+    std::map<int, ParameterSubsection> &registry()
     {
-      prm.enter_subsection("Geometry");
-      prm.declare_entry("Disk radius (mm)", "14", Double(),
-                        "Radius a of the rigid disk, measured on the pre-stretched flat film.");
-      prm.declare_entry("Frame radius (mm)", "42", Double(),
-                        "Inner radius b of the rigid frame, measured on the pre-stretched flat film.");
-      prm.declare_entry("Film thickness (mm)", "1", Double(),
-                        "Thickness H of the undeformed (unstretched) film.");
-      prm.declare_entry("Prestretch", "2.5", Double(),
-                        "Equi-biaxial pre-stretch lam_pre of the film before the disk is attached.");
-      prm.leave_subsection();
+      static std::map<int, ParameterSubsection> subsections;
+      return subsections;
     }
 
-    void Geometry::parse(ParameterHandler &prm)
+    /// deal.II's pattern of @p e.
+    std::unique_ptr<dealii::Patterns::PatternBase> pattern(const EntryDeclaration &e)
     {
-      prm.enter_subsection("Geometry");
-      disk_radius_mm    = prm.get_double("Disk radius (mm)");
-      frame_radius_mm   = prm.get_double("Frame radius (mm)");
-      film_thickness_mm = prm.get_double("Film thickness (mm)");
-      prestretch        = prm.get_double("Prestretch");
-      prm.leave_subsection();
+      const EntryRange &r = e.range;
+      switch (e.kind)
+        {
+          case EntryKind::number:
+            return std::make_unique<Double>(r.lower.value_or(Double::min_double_value),
+                                            r.upper.value_or(Double::max_double_value));
+          case EntryKind::integer:
+            return std::make_unique<Integer>(r.lower ? int(*r.lower) : Integer::min_int_value,
+                                             r.upper ? int(*r.upper) : Integer::max_int_value);
+          case EntryKind::flag:
+            return std::make_unique<Bool>();
+          case EntryKind::selection:
+            return std::make_unique<dealii::Patterns::Selection>(e.options);
+          case EntryKind::text:
+            break;
+        }
+      return std::make_unique<Anything>();
     }
 
-    void Material::declare(ParameterHandler &prm)
+    /// The value of @p e in @p prm (in its subsection) as its kind reads it.
+    EntryValue value_of(ParameterHandler &prm, const EntryDeclaration &e)
     {
-      prm.enter_subsection("Material");
-      prm.declare_entry("Shear modulus (kPa)", "25.1", Double(),
-                        "Small-strain shear modulus mu of the Gent law.");
-      prm.declare_entry("Jlim", "270", Double(),
-                        "Gent limit: the law stiffens without bound as I1 - 3 approaches Jlim.");
-      prm.declare_entry("Permittivity (F/m)", "3.98e-11", Double(),
-                        "Permittivity eps of the ideal dielectric.");
-      prm.leave_subsection();
+      switch (e.kind)
+        {
+          case EntryKind::number:
+            return prm.get_double(e.name);
+          case EntryKind::integer:
+            return prm.get_integer(e.name);
+          case EntryKind::flag:
+            return prm.get_bool(e.name);
+          case EntryKind::selection:
+          case EntryKind::text:
+            break;
+        }
+      return prm.get(e.name);
     }
+  } // namespace
 
-    void Material::parse(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Material");
-      shear_modulus_kPa = prm.get_double("Shear modulus (kPa)");
-      jlim              = prm.get_double("Jlim");
-      permittivity      = prm.get_double("Permittivity (F/m)");
-      prm.leave_subsection();
-    }
+  bool register_parameter_subsection(const ParameterSubsection &subsection)
+  {
+    if (!registry().emplace(subsection.position, subsection).second)
+      throw std::logic_error("two parameter subsections are registered at position " +
+                             std::to_string(subsection.position));
+    return true;
+  }
 
-    void Loading::declare(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Loading");
-      prm.declare_entry("Mass (g)", "280", Double(),
-                        "Dead weight hanging from the disk; the load F = m g pulls the disk "
-                        "out of the frame plane.");
-      prm.declare_entry("Gravity (m/s^2)", "9.81", Double(), "Gravitational acceleration g.");
-      prm.leave_subsection();
-    }
+  void declare_entries(ParameterHandler &prm, const ParameterDeclarations &declarations)
+  {
+    for (const EntryDeclaration &e : declarations.entries())
+      if (e.declared_here)
+        {
+          prm.enter_subsection(e.subsection);
+          prm.declare_entry(e.name, e.default_value, *pattern(e), e.documentation);
+          prm.leave_subsection();
+        }
+  }
 
-    void Loading::parse(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Loading");
-      mass_g  = prm.get_double("Mass (g)");
-      gravity = prm.get_double("Gravity (m/s^2)");
-      prm.leave_subsection();
-    }
+  void read_entries(ParameterHandler &prm, const ParameterDeclarations &declarations)
+  {
+    for (const EntryDeclaration &e : declarations.entries())
+      if (e.assign)
+        {
+          prm.enter_subsection(e.subsection);
+          const EntryValue value = value_of(prm, e);
+          prm.leave_subsection();
+          e.assign(value);
+        }
+  }
 
-    void Electrodes::declare(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Electrodes");
-      prm.declare_entry("Ring edges (r/a)", "1, 3", Anything(),
-                        "n+1 increasing edges of n concentric electrode rings, as radii on the "
-                        "pre-stretched flat film over the disk radius: the first is 1 (disk "
-                        "edge), the last b/a (frame).");
-      prm.declare_entry("Voltage path (kV)", "5", Anything(),
-                        "Waypoints separated by ';', each one voltage per ring separated by ','. "
-                        "All rings start at 0 kV and move linearly from one waypoint to the next.");
-      prm.leave_subsection();
-    }
-
-    void Electrodes::parse(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Electrodes");
-      ring_edges_text   = prm.get("Ring edges (r/a)");
-      voltage_path_text = prm.get("Voltage path (kV)");
-      prm.leave_subsection();
-    }
-
-    void Discretization::declare(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Discretization");
-      prm.declare_entry("Polynomial degree", "4", Integer(1, 8),
-                        "Degree p of the FE_Q elements for r(R) and z(R).");
-      prm.declare_entry("Elements per ring", "4", Integer(1, 100000),
-                        "Elements in every electrode ring before global refinement; element "
-                        "boundaries always lie on the ring edges.");
-      prm.declare_entry("Grading", "4", Double(1., 1000.),
-                        "Ratio of the outermost to the innermost element length in each ring: "
-                        "elements are geometrically smaller towards the ring's inner edge, where "
-                        "the meridian stretch varies fastest. 1 is uniform.");
-      prm.declare_entry("Global refinements", "0", Integer(0, 20),
-                        "Times every element is bisected (h-refinement studies).");
-      prm.declare_entry("Samples per element", "16", Integer(1, 1000),
-                        "Equally spaced points per element at which fields are written (enough for "
-                        "smooth profiles in plots and ParaView).");
-      prm.leave_subsection();
-    }
-
-    void Discretization::parse(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Discretization");
-      polynomial_degree   = prm.get_integer("Polynomial degree");
-      elements_per_ring   = prm.get_integer("Elements per ring");
-      grading             = prm.get_double("Grading");
-      refinements         = prm.get_integer("Global refinements");
-      samples_per_element = prm.get_integer("Samples per element");
-      prm.leave_subsection();
-    }
-
-    void Solver::declare(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Solver");
-      prm.declare_entry("Residual tolerance", "1e-10", Double(0.),
-                        "Newton has converged when the largest residual entry over the force "
-                        "scale max(F, 2 pi H mu a) is below this and the update criterion holds.");
-      prm.declare_entry("Update tolerance", "1e-10", Double(0.),
-                        "Newton has converged when the largest update over the disk radius a "
-                        "is below this and the residual criterion holds.");
-      prm.declare_entry("Max Newton iterations", "25", Integer(1, 1000),
-                        "Newton iterations before a load step counts as failed and is cut back.");
-      prm.declare_entry("Prestretch steps", "1", Integer(1, 10000),
-                        "Steps from the unstretched film to lam_pre (the state is homogeneous).");
-      prm.declare_entry("Load increment", "0.25", Double(1e-8, 1.),
-                        "Largest increment of the dead load, as a fraction of m g.");
-      prm.declare_entry("Voltage increment (kV)", "0.25", Double(1e-8),
-                        "Largest change of any ring voltage in one step of the voltage path.");
-      prm.declare_entry("Min voltage increment (kV)", "1e-6", Double(0.),
-                        "Cut-backs below this voltage change (or below 1e-8 of the load in "
-                        "the other stages) end the run with an error.");
-      prm.declare_entry("Max cutbacks", "30", Integer(0, 1000),
-                        "Successive halvings of a failed increment before the run gives up.");
-      prm.declare_entry("Continuation", "load stepping",
-                        dealii::Patterns::Selection("load stepping|arc length"),
-                        "How the voltage path is followed. 'load stepping' prescribes the path "
-                        "parameter and stops at a fold; 'arc length' (pseudo-arclength with a "
-                        "bordered Newton corrector) follows the curve through folds and locates "
-                        "every limit point.");
-      prm.declare_entry("Linear solver", "banded LU",
-                        dealii::Patterns::Selection("banded LU|Trilinos KLU"),
-                        "Direct solver of the tangent systems: LAPACK's banded LU, factored "
-                        "once per assembly (fast for these 1D meshes), or Trilinos' sparse "
-                        "KLU through deal.II.");
-      prm.declare_entry("Max arc-length steps", "400", Integer(1, 1000000),
-                        "Arc-length continuation ends after this many steps ...");
-      prm.declare_entry("Max displacement (mm)", "60", Double(0.),
-                        "... or when the displacement exceeds this (0: no limit), or when the "
-                        "path parameter leaves [0, end of path].");
-      prm.declare_entry("Stability check", "true", Bool(),
-                        "Compute the smallest eigenvalue of the tangent (dead load and voltages "
-                        "held) at every converged state: negative means unstable.");
-      prm.declare_entry("Stability eigenvalue", "every step",
-                        dealii::Patterns::Selection("every step|near folds"),
-                        "Where the stability check computes the smallest eigenvalue. 'every "
-                        "step': at every converged state. 'near folds': stable or not from the "
-                        "inertia of one factorization at every state, the eigenvalue only where "
-                        "the state is not positive definite or near a fold (where it has fallen "
-                        "below 0.8 of the last one computed; the first state of a run computes "
-                        "it); elsewhere min_eigenvalue is NaN. Cheaper; the stable column is the "
-                        "same.");
-      prm.declare_entry("Breakdown field (MV/m)", "0", Double(0.),
-                        "Electrical breakdown check: report where and when the true field E "
-                        "first exceeds this value (0: off).");
-      prm.leave_subsection();
-    }
-
-    void Solver::parse(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Solver");
-      residual_tolerance       = prm.get_double("Residual tolerance");
-      update_tolerance         = prm.get_double("Update tolerance");
-      max_newton_iterations    = prm.get_integer("Max Newton iterations");
-      prestretch_steps         = prm.get_integer("Prestretch steps");
-      load_increment           = prm.get_double("Load increment");
-      voltage_increment_kV     = prm.get_double("Voltage increment (kV)");
-      min_voltage_increment_kV = prm.get_double("Min voltage increment (kV)");
-      max_cutbacks             = prm.get_integer("Max cutbacks");
-      continuation = prm.get("Continuation") == "arc length" ? Continuation::arc_length :
-                                                               Continuation::load_stepping;
-      linear_solver = prm.get("Linear solver") == "Trilinos KLU" ? LinearSolver::trilinos_klu :
-                                                                   LinearSolver::banded_lu;
-      max_arc_length_steps     = prm.get_integer("Max arc-length steps");
-      max_displacement_mm      = prm.get_double("Max displacement (mm)");
-      stability_check          = prm.get_bool("Stability check");
-      stability_eigenvalue     = prm.get("Stability eigenvalue") == "near folds" ?
-                                   StabilityEigenvalue::near_folds :
-                                   StabilityEigenvalue::every_step;
-      breakdown_field_MV_per_m = prm.get_double("Breakdown field (MV/m)");
-      prm.leave_subsection();
-    }
-
-    void Wrinkling::declare(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Wrinkling");
-      prm.declare_entry("Onset tolerance (V)", "1e-3", Double(1e-9),
-                        "The load at which the hoop stress s2 first reaches zero is located "
-                        "by root finding to within this voltage.");
-      prm.declare_entry("Model", "check", dealii::Patterns::Selection("check|relaxed"),
-                        "'check': the plain membrane law everywhere; s2 < 0 is only detected "
-                        "and flagged. 'relaxed': tension-field theory where s2 would be "
-                        "negative (the energy minimised over hoop stretches above the "
-                        "kinematic one); the run stops where the relaxed law loses "
-                        "ellipticity (pull-in) or has no natural width below the Gent limit.");
-      prm.leave_subsection();
-    }
-
-    void Wrinkling::parse(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Wrinkling");
-      onset_tolerance_V = prm.get_double("Onset tolerance (V)");
-      model = prm.get("Model") == "relaxed" ? WrinklingModel::relaxed : WrinklingModel::check;
-      prm.leave_subsection();
-    }
-
-    void Shooting::declare(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Shooting");
-      prm.declare_entry("Tolerance", "1e-10", Double(1e-14, 1e-2),
-                        "Relative (and, in units of the disk radius, absolute) error tolerance "
-                        "of the adaptive Dormand-Prince integrator of `cdea shoot` and "
-                        "`cdea compare`.");
-      prm.declare_entry("Samples per ring", "100", Integer(2, 100000),
-                        "Equally spaced points per ring at which the shooting fields are written.");
-      prm.leave_subsection();
-    }
-
-    void Shooting::parse(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Shooting");
-      tolerance        = prm.get_double("Tolerance");
-      samples_per_ring = prm.get_integer("Samples per ring");
-      prm.leave_subsection();
-    }
-
-    void Reservoir::declare(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Reservoir");
-      prm.declare_entry("Width (mm)", "20", Double(),
-                        "Inner width of the pump's level tube (rectangular cross-section).");
-      prm.declare_entry("Depth (mm)", "20", Double(),
-                        "Inner depth of the level tube; level drop = volume change / (width depth).");
-      prm.leave_subsection();
-    }
-
-    void Reservoir::parse(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Reservoir");
-      width_mm        = prm.get_double("Width (mm)");
-      depth_mm        = prm.get_double("Depth (mm)");
-      prm.leave_subsection();
-    }
-
-    void Output::declare(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Output");
-      prm.declare_entry("Directory", "results", Anything(),
-                        "Folder of the results file (created if missing), relative to the "
-                        "working directory.");
-      prm.declare_entry("Base name", "default", Anything(),
-                        "The results go to <Directory>/<Base name>.h5.");
-      prm.declare_entry("ParaView", "false", Bool(),
-                        "cdea run: also write <Directory>/<Base name>.pvd with one VTU file "
-                        "per converged step in <Directory>/<Base name>_vtu/ (the film as "
-                        "the revolved surface, the disk as a second piece).");
-      prm.declare_entry("ParaView segments", "36", Integer(3, 3600),
-                        "Cells around the axis in the revolved surface of the ParaView "
-                        "output.");
-      prm.leave_subsection();
-    }
-
-    void Output::parse(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Output");
-      directory    = prm.get("Directory");
-      base_name    = prm.get("Base name");
-      paraview          = prm.get_bool("ParaView");
-      paraview_segments = prm.get_integer("ParaView segments");
-      prm.leave_subsection();
-    }
-  } // namespace parameters
+  ParameterDeclarations Parameters::declarations()
+  {
+    ParameterDeclarations prm;
+    for (const auto &[position, subsection] : registry())
+      subsection.declare(prm, *this);
+    return prm;
+  }
 
   void Parameters::declare(ParameterHandler &prm)
   {
-    // deal.II numbers the patterns in the order of declaration, and the JSON
-    // form of print-parameters shows those numbers: the order is that of
-    // earlier versions, the load terms' entries of subsection Reservoir
-    // with the Reservoir's own, the laws' after Output (where Material/Model
-    // always was), and the load terms' other entries last.
-    const auto in_reservoir = [](const EntryDeclaration &e) { return e.subsection == "Reservoir"; };
-    parameters::Geometry::declare(prm);
-    parameters::Material::declare(prm);
-    parameters::Loading::declare(prm);
-    parameters::Electrodes::declare(prm);
-    parameters::Discretization::declare(prm);
-    parameters::Solver::declare(prm);
-    parameters::Wrinkling::declare(prm);
-    parameters::Shooting::declare(prm);
-    parameters::Sweep::declare(prm);
-    parameters::Reservoir::declare(prm);
-    parameters::LoadTerms::declare(prm, in_reservoir);
-    parameters::Optimization::declare(prm);
-    parameters::Calibration::declare(prm);
-    parameters::Output::declare(prm);
-    parameters::MaterialLaw::declare(prm);
-    parameters::Time::declare(prm);
-    parameters::LoadTerms::declare(prm, [&](const EntryDeclaration &e) { return !in_reservoir(e); });
-    parameters::Response::declare(prm);
-    parameters::SteadyState::declare(prm);
-    parameters::FrequencySweep::declare(prm);
+    Parameters defaults;
+    declare_entries(prm, defaults.declarations());
   }
 
   void Parameters::parse(ParameterHandler &prm)
   {
-    geometry.parse(prm);
-    material.parse(prm);
-    loading.parse(prm);
-    electrodes.parse(prm);
-    discretization.parse(prm);
-    solver.parse(prm);
-    wrinkling.parse(prm);
-    shooting.parse(prm);
-    sweep.parse(prm);
-    reservoir.parse(prm);
-    optimization.parse(prm);
-    calibration.parse(prm);
-    output.parse(prm);
-    material_law.parse(prm);
-    time.parse(prm);
-    load_terms.parse(prm);
-    response.parse(prm);
-    steady_state.parse(prm);
-    frequency_sweep.parse(prm);
+    read_entries(prm, declarations());
   }
 
-  std::string to_string(const Continuation choice)
+  void Parameters::check_subsections() const
   {
-    return choice == Continuation::arc_length ? "arc length" : "load stepping";
-  }
-
-  std::string to_string(const WrinklingModel choice)
-  {
-    return choice == WrinklingModel::relaxed ? "relaxed" : "check";
+    for (const auto &[position, subsection] : registry())
+      if (subsection.check)
+        subsection.check(*this);
   }
 
   namespace

@@ -1,117 +1,91 @@
-#include <deal.II/base/parameter_handler.h>
+// The subsections of the dynamics: Response (position 170), Steady state
+// (180) and Frequency sweep (190), their entries bound to the structs of
+// input/parameters.h.
 
-#include <cdea/input/parameters_dynamics.h>
+#include <cdea/input/parameters.h>
 
 namespace cdea
 {
-  using dealii::ParameterHandler;
-  using dealii::Patterns::Double;
-  using dealii::Patterns::Anything;
-  using dealii::Patterns::Integer;
-  using dealii::Patterns::Selection;
+  namespace
+  {
+    const Choices<bool> spacing_choices{{"log", true}, {"linear", false}};
+  } // namespace
 
   namespace parameters
   {
-    void Response::declare(ParameterHandler &prm)
+    void Response::declare(ParameterDeclarations &prm)
     {
       prm.enter_subsection("Response");
-      prm.declare_entry("Lowest frequency (Hz)", "0.01", Double(),
-                        "cdea response: the transfer functions about the equilibrium at the end "
-                        "of the voltage path, from this frequency to Highest frequency at "
-                        "Frequencies frequencies evenly spaced in log(f).");
-      prm.declare_entry("Highest frequency (Hz)", "100", Double(),
-                        "The highest frequency of the transfer functions.");
-      prm.declare_entry("Frequencies", "200", Integer(2, 100000),
-                        "How many frequencies the transfer functions are evaluated at.");
-      prm.declare_entry("Modes", "3", Integer(0, 1000),
-                        "Natural frequencies and mode shapes reported (at most the rank of the "
-                        "mass: one for the disk alone, two with the water column).");
-      prm.declare_entry("Membrane density (kg/m^3)", "0", Double(),
-                        "The membrane's consistent mass in the small-signal response (VHB 4910: "
-                        "about 960). 0: massless, as the time runs take it (its 0.76 g are 0.3 % "
-                        "of the disk's mass, and its own modes lie above 100 Hz).");
+      prm.add("Lowest frequency (Hz)", "0.01", lowest_frequency_Hz,
+              "cdea response: the transfer functions about the equilibrium at the end "
+              "of the voltage path, from this frequency to Highest frequency at "
+              "Frequencies frequencies evenly spaced in log(f).");
+      prm.add("Highest frequency (Hz)", "100", highest_frequency_Hz,
+              "The highest frequency of the transfer functions.");
+      prm.add("Frequencies", "200", frequencies,
+              "How many frequencies the transfer functions are evaluated at.", between(2, 100000));
+      prm.add("Modes", "3", modes,
+              "Natural frequencies and mode shapes reported (at most the rank of the "
+              "mass: one for the disk alone, two with the water column).",
+              between(0, 1000));
+      prm.add("Membrane density (kg/m^3)", "0", membrane_density,
+              "The membrane's consistent mass in the small-signal response (VHB 4910: "
+              "about 960). 0: massless, as the time runs take it (its 0.76 g are 0.3 % "
+              "of the disk's mass, and its own modes lie above 100 Hz).");
       prm.leave_subsection();
     }
 
-    void Response::parse(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Response");
-      lowest_frequency_Hz  = prm.get_double("Lowest frequency (Hz)");
-      highest_frequency_Hz = prm.get_double("Highest frequency (Hz)");
-      frequencies          = prm.get_integer("Frequencies");
-      modes                = prm.get_integer("Modes");
-      membrane_density     = prm.get_double("Membrane density (kg/m^3)");
-      prm.leave_subsection();
-    }
-
-    void SteadyState::declare(ParameterHandler &prm)
+    void SteadyState::declare(ParameterDeclarations &prm)
     {
       prm.enter_subsection("Steady state");
-      prm.declare_entry("Tolerance", "1e-6", Double(),
-                        "cdea frequency-sweep: the periodic steady state is converged when one "
-                        "period moves the disk's position and velocity (and the water column's "
-                        "volume) by less than this times their half swing over the period, and "
-                        "the internal variables by less than this times the largest half swing "
-                        "of any of them.");
-      prm.declare_entry("Max Newton iterations", "12", Integer(1, 1000),
-                        "Newton iterations on the periodicity condition.");
-      prm.declare_entry("Krylov dimension", "40", Integer(1, 1000),
-                        "GMRES iterations (period maps) per Newton iteration at most.");
-      prm.declare_entry("Start periods", "2", Integer(0, 1000),
-                        "Periods of plain time integration from the time run's start before "
-                        "Newton.");
-      prm.declare_entry("Low voltage (fraction of peak)", "0", Double(),
-                        "The sine and the square wave of the steady states swing between this "
-                        "fraction of the voltage path's last waypoint and that waypoint (0: from "
-                        "0 V, as Time/Waveform drives a time run; close to 1: a small swing "
-                        "about a bias).");
+      prm.add("Tolerance", "1e-6", tolerance,
+              "cdea frequency-sweep: the periodic steady state is converged when one "
+              "period moves the disk's position and velocity (and the water column's "
+              "volume) by less than this times their half swing over the period, and "
+              "the internal variables by less than this times the largest half swing "
+              "of any of them.");
+      prm.add("Max Newton iterations", "12", max_newton_iterations,
+              "Newton iterations on the periodicity condition.", between(1, 1000));
+      prm.add("Krylov dimension", "40", krylov_dimension,
+              "GMRES iterations (period maps) per Newton iteration at most.", between(1, 1000));
+      prm.add("Start periods", "2", start_periods,
+              "Periods of plain time integration from the time run's start before "
+              "Newton.",
+              between(0, 1000));
+      prm.add("Low voltage (fraction of peak)", "0", low_fraction,
+              "The sine and the square wave of the steady states swing between this "
+              "fraction of the voltage path's last waypoint and that waypoint (0: from "
+              "0 V, as Time/Waveform drives a time run; close to 1: a small swing "
+              "about a bias).");
       prm.leave_subsection();
     }
 
-    void SteadyState::parse(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Steady state");
-      tolerance             = prm.get_double("Tolerance");
-      max_newton_iterations = prm.get_integer("Max Newton iterations");
-      krylov_dimension      = prm.get_integer("Krylov dimension");
-      start_periods         = prm.get_integer("Start periods");
-      low_fraction          = prm.get_double("Low voltage (fraction of peak)");
-      prm.leave_subsection();
-    }
-
-    void FrequencySweep::declare(ParameterHandler &prm)
+    void FrequencySweep::declare(ParameterDeclarations &prm)
     {
       prm.enter_subsection("Frequency sweep");
-      prm.declare_entry("Lowest frequency (Hz)", "0.01", Double(),
-                        "cdea frequency-sweep: the periodic steady state of Time/Waveform at "
-                        "Frequencies frequencies from this one to Highest frequency (unless "
-                        "Frequencies (Hz) lists them).");
-      prm.declare_entry("Highest frequency (Hz)", "20", Double(),
-                        "The highest frequency of the sweep.");
-      prm.declare_entry("Frequencies", "17", Integer(),
-                        "How many frequencies between the lowest and the highest.");
-      prm.declare_entry("Spacing", "log", Selection("log|linear"),
-                        "Frequencies evenly spaced in log(f) or in f.");
-      prm.declare_entry("Frequencies (Hz)", "", Anything(),
-                        "A comma-separated list of frequencies; if given, it replaces the range.");
-      prm.declare_entry("Usable stroke factor", "1.5", Double(),
-                        "A frequency is usable if its swing keeps the film taut and its stroke "
-                        "amplitude lies between the quasi-static one divided by this factor "
-                        "and the quasi-static one times it; the usable band is the longest run "
-                        "of consecutive usable frequencies.");
+      prm.add("Lowest frequency (Hz)", "0.01", lowest_frequency_Hz,
+              "cdea frequency-sweep: the periodic steady state of Time/Waveform at "
+              "Frequencies frequencies from this one to Highest frequency (unless "
+              "Frequencies (Hz) lists them).");
+      prm.add("Highest frequency (Hz)", "20", highest_frequency_Hz,
+              "The highest frequency of the sweep.");
+      prm.add("Frequencies", "17", frequencies,
+              "How many frequencies between the lowest and the highest.");
+      prm.add("Spacing", "log", log_spacing, spacing_choices,
+              "Frequencies evenly spaced in log(f) or in f.");
+      prm.add("Frequencies (Hz)", "", frequency_list,
+              "A comma-separated list of frequencies; if given, it replaces the range.");
+      prm.add("Usable stroke factor", "1.5", usable_factor,
+              "A frequency is usable if its swing keeps the film taut and its stroke "
+              "amplitude lies between the quasi-static one divided by this factor "
+              "and the quasi-static one times it; the usable band is the longest run "
+              "of consecutive usable frequencies.");
       prm.leave_subsection();
     }
 
-    void FrequencySweep::parse(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Frequency sweep");
-      lowest_frequency_Hz  = prm.get_double("Lowest frequency (Hz)");
-      highest_frequency_Hz = prm.get_double("Highest frequency (Hz)");
-      frequencies          = prm.get_integer("Frequencies");
-      log_spacing          = prm.get("Spacing") == "log";
-      frequency_list       = prm.get("Frequencies (Hz)");
-      usable_factor        = prm.get_double("Usable stroke factor");
-      prm.leave_subsection();
-    }
   } // namespace parameters
+
+  CDEA_REGISTER_MEMBER_SUBSECTION(response, 170)
+  CDEA_REGISTER_MEMBER_SUBSECTION(steady_state, 180)
+  CDEA_REGISTER_MEMBER_SUBSECTION(frequency_sweep, 190)
 } // namespace cdea

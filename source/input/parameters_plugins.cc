@@ -1,47 +1,13 @@
-#include <deal.II/base/parameter_handler.h>
+// The plugins' subsections: Material/Model with the registered laws'
+// constants (position 140, after Output, where Material/Model always stood),
+// and the registered load terms' entries, those of subsection Reservoir with
+// the Reservoir's own (105) and the others after subsection Time (160).
 
-#include <cdea/input/parameters_plugins.h>
+#include <cdea/fe/load_term.h>
+#include <cdea/input/parameters.h>
 
 namespace cdea
 {
-  using dealii::ParameterHandler;
-
-  void declare_plugin_entries(ParameterHandler &prm, const ParameterDeclarations &declarations,
-                              const std::function<bool(const EntryDeclaration &)> &which)
-  {
-    for (const EntryDeclaration &e : declarations.entries())
-      if (e.declared_here && which(e))
-        {
-          prm.enter_subsection(e.subsection);
-          if (e.kind == EntryKind::flag)
-            prm.declare_entry(e.name, e.default_value, dealii::Patterns::Bool(), e.documentation);
-          else if (e.kind == EntryKind::text)
-            prm.declare_entry(e.name, e.default_value, dealii::Patterns::Anything(),
-                              e.documentation);
-          else
-            prm.declare_entry(e.name, e.default_value, dealii::Patterns::Double(),
-                              e.documentation);
-          prm.leave_subsection();
-        }
-  }
-
-  ParameterValues read_plugin_entries(ParameterHandler &prm, const ParameterDeclarations &declarations)
-  {
-    ParameterValues values;
-    for (const EntryDeclaration &e : declarations.entries())
-      {
-        prm.enter_subsection(e.subsection);
-        if (e.kind == EntryKind::flag)
-          values.set_flag(e.path(), prm.get_bool(e.name));
-        else if (e.kind == EntryKind::text)
-          values.set_text(e.path(), prm.get(e.name));
-        else
-          values.set_number(e.path(), prm.get_double(e.name));
-        prm.leave_subsection();
-      }
-    return values;
-  }
-
   namespace parameters
   {
     namespace
@@ -50,47 +16,32 @@ namespace cdea
       std::string law_selection()
       {
         std::string names;
-        for (const std::string &name : membrane_law_names())
+        for (const std::string &name : MembraneLaws::names())
           names += (names.empty() ? "" : "|") + name;
         return names;
       }
     } // namespace
 
-    void MaterialLaw::declare(ParameterHandler &prm)
+    void MaterialLaw::declare(ParameterDeclarations &prm)
     {
       prm.enter_subsection("Material");
-      prm.declare_entry("Model", LawSettings().model, dealii::Patterns::Selection(law_selection()),
-                        membrane_law_documentation());
+      prm.add_choice("Model", LawSettings().model, law_selection(), MembraneLaws::documentation(),
+                     [this](const EntryValue &v) { model = std::get<std::string>(v); });
       prm.leave_subsection();
-      declare_plugin_entries(prm, membrane_law_parameters(),
-                             [](const EntryDeclaration &) { return true; });
-    }
-
-    void MaterialLaw::parse(ParameterHandler &prm)
-    {
-      prm.enter_subsection("Material");
-      model = prm.get("Model");
-      prm.leave_subsection();
-      constants.clear();
-      texts.clear();
-      const ParameterDeclarations laws = membrane_law_parameters();
-      const ParameterValues       values = read_plugin_entries(prm, laws);
-      for (const EntryDeclaration &e : laws.entries())
-        if (e.kind == EntryKind::text)
-          texts[e.name] = values.text(e.path());
-        else
-          constants[e.name] = values.number(e.path());
-    }
-
-    void LoadTerms::declare(ParameterHandler                                    &prm,
-                            const std::function<bool(const EntryDeclaration &)> &which)
-    {
-      declare_plugin_entries(prm, load_term_parameters(), which);
-    }
-
-    void LoadTerms::parse(ParameterHandler &prm)
-    {
-      values = read_plugin_entries(prm, load_term_parameters());
+      // Every law's entries, by name: numbers into constants, texts into texts.
+      const ParameterDeclarations laws = MembraneLaws::parameters();
+      for (EntryDeclaration e : laws.entries())
+        {
+          if (e.kind == EntryKind::text)
+            e.assign = [&text = texts[e.name]](const EntryValue &v) {
+              text = std::get<std::string>(v);
+            };
+          else
+            e.assign = [&constant = constants[e.name]](const EntryValue &v) {
+              constant = std::get<double>(v);
+            };
+          prm.append(std::move(e));
+        }
     }
 
     LawSettings MaterialLaw::settings(const MaterialConstants &network_a) const
@@ -102,5 +53,25 @@ namespace cdea
       s.texts     = texts;
       return s;
     }
+
+    void LoadTermValues::declare(ParameterDeclarations &prm, const bool reservoir)
+    {
+      const ParameterDeclarations terms = LoadTerms::parameters();
+      ParameterDeclarations       which;
+      for (const EntryDeclaration &e : terms.entries())
+        if ((e.subsection == "Reservoir") == reservoir)
+          which.append(e);
+      prm.append(which, values);
+    }
   } // namespace parameters
+
+  CDEA_REGISTER_PARAMETER_SUBSECTION(
+    material_law, 140, [](ParameterDeclarations &prm, Parameters &p) { p.material_law.declare(prm); },
+    nullptr)
+  CDEA_REGISTER_PARAMETER_SUBSECTION(
+    reservoir_load_terms, 105,
+    [](ParameterDeclarations &prm, Parameters &p) { p.load_terms.declare(prm, true); }, nullptr)
+  CDEA_REGISTER_PARAMETER_SUBSECTION(
+    other_load_terms, 160,
+    [](ParameterDeclarations &prm, Parameters &p) { p.load_terms.declare(prm, false); }, nullptr)
 } // namespace cdea

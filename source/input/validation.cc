@@ -91,17 +91,17 @@ namespace cdea
       dim(p.reservoir.width_mm, "Reservoir/Width (mm)");
       dim(p.reservoir.depth_mm, "Reservoir/Depth (mm)");
       // Every load term checks its entries as it reads them, on or off.
-      for (const LoadTermPlugin &plugin : load_term_plugins())
-        parse_load_term(plugin, p.load_terms.values);
+      for (const LoadTerms::Plugin &plugin : LoadTerms::plugins())
+        plugin.create(p.load_terms.values);
     }
 
     /// The first load term that @p p switches on and that lacks @p support
     /// (LoadTermSupport), or none.
     std::unique_ptr<LoadTerm> unsupported_load_term(const Parameters &p, const unsigned int support)
     {
-      for (const LoadTermPlugin &plugin : load_term_plugins())
-        if (!(plugin.supports & support))
-          if (auto term = parse_load_term(plugin, p.load_terms.values); term->active())
+      for (const LoadTerms::Plugin &plugin : LoadTerms::plugins())
+        if (!(plugin.flags & support))
+          if (auto term = plugin.create(p.load_terms.values); term->active())
             return term;
       return nullptr;
     }

@@ -30,12 +30,14 @@ namespace cdea
 
     static void declare_parameters(ParameterDeclarations &prm)
     {
-      prm.declare_number("Material", "Gent-Gent C2 (kPa)", "0",
-                         "Coefficient C2 of log(I2 / 3) in the Gent-Gent law (its I1 part is the "
-                         "Gent law of Shear modulus and Jlim); at least 0.");
+      prm.enter_subsection("Material");
+      prm.add_number("Gent-Gent C2 (kPa)", "0",
+                     "Coefficient C2 of log(I2 / 3) in the Gent-Gent law (its I1 part is the "
+                     "Gent law of Shear modulus and Jlim); at least 0.");
+      prm.leave_subsection();
     }
 
-    static std::shared_ptr<const MembraneLaw> parse_parameters(const LawSettings &settings)
+    static std::shared_ptr<const MembraneLaw> create(const LawSettings &settings)
     {
       const double c2 = settings.constant("Gent-Gent C2 (kPa)");
       if (!(c2 >= 0. && c2 <= 1e9))
@@ -110,7 +112,7 @@ namespace cdea
     }
   };
 
-  CDEA_REGISTER_MEMBRANE_LAW(GentGentLaw, "gent-gent",
-                             "the Gent-Gent law: the Gent law of Shear modulus and Jlim plus "
-                             "Gent-Gent C2 log(I2 / 3) (Pucci and Saccomandi 2002).")
+  CDEA_REGISTER_PLUGIN(MembraneLaws, GentGentLaw, "gent-gent", 0,
+                       "the Gent-Gent law: the Gent law of Shear modulus and Jlim plus "
+                       "Gent-Gent C2 log(I2 / 3) (Pucci and Saccomandi 2002).")
 } // namespace cdea

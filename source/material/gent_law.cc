@@ -105,10 +105,11 @@ namespace cdea
     return {std::sqrt(u_minus), std::sqrt(u_plus)};
   }
 
-  std::shared_ptr<const MembraneLaw> GentDielectricLaw::parse_parameters(const LawSettings &settings)
+  std::shared_ptr<const MembraneLaw> GentDielectricLaw::create(const LawSettings &settings)
   {
     return std::make_shared<GentDielectricLaw>(settings.material);
   }
 
-  CDEA_REGISTER_MEMBRANE_LAW(GentDielectricLaw, "elastic", "the Gent law of Shear modulus and Jlim.")
+  CDEA_REGISTER_PLUGIN(MembraneLaws, GentDielectricLaw, "elastic", 0,
+                       "the Gent law of Shear modulus and Jlim.")
 } // namespace cdea

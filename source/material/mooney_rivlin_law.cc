@@ -28,12 +28,14 @@ namespace cdea
 
     static void declare_parameters(ParameterDeclarations &prm)
     {
-      prm.declare_number("Material", "Mooney-Rivlin C2 (kPa)", "0",
-                         "Coefficient C2 of I2 - 3 in the Mooney-Rivlin law (C1 = Shear "
-                         "modulus / 2); at least 0.");
+      prm.enter_subsection("Material");
+      prm.add_number("Mooney-Rivlin C2 (kPa)", "0",
+                     "Coefficient C2 of I2 - 3 in the Mooney-Rivlin law (C1 = Shear "
+                     "modulus / 2); at least 0.");
+      prm.leave_subsection();
     }
 
-    static std::shared_ptr<const MembraneLaw> parse_parameters(const LawSettings &settings)
+    static std::shared_ptr<const MembraneLaw> create(const LawSettings &settings)
     {
       const double c2 = settings.constant("Mooney-Rivlin C2 (kPa)");
       if (!(c2 >= 0. && c2 <= 1e9))
@@ -83,7 +85,7 @@ namespace cdea
     }
   };
 
-  CDEA_REGISTER_MEMBRANE_LAW(MooneyRivlinLaw, "mooney-rivlin",
-                             "the Mooney-Rivlin law (mu / 2) (I1 - 3) + C2 (I2 - 3) of Shear "
-                             "modulus and Mooney-Rivlin C2 (Mooney 1940, Rivlin 1948).")
+  CDEA_REGISTER_PLUGIN(MembraneLaws, MooneyRivlinLaw, "mooney-rivlin", 0,
+                       "the Mooney-Rivlin law (mu / 2) (I1 - 3) + C2 (I2 - 3) of Shear "
+                       "modulus and Mooney-Rivlin C2 (Mooney 1940, Rivlin 1948).")
 } // namespace cdea

@@ -17,7 +17,7 @@ namespace cdea
   public:
     using ElasticDielectricLaw::ElasticDielectricLaw;
 
-    static std::shared_ptr<const MembraneLaw> parse_parameters(const LawSettings &settings)
+    static std::shared_ptr<const MembraneLaw> create(const LawSettings &settings)
     {
       return std::make_shared<NeoHookeLaw>(settings.material);
     }
@@ -50,7 +50,7 @@ namespace cdea
     }
   };
 
-  CDEA_REGISTER_MEMBRANE_LAW(NeoHookeLaw, "neo-hooke",
-                             "the neo-Hookean law (mu / 2) (I1 - 3) of Shear modulus (Treloar), "
-                             "the Gent law without its limit.")
+  CDEA_REGISTER_PLUGIN(MembraneLaws, NeoHookeLaw, "neo-hooke", 0,
+                       "the neo-Hookean law (mu / 2) (I1 - 3) of Shear modulus (Treloar), "
+                       "the Gent law without its limit.")
 } // namespace cdea

@@ -39,22 +39,23 @@ namespace cdea
 
     static void declare_parameters(ParameterDeclarations &prm)
     {
-      prm.declare_number("Material", "Ogden alpha 1", "2",
-                         "Exponent alpha_1 of the Ogden law's first term, whose modulus mu_1 is "
-                         "Shear modulus; above 0.");
+      prm.enter_subsection("Material");
+      prm.add_number("Ogden alpha 1", "2",
+                     "Exponent alpha_1 of the Ogden law's first term, whose modulus mu_1 is "
+                     "Shear modulus; above 0.");
       for (const char *p : {"2", "3"})
         {
-          prm.declare_number("Material", std::string("Ogden mu ") + p + " (kPa)", "0",
-                             std::string("Modulus mu_") + p + " of the Ogden law's term " + p +
-                               " (0: no such term); mu_" + p + " alpha_" + p + " >= 0.");
-          prm.declare_number("Material", std::string("Ogden alpha ") + p,
-                             p == std::string("2") ? "-2" : "5",
-                             std::string("Exponent alpha_") + p + " of the Ogden law's term " +
-                               p + "; not 0.");
+          prm.add_number(std::string("Ogden mu ") + p + " (kPa)", "0",
+                         std::string("Modulus mu_") + p + " of the Ogden law's term " + p +
+                           " (0: no such term); mu_" + p + " alpha_" + p + " >= 0.");
+          prm.add_number(std::string("Ogden alpha ") + p, p == std::string("2") ? "-2" : "5",
+                         std::string("Exponent alpha_") + p + " of the Ogden law's term " + p +
+                           "; not 0.");
         }
+      prm.leave_subsection();
     }
 
-    static std::shared_ptr<const MembraneLaw> parse_parameters(const LawSettings &settings)
+    static std::shared_ptr<const MembraneLaw> create(const LawSettings &settings)
     {
       std::array<OgdenTerm, 3> t;
       t[0] = {settings.material.shear_modulus, settings.constant("Ogden alpha 1")};
@@ -154,7 +155,7 @@ namespace cdea
     }
   };
 
-  CDEA_REGISTER_MEMBRANE_LAW(OgdenLaw, "ogden",
-                             "the Ogden law of up to three terms sum (mu_p / alpha_p) (l1^alpha_p "
-                             "+ l2^alpha_p + l3^alpha_p - 3), mu_1 = Shear modulus (Ogden 1972).")
+  CDEA_REGISTER_PLUGIN(MembraneLaws, OgdenLaw, "ogden", 0,
+                       "the Ogden law of up to three terms sum (mu_p / alpha_p) (l1^alpha_p "
+                       "+ l2^alpha_p + l3^alpha_p - 3), mu_1 = Shear modulus (Ogden 1972).")
 } // namespace cdea

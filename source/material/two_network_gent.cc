@@ -429,27 +429,28 @@ namespace cdea
 
   void TwoNetworkGentLaw::declare_parameters(ParameterDeclarations &prm)
   {
-    prm.declare_number("Material", "Network B shear modulus (kPa)", "45",
-                       "Shear modulus mu_B of network B's spring (viscoelastic model).");
-    prm.declare_number("Material", "Network B Jlim", "270",
-                       "Gent limit Jlim_B of network B's spring.");
-    prm.declare_number("Material", "Relaxation time (s)", "2",
-                       "tau = eta / mu_B of network B (eta: the dashpot's viscosity).");
-    prm.declare_text("Material", "Branch shear moduli (kPa)", "",
-                     "A relaxation spectrum (viscoelastic model): the shear moduli mu_k of "
-                     "network B's parallel branches, e.g. '30, 10, 5'; empty: one branch, "
-                     "Network B shear modulus, Network B Jlim and Relaxation time (s).");
-    prm.declare_text("Material", "Branch relaxation times (s)", "",
-                     "tau_k = eta_k / mu_k of the branches, as many as Branch shear moduli "
-                     "(kPa).");
-    prm.declare_text("Material", "Branch Jlim", "",
-                     "Jlim_k of the branches' springs, as many as Branch shear moduli (kPa); "
-                     "empty: Network B Jlim for every branch.");
-    prm.declare_text("Material", "Branch law", "elastic",
-                     "The elastic law of every branch's spring (and of network B's one "
-                     "spring): a Material/Model value without internal variables ('elastic' "
-                     "is Gent), with Shear modulus mu_k, Jlim Jlim_k and the law's other "
-                     "constants from subsection Material.");
+    prm.enter_subsection("Material");
+    prm.add_number("Network B shear modulus (kPa)", "45",
+                   "Shear modulus mu_B of network B's spring (viscoelastic model).");
+    prm.add_number("Network B Jlim", "270", "Gent limit Jlim_B of network B's spring.");
+    prm.add_number("Relaxation time (s)", "2",
+                   "tau = eta / mu_B of network B (eta: the dashpot's viscosity).");
+    prm.add_text("Branch shear moduli (kPa)", "",
+                 "A relaxation spectrum (viscoelastic model): the shear moduli mu_k of "
+                 "network B's parallel branches, e.g. '30, 10, 5'; empty: one branch, "
+                 "Network B shear modulus, Network B Jlim and Relaxation time (s).");
+    prm.add_text("Branch relaxation times (s)", "",
+                 "tau_k = eta_k / mu_k of the branches, as many as Branch shear moduli "
+                 "(kPa).");
+    prm.add_text("Branch Jlim", "",
+                 "Jlim_k of the branches' springs, as many as Branch shear moduli (kPa); "
+                 "empty: Network B Jlim for every branch.");
+    prm.add_text("Branch law", "elastic",
+                 "The elastic law of every branch's spring (and of network B's one "
+                 "spring): a Material/Model value without internal variables ('elastic' "
+                 "is Gent), with Shear modulus mu_k, Jlim Jlim_k and the law's other "
+                 "constants from subsection Material.");
+    prm.leave_subsection();
     ShearThinning::declare_parameters(prm);
   }
 
@@ -529,7 +530,7 @@ namespace cdea
       const std::string law = trim_blanks(settings.text("Branch law", "elastic"));
       if (law == "elastic")
         return {};
-      const std::vector<std::string> names = membrane_law_names();
+      const std::vector<std::string> names = MembraneLaws::names();
       if (std::find(names.begin(), names.end(), law) == names.end() || law == settings.model)
         throw InputError("Material/Branch law must name an elastic law of Material/Model "
                          "other than '" + settings.model + "', got '" + law + "'");
@@ -549,7 +550,7 @@ namespace cdea
     }
   } // namespace
 
-  std::shared_ptr<const MembraneLaw> TwoNetworkGentLaw::parse_parameters(const LawSettings &settings)
+  std::shared_ptr<const MembraneLaw> TwoNetworkGentLaw::create(const LawSettings &settings)
   {
     std::vector<ViscousNetwork> branches = listed_branches(settings);
     if (branches.empty())
@@ -568,10 +569,10 @@ namespace cdea
                                                std::move(springs), ShearThinning::parse(settings));
   }
 
-  CDEA_REGISTER_MEMBRANE_LAW(TwoNetworkGentLaw, "viscoelastic",
-                             "the 'elastic' law is network A (the long-time response), in "
-                             "parallel with "
-                             "network B, a Gent spring in series with a dashpot (two-network "
-                             "model of Hong 2011 and Zhao, Koh, Suo 2011); needs Time/Enabled = "
-                             "true.")
+  CDEA_REGISTER_PLUGIN(MembraneLaws, TwoNetworkGentLaw, "viscoelastic", 0,
+                       "the 'elastic' law is network A (the long-time response), in "
+                       "parallel with "
+                       "network B, a Gent spring in series with a dashpot (two-network "
+                       "model of Hong 2011 and Zhao, Koh, Suo 2011); needs Time/Enabled = "
+                       "true.")
 } // namespace cdea

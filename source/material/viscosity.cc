@@ -142,23 +142,23 @@ namespace cdea
 
   void ShearThinning::declare_parameters(ParameterDeclarations &prm)
   {
-    prm.declare_text("Material", "Viscosity", "newtonian",
-                     "The dashpots of network B (viscoelastic model): 'newtonian' (eta_k = "
-                     "mu_k tau_k) or 'shear thinning', the viscosity of Kumar and Lopez-Pamies "
-                     "2016, eta = eta_inf + (eta_0 - eta_inf + K1 (I1v^beta1 - 3^beta1)) / "
-                     "(1 + (K2 J2)^beta2), with eta_0 = mu_k tau_k of each branch and the "
-                     "Shear thinning entries, one set for every branch.");
-    prm.declare_number("Material", "Shear thinning eta_inf/eta_0", "1.4257e-5",
-                       "eta_inf / eta_0 (0 < r <= 1; VHB 4910: 0.1 / 7014 kPa s).");
-    prm.declare_number("Material", "Shear thinning K1/eta_0", "0.5",
-                       "K1 / eta_0, the strain stiffening (>= 0; VHB 4910: 3507 / 7014).");
-    prm.declare_number("Material", "Shear thinning beta1", "1.852",
-                       "Exponent beta1 of I1v (VHB 4910: 1.852).");
-    prm.declare_number("Material", "Shear thinning K2 (1/kPa^2)", "1e-6",
-                       "K2 (>= 0), the inverse square of the stress where the thinning sets "
-                       "in (VHB 4910: 1e-6).");
-    prm.declare_number("Material", "Shear thinning beta2", "0.26",
-                       "Exponent beta2 of K2 J2 (VHB 4910: 0.26).");
+    prm.enter_subsection("Material");
+    prm.add_text("Viscosity", "newtonian",
+                 "The dashpots of network B (viscoelastic model): 'newtonian' (eta_k = "
+                 "mu_k tau_k) or 'shear thinning', the viscosity of Kumar and Lopez-Pamies "
+                 "2016, eta = eta_inf + (eta_0 - eta_inf + K1 (I1v^beta1 - 3^beta1)) / "
+                 "(1 + (K2 J2)^beta2), with eta_0 = mu_k tau_k of each branch and the "
+                 "Shear thinning entries, one set for every branch.");
+    prm.add_number("Shear thinning eta_inf/eta_0", "1.4257e-5",
+                   "eta_inf / eta_0 (0 < r <= 1; VHB 4910: 0.1 / 7014 kPa s).");
+    prm.add_number("Shear thinning K1/eta_0", "0.5",
+                   "K1 / eta_0, the strain stiffening (>= 0; VHB 4910: 3507 / 7014).");
+    prm.add_number("Shear thinning beta1", "1.852", "Exponent beta1 of I1v (VHB 4910: 1.852).");
+    prm.add_number("Shear thinning K2 (1/kPa^2)", "1e-6",
+                   "K2 (>= 0), the inverse square of the stress where the thinning sets "
+                   "in (VHB 4910: 1e-6).");
+    prm.add_number("Shear thinning beta2", "0.26", "Exponent beta2 of K2 J2 (VHB 4910: 0.26).");
+    prm.leave_subsection();
   }
 
   namespace

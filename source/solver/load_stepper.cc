@@ -25,14 +25,23 @@ namespace cdea
     return "unknown";
   }
 
+  PostprocessorSetup postprocessor_setup(const Scene &scene, const SteppingSettings &settings)
+  {
+    PostprocessorSetup setup;
+    setup.prestretch      = scene.prestretch;
+    setup.frame_radius    = scene.frame_radius;
+    setup.stability_check = settings.stability_check;
+    setup.eigenvalue      = settings.stability_eigenvalue;
+    setup.field_check     = settings.breakdown_field > 0.;
+    return setup;
+  }
+
   LoadStepper::LoadStepper(const Scene &scene, EquilibriumModel &model,
                            const SteppingSettings &settings)
     : scene(scene)
     , model(model)
     , settings(settings)
-    , postprocessors(standard_postprocessors(scene.prestretch, settings.stability_check,
-                                             settings.stability_eigenvalue,
-                                             settings.breakdown_field > 0.))
+    , postprocessors(make_postprocessors(on_every_path, postprocessor_setup(scene, settings)))
   {
     crossings.push_back({[](const StepSummary &s) { return s.s2_min; },
                          [](const StepSummary &s) { return s.s2_min_radius; }, &result.onset,

@@ -1,4 +1,3 @@
-#include <cdea/model/output_fields.h>
 #include <cdea/solver/state_check.h>
 
 #include <algorithm>
@@ -99,11 +98,5 @@ namespace cdea
     if (crosses_itself(line))
       flags |= self_intersection;
     return flags;
-  }
-
-  void NonPhysicalCheck::evaluate(StepContext &context, StepSummary &summary)
-  {
-    summary.columns.set(summary_column::nonphysical,
-                        double(nonphysical_flags(context.fields(), frame_radius)));
   }
 } // namespace cdea

@@ -227,9 +227,9 @@ namespace cdea
   // stroke and volume, the motion, the energy budget) and its first report.
   StepSummary TimeStepper::start_time_stage()
   {
-    postprocessors = standard_postprocessors(scene.prestretch, time_stage_stability(),
-                                             quasi_static.stability_eigenvalue,
-                                             quasi_static.breakdown_field > 0.);
+    PostprocessorSetup setup = postprocessor_setup(scene, quasi_static);
+    setup.stability_check    = time_stage_stability();
+    postprocessors           = make_postprocessors(on_every_path, setup);
     for (const auto &make : factories)
       postprocessors.push_back(make());
     auto columns = std::make_unique<TimeColumns>();

@@ -24,8 +24,9 @@ namespace cdea
   std::unique_ptr<EquilibriumModel> make_model(const RunInput &input, RunMethod method);
 
   /// The postprocessors of `cdea run` (quasi-static and in time) and `cdea
-  /// shoot` beyond the steppers' standard ones: the enclosed volume (with the
-  /// Reservoir's level tube) and the check for non-physical states.
+  /// shoot` beyond the steppers' own: those registered to run on_runs
+  /// (solver/postprocessors.h; the enclosed volume with the Reservoir's level
+  /// tube, the check for non-physical states).
   std::vector<TimeStepper::PostprocessorFactory> run_postprocessors(const Parameters &p,
                                                                     const Scene      &scene);
 

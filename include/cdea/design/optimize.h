@@ -20,7 +20,7 @@
 // optimizer shorten its step.
 
 #include <cdea/input/parameter_input.h>
-#include <cdea/input/parameters_design.h>
+#include <cdea/input/parameters.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/fe/sensitivities.h>
 #include <cdea/solver/load_stepper.h>

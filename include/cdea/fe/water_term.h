@@ -38,6 +38,9 @@ namespace cdea
   {
   public:
     static void declare_parameters(ParameterDeclarations &prm);
+    WaterTerm() = default;
+    /// The plugin: the term of the entries' @p values.
+    explicit WaterTerm(const ParameterValues &values) { parse_parameters(values); }
     /// The water load of the Reservoir's entries in SI units (checked: each
     /// positive and at most 1e12 in its unit).
     void        parse_parameters(const ParameterValues &values) override;

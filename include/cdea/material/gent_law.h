@@ -20,7 +20,7 @@ namespace cdea
 
     /// The Gent law of the film (Shear modulus, Jlim, Permittivity); no
     /// entries of its own.
-    static std::shared_ptr<const MembraneLaw> parse_parameters(const LawSettings &settings);
+    static std::shared_ptr<const MembraneLaw> create(const LawSettings &settings);
 
     bool   evaluate(const LawInput &input, const InternalStep &step, unsigned int request,
                     LawResponse &response) const override;

@@ -1,26 +1,28 @@
 #pragma once
 // The material laws as plugins of Material/Model, in the manner of ASPECT's
-// material models: each law registers itself at the end of its own source
-// file, inside namespace cdea, with one line,
+// material models: each law is a plugin of MembraneLaws (base/plugin_list.h)
+// and registers itself at the end of its own source file, inside namespace
+// cdea, with one line,
 //
-//   CDEA_REGISTER_MEMBRANE_LAW(TwoNetworkGentLaw, "viscoelastic", "description")
+//   CDEA_REGISTER_PLUGIN(MembraneLaws, TwoNetworkGentLaw, "viscoelastic", 0, "description")
 //
 // and the core lists no law by hand. The class gives two static functions:
 //
 //   static void declare_parameters(ParameterDeclarations &prm);
 //     its entries of subsection Material (MembraneLaw's default: none);
-//   static std::shared_ptr<const MembraneLaw> parse_parameters(const LawSettings &);
+//   static std::shared_ptr<const MembraneLaw> create(const LawSettings &);
 //     its constants taken from the settings and checked (InputError naming
 //     the entry and what is allowed), the law built.
 //
 // Material/Model's selection is the registered names, its documentation the
 // laws' descriptions ("'NAME': description", in name order); input/ declares
-// and reads the entries (parameters_plugins.h), so a law with constants of its
-// own touches no file outside its own. The settings are plain data (no
-// deal.II). The law files are linked whole into every program (an object
-// library in CMakeLists.txt), so that no registration is dropped by the linker.
+// and reads the entries (input/parameters_plugins.cc), so a law with
+// constants of its own touches no file outside its own. The settings are
+// plain data (no deal.II). The law files are linked whole into every program
+// (an object library in CMakeLists.txt), so that no registration is dropped
+// by the linker.
 
-#include <cdea/base/parameter_declarations.h>
+#include <cdea/base/plugin_list.h>
 #include <cdea/material/gent_dielectric.h>
 #include <cdea/material/membrane_law.h>
 
@@ -41,7 +43,7 @@ namespace cdea
     /// The entries the laws declare in subsection Material, by name, in the
     /// parameter file's units (e.g. "Relaxation time (s)").
     std::map<std::string, double> constants;
-    /// The text entries they declare (ParameterDeclarations::declare_text:
+    /// The text entries they declare (ParameterDeclarations::add_text:
     /// lists, names), by name, as the file writes them.
     std::map<std::string, std::string> texts;
 
@@ -53,44 +55,11 @@ namespace cdea
     std::string text(const std::string &name, const std::string &fallback) const;
   };
 
-  /// Builds a law from its settings.
-  using LawCreator = std::shared_ptr<const MembraneLaw> (*)(const LawSettings &);
-
-  /// A law as CDEA_REGISTER_MEMBRANE_LAW registers it.
-  struct LawPlugin
-  {
-    std::string name;        ///< its Material/Model value
-    std::string description; ///< what Material/Model's documentation says of it
-    void (*declare_parameters)(ParameterDeclarations &prm);
-    LawCreator parse_parameters;
-  };
-
-  /// Registers @p plugin; true. Throws std::logic_error if the name is taken.
-  bool register_membrane_law(const LawPlugin &plugin);
-
-  /// The registered names, sorted.
-  std::vector<std::string> membrane_law_names();
-
-  /// The registered laws' descriptions as the documentation of
-  /// Material/Model: "'NAME': description" joined by blanks, in name order.
-  std::string membrane_law_documentation();
-
-  /// Every registered law's entries (subsection Material), law by law in
-  /// name order, each in the order it declares them.
-  ParameterDeclarations membrane_law_parameters();
+  /// The registered laws: made from their LawSettings.
+  using MembraneLaws = PluginList<MembraneLaw, LawSettings, std::shared_ptr<const MembraneLaw>>;
 
   /// The law settings.model names, built from @p settings. Throws
   /// std::invalid_argument if no law is registered under that name or a
   /// constant is missing, InputError if a constant is outside its range.
   std::shared_ptr<const MembraneLaw> make_membrane_law(const LawSettings &settings);
 } // namespace cdea
-
-/// Registers the law @p classname as the value @p name of Material/Model,
-/// with @p description for its documentation; one line at the end of the
-/// law's source file, inside namespace cdea.
-#define CDEA_REGISTER_MEMBRANE_LAW(classname, name, description)                        \
-  namespace                                                                             \
-  {                                                                                     \
-    [[maybe_unused]] const bool classname##_registered = ::cdea::register_membrane_law( \
-      {name, description, &classname::declare_parameters, &classname::parse_parameters}); \
-  }

@@ -114,7 +114,7 @@ namespace cdea
     static void declare_parameters(ParameterDeclarations &prm);
     /// Network B from those entries (checked: InputError naming the entry
     /// and its range), network A the film's Gent law.
-    static std::shared_ptr<const MembraneLaw> parse_parameters(const LawSettings &settings);
+    static std::shared_ptr<const MembraneLaw> create(const LawSettings &settings);
 
     /// Energy is the incremental potential Psi of the step (W itself for
     /// dt = 0); false outside either Gent limit or if the local update fails.

@@ -49,6 +49,10 @@ namespace cdea
     double       update_tolerance      = 1e-10;
   };
 
+  /// What the postprocessors of a path with @p settings on @p scene are made
+  /// from (the Reservoir's tube is the runs', run_setup.h).
+  PostprocessorSetup postprocessor_setup(const Scene &scene, const SteppingSettings &settings);
+
   struct RunResult
   {
     bool         completed = false; ///< reached the end of the voltage path

@@ -1,15 +1,25 @@
 #pragma once
-// Summary quantities of a converged state as small postprocessors, registered
-// once with the load stepper and called after every converged step (and at
-// the states its crossing searches visit), in the manner of ASPECT's
-// postprocessors. Each fills its part of the StepSummary; quantities beyond
-// StepSummary's typed ones go into StepSummary::columns by their rows of the
-// table of output fields (model/output_fields.h, namespace summary_column)
-// and become /summary columns of the results file.
+// Summary quantities of a converged state as small postprocessors, in the
+// manner of ASPECT's postprocessors: each is a plugin of Postprocessors
+// (base/plugin_list.h, as the laws and the load terms), made from the
+// PostprocessorSetup of the path that runs it and called after every
+// converged step (and at the states the crossing searches visit). Each fills
+// its part of the StepSummary; quantities beyond StepSummary's typed ones go
+// into StepSummary::columns by their rows of the table of output fields
+// (model/output_fields.h, namespace summary_column) and become /summary
+// columns of the results file. A postprocessor registers itself at the end of
+// its source file, inside namespace cdea,
+//
+//   CDEA_REGISTER_PLUGIN(Postprocessors, EnclosedVolume, "enclosed volume", on_runs, "...")
+//
+// with the paths it runs on, and states its place among the others (static
+// constexpr int position): each sees what the earlier ones wrote, and the
+// results file creates the /summary columns in the order they first appear.
 //
 // The fields along the meridian are computed at most once per state
 // (StepContext::fields()) and shared by every postprocessor and the writer.
 
+#include <cdea/base/plugin_list.h>
 #include <cdea/model/equilibrium_model.h>
 
 #include <memory>
@@ -53,89 +63,35 @@ namespace cdea
     virtual ~Postprocessor() = default;
     /// Its quantities of the state of @p context into @p summary.
     virtual void evaluate(StepContext &context, StepSummary &summary) = 0;
+
+    /// Its entries of the parameter file; none by default.
+    static void declare_parameters(ParameterDeclarations &prm) { (void)prm; }
   };
 
-  /// Load, displacement, hoop stresses (with the wrinkled zone and the
-  /// validity limit), and wrinkled = s2_min < 0 after the pre-stretch stage.
-  class ModelQuantities final : public Postprocessor
+  /// What a postprocessor is made from: the scene's numbers and the settings
+  /// of the path that runs it.
+  struct PostprocessorSetup
   {
-  public:
-    explicit ModelQuantities(double prestretch)
-      : prestretch(prestretch)
-    {}
-    void evaluate(StepContext &context, StepSummary &summary) override;
-
-  private:
-    double prestretch;
+    double              prestretch      = 1.;
+    double              frame_radius    = 0.; ///< m
+    double              tube_area       = 1.; ///< m^2, the Reservoir's level tube
+    bool                stability_check = false;
+    StabilityEigenvalue eigenvalue      = StabilityEigenvalue::every_step;
+    bool                field_check     = false; ///< the largest field (Solver/Breakdown field on)
   };
 
-  /// Stroke: the displacement minus its value at the end of the dead-load stage.
-  class Stroke final : public Postprocessor
+  /// Where a postprocessor runs (the flags of a Postprocessors plugin).
+  enum PostprocessorPaths : unsigned int
   {
-  public:
-    void evaluate(StepContext &context, StepSummary &summary) override;
-
-  private:
-    std::optional<double> reference;
+    on_every_path = 1, ///< every load stepper and time stepper
+    on_runs       = 2  ///< the runs of cdea run and shoot (and in time), and their in-process twins
   };
 
-  /// Smallest eigenvalue of the tangent with loads held (NaN when off, and
-  /// with near_folds where it was not computed) and whether the state is
-  /// stable. With near_folds the first evaluation forgets the reference
-  /// (near_folds_first) and computes the eigenvalue unless the state is
-  /// singular to round-off, so a run's column does not depend on what the
-  /// model computed before it.
-  class Stability final : public Postprocessor
-  {
-  public:
-    explicit Stability(bool enabled, StabilityEigenvalue eigenvalue = StabilityEigenvalue::every_step)
-      : enabled(enabled)
-      , eigenvalue(eigenvalue)
-    {}
-    void evaluate(StepContext &context, StepSummary &summary) override;
+  /// The registered postprocessors, in their order (position, then name).
+  using Postprocessors = PluginList<Postprocessor, PostprocessorSetup>;
 
-  private:
-    bool                enabled;
-    StabilityEigenvalue eigenvalue;
-    bool                first = true;
-  };
-
-  /// Largest true electric field and where (NaN when off).
-  class MaxField final : public Postprocessor
-  {
-  public:
-    explicit MaxField(bool enabled)
-      : enabled(enabled)
-    {}
-    void evaluate(StepContext &context, StepSummary &summary) override;
-
-  private:
-    bool enabled;
-  };
-
-  /// Enclosed volume, its change from the end of the dead-load stage and the
-  /// pump's level drop in a tube of cross-section @p tube_area.
-  class EnclosedVolume final : public Postprocessor
-  {
-  public:
-    explicit EnclosedVolume(double tube_area)
-      : tube_area(tube_area)
-    {}
-    void evaluate(StepContext &context, StepSummary &summary) override;
-
-    double volume        = 0.; ///< m^3, of the last evaluation
-    double volume_change = std::numeric_limits<double>::quiet_NaN(); ///< m^3
-    double level_drop    = std::numeric_limits<double>::quiet_NaN(); ///< m
-
-  private:
-    double                tube_area;
-    std::optional<double> reference;
-  };
-
-  /// The postprocessors every run has, in order: model quantities, stroke,
-  /// stability (if @p stability_check, its eigenvalue where @p eigenvalue
-  /// says), field.
-  std::vector<std::unique_ptr<Postprocessor>>
-  standard_postprocessors(double prestretch, bool stability_check, StabilityEigenvalue eigenvalue,
-                          bool field_check);
+  /// The registered postprocessors of @p paths (PostprocessorPaths bits), in
+  /// order, made from @p setup.
+  std::vector<std::unique_ptr<Postprocessor>> make_postprocessors(unsigned int          paths,
+                                                                  const PostprocessorSetup &setup);
 } // namespace cdea

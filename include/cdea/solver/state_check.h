@@ -6,7 +6,6 @@
 // itself or the disk. Such states are flagged, not removed.
 
 #include <cdea/model/records.h>
-#include <cdea/solver/postprocessors.h>
 
 namespace cdea
 {
@@ -23,17 +22,4 @@ namespace cdea
   /// the samples only: a crossing between two samples is judged from the
   /// straight segments joining them.
   int nonphysical_flags(const StepFields &fields, double frame_radius);
-
-  /// The postprocessor of the /summary column `nonphysical` (the bits above).
-  class NonPhysicalCheck final : public Postprocessor
-  {
-  public:
-    explicit NonPhysicalCheck(double frame_radius)
-      : frame_radius(frame_radius)
-    {}
-    void evaluate(StepContext &context, StepSummary &summary) override;
-
-  private:
-    double frame_radius;
-  };
 } // namespace cdea
