@@ -99,7 +99,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   const std::vector<std::string> names = membrane_law_names();
   const auto has = [&](const std::string &name) {

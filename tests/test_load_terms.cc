@@ -202,7 +202,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   check_registered_terms();
   check_water_from_file();

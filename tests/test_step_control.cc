@@ -227,7 +227,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   halving_and_growth();
   cap();
