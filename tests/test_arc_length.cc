@@ -95,7 +95,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   {
     Snap            scalar(0., 1., 1);

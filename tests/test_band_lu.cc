@@ -84,7 +84,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   for (const unsigned int bw : {2u, 4u, 5u, 7u, 9u, 11u, 13u})
     for (const unsigned int n : {bw + 3, 5 * bw + 2})

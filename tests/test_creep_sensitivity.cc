@@ -259,7 +259,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   check_law({{45.}, {2.}, "elastic"});
   check_law({{25., 15., 5.}, {0.2, 2., 20.}, "elastic"});

@@ -183,7 +183,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   check_tableau(esdirk3());
   check_tableau(esdirk4());

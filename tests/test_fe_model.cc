@@ -16,7 +16,7 @@ using namespace cdea;
 using namespace cdea_test;
 
 
-int main(int argc, char **argv)
+CDEA_TEST_MAIN(int argc, char **argv)
 {
   const MpiSession mpi(argc, argv);
   const Scene full = paper_scene({1., 3.}, {{5.}});

@@ -110,7 +110,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   std::cout << "Off by default\n";
   const Parameters defaults = read_parameters(ParameterInput::text(""));

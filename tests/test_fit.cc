@@ -115,7 +115,7 @@ namespace
   }
 } // namespace
 
-int main(int argc, char **argv)
+CDEA_TEST_MAIN(int argc, char **argv)
 {
   const MpiSession mpi(argc, argv);
   const Scene      paper = paper_scene({1., 1.7, 3.}, {{5., 5.}});

@@ -11,7 +11,7 @@
 using namespace cdea;
 using namespace cdea_test;
 
-int main()
+CDEA_TEST_MAIN()
 {
   const MaterialConstants film = paper_film();
   const double mu = film.shear_modulus, jlim = film.jlim, eps = film.permittivity;

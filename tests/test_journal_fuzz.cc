@@ -219,7 +219,7 @@ namespace
   }
 } // namespace
 
-int main(int argc, char **argv)
+CDEA_TEST_MAIN(int argc, char **argv)
 {
   const unsigned int cases = argc > 1 ? unsigned(std::stoul(argv[1])) : 500;
   const unsigned int seed  = argc > 2 ? unsigned(std::stoul(argv[2])) : 7;

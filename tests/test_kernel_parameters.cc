@@ -48,7 +48,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   const MaterialConstants c{25.1e3, 270., 3.98e-11, 1e-3};
   const LawParameter      all[] = {LawParameter::shear_modulus, LawParameter::jlim,

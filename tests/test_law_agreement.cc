@@ -91,7 +91,7 @@ namespace
   }
 } // namespace
 
-int main(int argc, char **argv)
+CDEA_TEST_MAIN(int argc, char **argv)
 {
   const MpiSession           mpi(argc, argv);
   const std::vector<LawCase> laws{

@@ -67,7 +67,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   const MaterialConstants film = paper_film();
   const double            mu = film.shear_modulus, jlim = film.jlim;

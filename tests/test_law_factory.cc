@@ -57,7 +57,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   check(MembraneLaws::names() == std::vector<std::string>{"elastic", "gent-gent", "mooney-rivlin",
                                                          "neo-hooke", "ogden", "viscoelastic"},

@@ -101,7 +101,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   const std::vector<std::string> names = MembraneLaws::names();
   const auto has = [&](const std::string &name) {

@@ -81,7 +81,7 @@ namespace
   }
 } // namespace
 
-int main(int argc, char **argv)
+CDEA_TEST_MAIN(int argc, char **argv)
 {
   const MpiSession mpi(argc, argv);
   check_law("mooney-rivlin", {{"Mooney-Rivlin C2 (kPa)", 2.}}, {"Mooney-Rivlin C2 (kPa)"});

@@ -239,7 +239,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   check_registered_terms();
   check_water_from_file();

@@ -202,7 +202,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   const MaterialConstants film = paper_film();
   check_neo_hooke(film);

@@ -14,7 +14,7 @@
 using namespace cdea;
 using cdea_test::check_close;
 
-int main()
+CDEA_TEST_MAIN()
 {
   const MaterialConstants c{25.1e3, 270., 3.98e-11, 1e-3};
   using Fad  = Sacado::Fad::DFad<double>;

@@ -10,7 +10,7 @@
 using namespace cdea;
 using namespace cdea_test;
 
-int main()
+CDEA_TEST_MAIN()
 {
   const MaterialConstants film = paper_film();
   const double            mu = film.shear_modulus, eps = film.permittivity, H = film.thickness;

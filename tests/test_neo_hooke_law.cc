@@ -12,7 +12,7 @@
 using namespace cdea;
 using namespace cdea_test;
 
-int main()
+CDEA_TEST_MAIN()
 {
   const MaterialConstants film = paper_film();
   const auto              law  = law_named("neo-hooke", film);

@@ -17,7 +17,7 @@
 using namespace cdea;
 using namespace cdea_test;
 
-int main()
+CDEA_TEST_MAIN()
 {
   std::cout << "Bracketed root finder\n";
   {

@@ -46,7 +46,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   const MaterialConstants   film = paper_film();
   const double              mu = film.shear_modulus, eps = film.permittivity, H = film.thickness;

@@ -256,7 +256,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   check_rows();
   check_column_values();

@@ -61,7 +61,7 @@ namespace
   }
 } // namespace
 
-int main(int argc, char **argv)
+CDEA_TEST_MAIN(int argc, char **argv)
 {
   const MpiSession mpi(argc, argv);
   const Scene      pump = paper_scene({1., 1.7, 3.}, {{4., 4.}, {4., 5.}});

@@ -360,7 +360,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   namespace fs = std::filesystem;
   const fs::path base = "test_results_file_out";

@@ -44,7 +44,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   namespace fs = std::filesystem;
   const fs::path base = "test_results_file_limits_out";

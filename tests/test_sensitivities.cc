@@ -212,7 +212,7 @@ namespace
   }
 } // namespace
 
-int main(int argc, char **argv)
+CDEA_TEST_MAIN(int argc, char **argv)
 {
   const MpiSession mpi(argc, argv);
   const Scene one   = paper_scene({1., 3.}, {{5.}});

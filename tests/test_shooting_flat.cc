@@ -18,7 +18,7 @@ using cdea_test::check;
 using cdea_test::check_close;
 using cdea_test::check_rel;
 
-int main()
+CDEA_TEST_MAIN()
 {
   std::cout.precision(10);
   const double kV = 1e3;

@@ -14,7 +14,7 @@
 using namespace cdea;
 using namespace cdea_test;
 
-int main()
+CDEA_TEST_MAIN()
 {
   const Scene scene = paper_scene({1., 3.}, {{8.}});
 

@@ -47,7 +47,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   std::cout.precision(6);
   for (const double tol : {1e-6, 1e-8, 1e-10})

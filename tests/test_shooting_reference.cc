@@ -151,7 +151,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   std::cout.precision(10);
   const double mm = 1e-3, kV = 1e3;

@@ -26,7 +26,7 @@ namespace
 {
 } // namespace
 
-int main(int argc, char **argv)
+CDEA_TEST_MAIN(int argc, char **argv)
 {
   const MpiSession mpi(argc, argv);
   const Scene      scene = paper_scene({1., 3.}, {{8.}});

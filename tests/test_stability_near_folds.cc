@@ -228,7 +228,7 @@ namespace
   }
 } // namespace
 
-int main(int argc, char **argv)
+CDEA_TEST_MAIN(int argc, char **argv)
 {
   const MpiSession mpi(argc, argv);
   std::cout << "Random symmetric band matrices, with and without k g g^T\n";

@@ -30,7 +30,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   // A straight cone, sampled with a ring edge written twice at r = 23.8 mm.
   StepFields cone;

@@ -129,7 +129,7 @@ namespace
 } // namespace
 
 // With --doc: the five frequencies of doc/dynamics.md for each film.
-int main(int argc, char **argv)
+CDEA_TEST_MAIN(int argc, char **argv)
 {
   const bool doc = argc > 1 && std::string(argv[1]) == "--doc";
   small_drive(false, doc ? std::vector<double>{2., 3., 3.5, 4., 5.} : std::vector<double>{2., 5.});

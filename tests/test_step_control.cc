@@ -308,7 +308,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   halving_and_growth();
   cap();

@@ -91,7 +91,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   std::cout.precision(10);
   const Scene        scene; // the paper's actuator

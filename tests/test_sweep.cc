@@ -182,7 +182,7 @@ namespace
   }
 } // namespace
 
-int main(int argc, char **argv)
+CDEA_TEST_MAIN(int argc, char **argv)
 {
   const MpiSession mpi(argc, argv);
   out() << "A. value lists and sweep input\n";

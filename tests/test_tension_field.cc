@@ -34,7 +34,7 @@ namespace
   };
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   const MaterialConstants c{25.1e3, 270., 3.98e-11, 1e-3};
 

@@ -61,7 +61,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   const Parameters defaults = read_parameters(ParameterInput::text(""));
   check(defaults.time.scheme == TimeMethod::esdirk4, "the default scheme is ESDIRK4");

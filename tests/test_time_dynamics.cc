@@ -75,7 +75,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   // The FE residual and tangent of a time step (viscous update and both
   // inertia terms, pump scene with its water load) against differences.

@@ -96,7 +96,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   Scene scene = cdea::paper_scene({1., 3.}, {{voltage * 1e-3}});
   scene.mass  = 0.;

@@ -85,7 +85,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   // Network A alone, quasi-statically.
   double elastic = 0.;

@@ -75,7 +75,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   const TwoNetworkGentLaw law(network_a, network_b);
   const std::vector<Point> points = {

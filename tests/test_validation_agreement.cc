@@ -34,7 +34,7 @@
 using namespace cdea;
 using namespace cdea_test;
 
-int main(int argc, char **argv)
+CDEA_TEST_MAIN(int argc, char **argv)
 {
   const MpiSession mpi(argc, argv);
   const auto       start = std::chrono::steady_clock::now();

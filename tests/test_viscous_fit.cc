@@ -171,7 +171,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   check_convention();
   check_time_window();
