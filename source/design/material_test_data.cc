@@ -191,12 +191,13 @@ namespace cdea
 
   void declare_specimen_parameters(ParameterDeclarations &prm)
   {
-    prm.declare_text("Calibration", "Specimen test", "uniaxial",
-                     "The test of raw machine data (time_s, displacement_mm, force_N): "
-                     "uniaxial, equibiaxial or pure shear.");
+    prm.enter_subsection("Calibration");
+    prm.add_text("Specimen test", "uniaxial",
+                 "The test of raw machine data (time_s, displacement_mm, force_N): "
+                 "uniaxial, equibiaxial or pure shear.");
     for (const auto &[entry, meaning] : specimen_sizes)
-      prm.declare_number("Calibration", entry, "0",
-                         std::string(meaning) + " of raw machine data (0: not given).");
+      prm.add_number(entry, "0", std::string(meaning) + " of raw machine data (0: not given).");
+    prm.leave_subsection();
   }
 
   TestSpecimen parse_specimen(const ParameterValues &values)
