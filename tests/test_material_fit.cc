@@ -473,7 +473,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   reader();
   specimen_entries();

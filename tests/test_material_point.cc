@@ -338,7 +338,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   elastic_closed_forms();
   prony_relaxation();

@@ -141,7 +141,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   const double tolerance = 1e-6;
   const std::vector<TestKind> kinds{TestKind::uniaxial, TestKind::equibiaxial, TestKind::pure_shear};

@@ -154,7 +154,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   const MaterialConstants film{25.1e3, 270., 3.98e-11, 1e-3};
   const std::vector<ViscousNetwork> branches{{30e3, 80., 0.2}, {10e3, 80., 1.}, {5e3, 80., 10.}};
