@@ -7,6 +7,7 @@ namespace cdea
 {
   using dealii::ParameterHandler;
   using dealii::Patterns::Anything;
+  using dealii::Patterns::Bool;
   using dealii::Patterns::Double;
   using dealii::Patterns::Integer;
   using dealii::Patterns::Selection;
@@ -35,6 +36,9 @@ namespace cdea
                         "Voltage of the inner ring; both rings are first raised to it together.");
       prm.declare_entry("Outer voltage range (kV)", "5, 8, 0.05", Anything(),
                         "from, to, step of the outer ring's voltage in the map.");
+      prm.declare_entry("Confirm long sweep", "false", Bool(),
+                        "A map of more than 1e6 points (edge values x outer voltages) is "
+                        "refused unless this is true.");
       prm.leave_subsection();
     }
 
@@ -44,6 +48,7 @@ namespace cdea
       ring_edge_values_text    = prm.get("Ring edge values (r/a)");
       const std::string inner  = prm.get("Inner voltage (kV)");
       outer_voltage_range_text = prm.get("Outer voltage range (kV)");
+      confirm_long             = prm.get_bool("Confirm long sweep");
       prm.leave_subsection();
       const auto v = parse_number_list(inner, "Sweep/Inner voltage (kV)");
       if (v.size() != 1 || v[0] < 0.)

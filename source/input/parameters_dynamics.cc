@@ -8,6 +8,7 @@ namespace cdea
   using dealii::Patterns::Double;
   using dealii::Patterns::Anything;
   using dealii::Patterns::Integer;
+  using dealii::Patterns::Bool;
   using dealii::Patterns::Selection;
 
   namespace parameters
@@ -99,6 +100,9 @@ namespace cdea
                         "amplitude lies between the quasi-static one divided by this factor "
                         "and the quasi-static one times it; the usable band is the longest run "
                         "of consecutive usable frequencies.");
+      prm.declare_entry("Confirm long sweep", "false", Bool(),
+                        "A sweep of more than 1000 frequencies (each a periodic steady state "
+                        "of seconds to minutes) is refused unless this is true.");
       prm.leave_subsection();
     }
 
@@ -111,6 +115,7 @@ namespace cdea
       log_spacing          = prm.get("Spacing") == "log";
       frequency_list       = prm.get("Frequencies (Hz)");
       usable_factor        = prm.get_double("Usable stroke factor");
+      confirm_long         = prm.get_bool("Confirm long sweep");
       prm.leave_subsection();
     }
   } // namespace parameters

@@ -39,6 +39,7 @@ namespace cdea
       std::string ring_edge_values_text;    ///< "1.2, 1.25, 1.3, ..., 2.6"
       double      inner_voltage_kV;
       std::string outer_voltage_range_text; ///< "from, to, step"
+      bool        confirm_long;             ///< more than 1e6 map points allowed
       static void declare(dealii::ParameterHandler &prm);
       void        parse(dealii::ParameterHandler &prm);
     };

@@ -48,6 +48,7 @@ namespace cdea
       bool         log_spacing;
       std::string  frequency_list; ///< "Frequencies (Hz)" as given; empty: the range
       double       usable_factor;
+      bool         confirm_long; ///< more than 1000 frequencies allowed
       static void  declare(dealii::ParameterHandler &prm);
       void         parse(dealii::ParameterHandler &prm);
     };
