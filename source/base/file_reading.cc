@@ -14,17 +14,15 @@ namespace cdea
 {
   namespace
   {
+    /// Why a file of @p mode is not read: "it is a directory", "it is not
+    /// a regular file (a FIFO)", ...
     std::string kind_of(const mode_t mode)
     {
       if (S_ISDIR(mode))
         return "it is a directory";
-      if (S_ISFIFO(mode))
-        return "it is not a regular file (a FIFO)";
-      if (S_ISCHR(mode) || S_ISBLK(mode))
-        return "it is not a regular file (a device)";
-      if (S_ISSOCK(mode))
-        return "it is not a regular file (a socket)";
-      return "it is not a regular file";
+      if (S_ISLNK(mode) || S_ISREG(mode))
+        return "it is " + file_kind(mode);
+      return "it is not a regular file (" + file_kind(mode) + ")";
     }
 
     std::string size_text(const std::size_t bytes)
@@ -80,8 +78,7 @@ namespace cdea
           0 &&
         !S_ISREG(named.st_mode))
       {
-        r.error = !options.follow_links && S_ISLNK(named.st_mode) ? "it is a symbolic link" :
-                                                                     kind_of(named.st_mode);
+        r.error = kind_of(named.st_mode);
         return r;
       }
     // O_NONBLOCK: opening a FIFO without a writer must not wait for one.
@@ -129,6 +126,22 @@ namespace cdea
     struct stat st = {};
     return (follow_links ? ::stat(path.c_str(), &st) : ::lstat(path.c_str(), &st)) == 0 &&
            S_ISREG(st.st_mode);
+  }
+
+  std::string file_kind(const unsigned int st_mode)
+  {
+    const mode_t mode = mode_t(st_mode);
+    if (S_ISLNK(mode))
+      return "a symbolic link";
+    if (S_ISDIR(mode))
+      return "a directory";
+    if (S_ISFIFO(mode))
+      return "a FIFO";
+    if (S_ISCHR(mode) || S_ISBLK(mode))
+      return "a device";
+    if (S_ISSOCK(mode))
+      return "a socket";
+    return "a regular file";
   }
 
   bool has_extension(const std::string &path, const std::string &extension)

@@ -33,14 +33,6 @@ namespace cdea
       return path;
     }
 
-    std::vector<std::string> names_of(const std::vector<Open> &open)
-    {
-      std::vector<std::string> names;
-      for (const Open &o : open)
-        names.push_back(o.name);
-      return names;
-    }
-
     /// One logical line of prm text as deal.II's ParameterHandler reads it
     /// (parse_input(), scan_line()): the physical lines trimmed, a line
     /// ending in '\' joined with the next, numbered by its last physical

@@ -36,10 +36,6 @@ namespace cdea::files
     std::string file, why;
   };
 
-  /// "a symbolic link", "a directory", "a FIFO", "a device", "a socket",
-  /// "a regular file".
-  std::string kind_of(mode_t mode);
-
   /// "<path>: <strerror(error)>".
   std::string system_message(const std::string &path, int error);
 } // namespace cdea::files

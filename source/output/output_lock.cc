@@ -1,4 +1,5 @@
 // The lock of an output file and the claim of its folder (safe_files.h).
+#include <cdea/base/file_reading.h>
 #include <cdea/output/safe_files.h>
 
 #include "folder_entry.h"
@@ -65,7 +66,7 @@ namespace cdea
       struct stat before = {};
       if (at.stat(before) && !S_ISREG(before.st_mode))
         {
-          why = "the lock file " + name + " is " + files::kind_of(before.st_mode) +
+          why = "the lock file " + name + " is " + file_kind(before.st_mode) +
                 ", not cdea's: remove it";
           return -1;
         }
@@ -83,7 +84,7 @@ namespace cdea
         {
           why = "the lock file " + name + " is " +
                 (S_ISREG(opened.st_mode) ? std::string("a hard link to another file") :
-                                           files::kind_of(opened.st_mode)) +
+                                           file_kind(opened.st_mode)) +
                 ", not cdea's: remove it";
           ::close(f);
           return -1;

@@ -1,5 +1,6 @@
 // Whole files replaced atomically, alone or in groups, and the names of
 // cdea's side files (safe_files.h).
+#include <cdea/base/file_reading.h>
 #include <cdea/output/safe_files.h>
 
 #include "folder_entry.h"
@@ -56,21 +57,6 @@ namespace cdea
       return ::unlinkat(folder, entry.c_str(), 0) == 0 || errno == ENOENT;
     }
 
-    std::string kind_of(const mode_t mode)
-    {
-      if (S_ISLNK(mode))
-        return "a symbolic link";
-      if (S_ISDIR(mode))
-        return "a directory";
-      if (S_ISFIFO(mode))
-        return "a FIFO";
-      if (S_ISCHR(mode) || S_ISBLK(mode))
-        return "a device";
-      if (S_ISSOCK(mode))
-        return "a socket";
-      return "a regular file";
-    }
-
     std::string system_message(const std::string &path, const int error)
     {
       return path + ": " + std::strerror(error);
@@ -91,7 +77,7 @@ namespace cdea
       struct stat st = {};
       if (!at.stat(st, entry) || S_ISREG(st.st_mode))
         return "";
-      return "it is " + files::kind_of(st.st_mode) +
+      return "it is " + file_kind(st.st_mode) +
              " (cdea replaces only a regular file or nothing; remove it or choose another name)";
     }
 

@@ -47,6 +47,10 @@ namespace cdea
   /// @p follow_links is false).
   bool is_regular_file(const std::string &path, bool follow_links = true);
 
+  /// What a st_mode says a file is: "a regular file", "a directory", "a
+  /// symbolic link", "a FIFO", "a device", "a socket".
+  std::string file_kind(unsigned int st_mode);
+
   /// Whether the file name of @p path ends in @p extension (".csv", ".prm"),
   /// letters compared without case: cdea quotes lines of its own kinds of
   /// files in messages, and reads no other kind where it would.
