@@ -282,9 +282,11 @@ namespace cdea
                                    "(remove it)");
         fs::remove_all(partial, error);
       }
-    if (::mkdir(partial.c_str(), 0755) != 0)
+    if (::mkdir(partial.c_str(), 0755) != 0 || ::lstat(partial.c_str(), &st) != 0)
       throw std::runtime_error("cannot create the ParaView folder '" + partial +
                                "': " + std::strerror(errno));
+    folder_device = st.st_dev;
+    folder_inode  = st.st_ino;
   }
 
   bool ParaViewWriter::older_output_exists() const
@@ -321,6 +323,10 @@ namespace cdea
         std::to_string(segments) + " segments would take " + std::to_string(long(bytes * 1e-6)) +
         " MB, more than the " + std::to_string(long(max_step_file_bytes * 1e-6)) +
         " MB allowed per step: lower Output/ParaView segments");
+    if (struct stat st = {}; ::lstat(folder(true).c_str(), &st) != 0 || !S_ISDIR(st.st_mode) ||
+                             st.st_dev != folder_device || st.st_ino != folder_inode)
+      throw std::runtime_error("the ParaView folder '" + folder(true) +
+                               "' was removed or replaced during the run");
     const double time = next_time(tau, last_tau, times.empty() ? nan : times.back(), turned);
     last_tau          = tau;
     std::ostringstream file;

@@ -61,8 +61,9 @@ namespace cdea
     /// run cut short leaves it and keeps its own partial output.
     bool older_output_exists() const;
 
-    /// The size of the VTU file of a step of @p samples samples (bytes,
-    /// within a few per cent), and the largest allowed: a step's file is
+    /// The size of the VTU file of a step of @p samples samples (bytes; at
+    /// most about 10 % above it: 423 kB for the 385 kB of prm/paraview.prm's
+    /// steps), and the largest allowed: a step's file is
     /// built in memory, so a larger one is refused (write_step() throws, and
     /// the input check refuses it up front: input/validation.cc).
     static double           step_file_bytes(std::size_t samples, unsigned int segments);
@@ -77,6 +78,9 @@ namespace cdea
   private:
     std::string         stem, name;
     unsigned int        segments;
+    /// The partial folder as made (device, inode): one swapped for another
+    /// or a link during the run is not written into.
+    unsigned long long  folder_device = 0, folder_inode = 0;
     std::vector<double> times;
     double              last_tau = 0.;
     bool                turned   = false;
