@@ -122,13 +122,14 @@ namespace cdea
       }
 
       /// The work before it starts: the frequencies and the file's size
-      /// (about 160 bytes a frequency and 12 kB of names and descriptions).
+      /// (12 doubles and 5 integers a frequency, 19.5 kB of names and
+      /// descriptions: 21.5 kB for prm/frequency-sweep.prm's 17).
       void print_work() const
       {
         const std::size_t n = settings.frequencies.size();
         std::cout << "work: " << n << " periodic steady states (seconds each; the time left "
                   << "is shown as they are done), results about "
-                  << format_bytes(12e3 + 160. * double(n)) << '\n';
+                  << format_bytes(19.5e3 + 116. * double(n)) << '\n';
       }
 
       void print_header() const

@@ -96,12 +96,14 @@ namespace cdea
                   << "FE model: degree " << p.discretization.polynomial_degree << ", "
                   << p.discretization.elements_per_ring << " elements per ring; "
                   << ranks_text() << " (rows round-robin); writing " << path << '\n';
-        // The work before it starts: the file holds about 41 bytes a point
-        // and 23 kB of names and descriptions (measured).
-        const double points = double(s.ring_edge_values.size()) * s.outer_voltages.size();
+        // The work before it starts: the file holds about 40 bytes a point,
+        // 340 a layout and 20 kB of names and descriptions (measured: 101 kB
+        // for prm/sweep-inner5.prm's 29 x 61, 11.7 MB for 29 x 10001).
+        const double rows = double(s.ring_edge_values.size()),
+                     points = rows * double(s.outer_voltages.size());
         std::cout << "work: " << static_cast<unsigned long long>(points)
-                  << " map points (the progress shows the time left), "
-                  << "results about " << format_bytes(23e3 + 41. * points) << std::endl;
+                  << " map points (the progress shows the time left), results about "
+                  << format_bytes(20e3 + 40. * points + 340. * rows) << std::endl;
       }
 
       /// Rank 0: the map file (unless no row was computed before a stop),
