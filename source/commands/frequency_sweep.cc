@@ -127,9 +127,10 @@ namespace cdea
       void print_work() const
       {
         const std::size_t n = settings.frequencies.size();
+        // (flushed: seen before the work starts, also through a pipe or in a file)
         std::cout << "work: " << n << " periodic steady states (seconds each; the time left "
                   << "is shown as they are done), results about "
-                  << format_bytes(19.5e3 + 116. * double(n)) << '\n';
+                  << format_bytes(19.5e3 + 116. * double(n)) << std::endl;
       }
 
       void print_header() const
