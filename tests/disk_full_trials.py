@@ -12,7 +12,12 @@ same name, and requires:
     turns into a file with every printed step once there is room (checked on
     a copy outside the tmpfs);
   - no lock file left.
-Usage: disk_full_trials.py CDEA_EXECUTABLE SOURCE_DIR TRIALS SEED
+The frequency sweep, the response and the chart write files of about the
+same size each time: their trials fill the disk after the older file, leaving
+less room than it takes, and require the older file kept, exit 2 and no
+partial file (those commands keep nothing of a file that does not fit).
+Usage: disk_full_trials.py CDEA_EXECUTABLE SOURCE_DIR TRIALS SEED [CASES]
+(CASES: names of CASES below separated by ',', default all)
 """
 import hashlib
 import os
@@ -29,18 +34,23 @@ exe, src = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
 trials, seed = int(sys.argv[3]), int(sys.argv[4])
 STEP = re.compile(r"^\s*(\d+)\s+(pre-stretch|dead load|voltage|time)\s", re.M)
 
-# (older: the short run; newer: the long one; the file; kind)
-CASES = [
-    (["run", "prm/default.prm", "--set", "Solver/Voltage increment (kV)=0.5"],
-     ["run", "prm/default.prm", "--set", "Solver/Voltage increment (kV)=%s"],
-     "default.h5", "steps"),
-    (["run", "prm/pump-time.prm", "--set", "Time/Cycles=1", "--set", "Time/Time step (s)=0.05"],
-     ["run", "prm/pump-time.prm", "--set", "Time/Cycles=2", "--set", "Time/Time step (s)=%s"],
-     "pump-time.h5", "steps"),
-    (["sweep", "prm/sweep-inner5.prm", "--set", "Sweep/Ring edge values (r/a)=1.5, 2"],
-     ["sweep", "prm/sweep-inner5.prm", "--set", "Sweep/Outer voltage range (kV)=5, 8, %s"],
-     "sweep-inner5_map.h5", "map"),
-]
+# name: (older: the short run; newer: the long one; the file; kind)
+CASES = {
+    "run": (["run", "prm/default.prm", "--set", "Solver/Voltage increment (kV)=0.5"],
+            ["run", "prm/default.prm", "--set", "Solver/Voltage increment (kV)=%s"],
+            "default.h5", "steps"),
+    "time": (["run", "prm/pump-time.prm", "--set", "Time/Cycles=1", "--set", "Time/Time step (s)=0.05"],
+             ["run", "prm/pump-time.prm", "--set", "Time/Cycles=2", "--set", "Time/Time step (s)=%s"],
+             "pump-time.h5", "steps"),
+    "sweep": (["sweep", "prm/sweep-inner5.prm", "--set", "Sweep/Ring edge values (r/a)=1.5, 2"],
+              ["sweep", "prm/sweep-inner5.prm", "--set", "Sweep/Outer voltage range (kV)=5, 8, %s"],
+              "sweep-inner5_map.h5", "map"),
+    "frequency-sweep": (["frequency-sweep", "prm/frequency-sweep.prm", "--set",
+                         "Frequency sweep/Frequencies (Hz)=0.01, 0.1"], None,
+                        "frequency-sweep_frequency_sweep.h5", "fill"),
+    "response": (["response", "prm/response.prm"], None, "response_response.h5", "fill"),
+    "chart": (["chart", "prm/fit-creep.prm"], None, "fit-creep_chart.h5", "fill"),
+}
 
 
 def digest(path):
@@ -61,10 +71,24 @@ def run(args, cwd):
     return done.returncode, done.stdout.decode(errors="replace"), done.stderr.decode(errors="replace")
 
 
-def trial(index, work, disk):
+def fill(disk, rng, room):
+    """A file filling the disk up to fewer than @p room bytes free."""
+    with open(os.path.join(disk, "filler"), "wb") as f:
+        try:
+            while True:
+                free = os.statvfs(disk).f_bavail * os.statvfs(disk).f_frsize
+                if free < room:
+                    return
+                f.write(b"\0" * min(free - rng.randint(0, room - 1), 1 << 20))
+                f.flush()
+        except OSError:
+            return
+
+
+def trial(index, work, disk, cases):
     rng = random.Random(seed * 1000003 + index)
-    older_args, newer_args, name, kind = CASES[index % len(CASES)]
-    size_kb = rng.randint(300, 1200) if kind != "map" else rng.randint(40, 120)
+    older_args, newer_args, name, kind = CASES[cases[index % len(cases)]]
+    size_kb = {"map": rng.randint(40, 120), "fill": 1024}.get(kind, rng.randint(300, 1200))
     subprocess.run(["mount", "-t", "tmpfs", "-o", f"size={size_kb}k", "tmpfs", disk], check=True)
     try:
         out = ["--set", "Output/Directory=" + disk]
@@ -73,10 +97,14 @@ def trial(index, work, disk):
             return None, f"the older file does not fit in {size_kb} kB"
         target = os.path.join(disk, name)
         before = digest(target)
+        if kind == "fill":  # the same command again, with less room than its file
+            fill(disk, rng, os.path.getsize(target))
+            newer_args, value = older_args, ""
         # From runs whose journal fits (the file does not) to runs whose
         # journal fills the disk.
         value = {"steps": rng.choice(["0.25", "0.1", "0.05", "0.01", "0.002"]) if "pump" not in name
-                 else rng.choice(["0.02", "0.01", "0.005"]), "map": rng.choice(["0.01", "0.02"])}[kind]
+                 else rng.choice(["0.02", "0.01", "0.005"]), "map": rng.choice(["0.01", "0.02"]),
+                 "fill": ""}[kind]
         rc, text, err = run([a.replace("%s", value) for a in newer_args] + out, work)
         problems = []
         if rc == 0:
@@ -94,7 +122,9 @@ def trial(index, work, disk):
         where = "nothing"
         if kind == "steps":
             where = check_partial(partial, target, text, work, problems)
-        return problems, f"{size_kb} kB: {where}"
+        elif kind == "fill" and os.path.exists(partial):
+            problems.append("a partial file of a command that keeps none")
+        return problems, f"{cases[index % len(cases)]}, {size_kb} kB: {where}"
     finally:
         subprocess.run(["umount", disk], check=True)
 
@@ -133,10 +163,11 @@ def main():
         print("skipped: cannot mount a tmpfs here")
         return 0
     subprocess.run(["umount", disk], check=True)
+    cases = sys.argv[5].split(",") if len(sys.argv) > 5 else list(CASES)
     failures = done = 0
     index = 0
     while done < trials and index < 5 * trials:
-        problems, what = trial(index, work, disk)
+        problems, what = trial(index, work, disk, cases)
         index += 1
         if problems is None:
             continue  # not a full-disk trial at this size; draw another

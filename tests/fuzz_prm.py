@@ -8,7 +8,11 @@ LIMIT seconds; a run still going then gets SIGINT and must stop within GRACE
 seconds at its next step. A sweep file (prm/sweep*.prm) is mostly given to
 `cdea sweep`, its map cut to 2 x 2 points after the mutations (so that a
 case takes seconds): a sweep has SWEEP_LIMIT seconds and no SIGINT, and one
-still going then is a hang. A case fails on
+still going then is a hang. prm/frequency-sweep.prm mostly goes to `cdea
+frequency-sweep` (two frequencies), prm/response.prm often to `cdea
+response`, and any file now and then to `cdea chart`; they get SIGINT after
+LIMIT seconds as a run does and must leave no lock, journal or temporary
+file. A case fails on
   - a crash (exit by a signal, but for our SIGINT before the first step or
     after the results file was written) or an exit code other than 0, 1, 2;
   - a hang: no exit GRACE seconds after SIGINT, or the last 20 printed steps
@@ -55,6 +59,8 @@ sweep_limit = float(sys.argv[7]) if len(sys.argv) > 7 else 300.0
 # Appended to a sweep case after its mutations: a 2 x 2 map (the later entry wins).
 SMALL_MAP = (b"\nsubsection Sweep\n  set Ring edge values (r/a) = 1.5, 2\n"
              b"  set Outer voltage range (kV) = 5, 5.5, 0.5\nend\n")
+# Appended to a frequency-sweep case: two frequencies (seconds).
+SHORT_SWEEP = b"\nsubsection Frequency sweep\n  set Frequencies (Hz) = 1, 3\nend\n"
 inputs = sorted(glob.glob(os.path.join(src, "prm", "*.prm")))
 texts = {os.path.basename(p): open(p, "rb").read() for p in inputs}
 
@@ -121,6 +127,16 @@ def run_case(index):
     if name.startswith("sweep") and rng.random() < 0.7:
         command = "sweep"
         data += SMALL_MAP
+    # The commands added last, as run is: a short frequency sweep, the
+    # response, and now and then the material chart of any file.
+    other = rng.random()
+    if name == "frequency-sweep.prm" and other < 0.7:
+        command = "frequency-sweep"
+        data += SHORT_SWEEP
+    elif name == "response.prm" and other < 0.5:
+        command = "response"
+    elif other < 0.04:
+        command = "chart"
     work = tempfile.mkdtemp(prefix="cdea-fuzz-")
     with open(os.path.join(work, "case.prm"), "wb") as f:
         f.write(data)
@@ -164,11 +180,11 @@ def run_case(index):
         problems.append(f"{len(stderr)} bytes on stderr")
     if outcome and len(steps) >= 20 and len(set(steps[-20:])) == 1:
         problems.append("no progress: the last 20 steps are at the same load")
-    if command == "sweep" and rc in (0, 2) and not outcome:
+    if command not in ("run", "shoot") and rc in (0, 2):
         for root, _, files in os.walk(work):
             for f in files:
-                if f.endswith((".lock", ".journal", ".tmp")):
-                    problems.append(f"sweep left {f} behind")
+                if f.endswith((".lock", ".journal", ".tmp", ".older")):
+                    problems.append(f"{command} left {f} behind")
     left = sorted(set(os.listdir(work)) - {"case.prm", "out.log", "err.log"})
     if rc == 1 and left:
         problems.append(f"exit 1 left {left} behind")

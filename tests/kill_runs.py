@@ -6,9 +6,9 @@ After every kill, with older complete results at the same path:
             is readable (h5py, h5dump) and agrees with the printed steps;
             `cdea recover` rebuilds a readable file beside it holding every
             step printed before the kill;
-  SIGINT,   the run exits 2 saying "interrupted"; its file replaced the older
-  SIGTERM   one and holds every printed step; no journal, lock or checkpoint
-            is left.
+  SIGINT,   the run exits 2 saying "interrupted"; the older file is unchanged
+  SIGTERM   byte for byte and the run's steps, every printed one, are beside
+            it in out/long.partial.h5; no journal or lock is left.
 A run that ended before its signal must have exit code 0 and a complete file;
 one killed after writing its file whole (while shutting down) a complete file;
 one killed during its start (before its handlers) must have left the older
@@ -259,12 +259,14 @@ def trial(number, sig, moment, interval, fraction):
             fail(tag + ": recovery changed the older results")
     else:
         outcome = kind = "stopped cleanly"
-        data = readable(target)
+        data = readable("out/long.partial.h5")
         if rc != 2 or "interrupted" not in err:
             fail(tag + f": expected exit 2 and 'interrupted', stderr: {err.strip()}")
+        elif sha(target) != older:
+            fail(tag + ": the interrupted run changed the older results")
         elif not holds(data, printed):
-            fail(tag + ": the file lacks printed steps or is unreadable")
-        rest = [f for f in os.listdir("out") if f != "long.h5"]
+            fail(tag + ": long.partial.h5 lacks printed steps or is unreadable")
+        rest = [f for f in os.listdir("out") if f not in ("long.h5", "long.partial.h5")]
         if rest:
             fail(tag + f": left behind {rest}")
     print(f"  {tag}: {outcome}; files before clean-up: {', '.join(left)}")

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Every command as safe as `run` (issue 22): input that names the line or
-# parameter (subsection/end, nan/inf, '#' in a name, FIFOs and devices as
-# input), `cdea fit` on data its start cannot reach (no crash: exit 1, the
+# Every command as safe as `run` (issues 22 and 31): input that names the
+# line or parameter (subsection/end, nan/inf, '#' in a name, FIFOs and devices
+# as input, includes and their loops, CR line ends, bounds of the work,
+# no line quoted of a file that is not cdea's), `cdea fit` on data its start cannot reach (no crash: exit 1, the
 # point named, an older fit file kept) and on bad CSVs, write errors on
 # stdout (exit 2), `cdea recover` on a FIFO, a device, a directory, a live
 # journal, a journal appended to itself and a checkpoint without a journal.
@@ -41,8 +42,97 @@ expect "a 1 Hz sine in 1 s steps" 1 "Time/Time step (s) = 1 is too coarse for th
 [ ! -e results ] && ok "nothing written for bad input" || fail "bad input wrote $(ls results)"
 mkfifo fifo.prm
 expect "a FIFO as parameter file" 1 "it is not a regular file (a FIFO)" "$exe" run fifo.prm
-printf 'include /dev/zero\n' > inc.prm
-expect "include of a device" 1 "cannot include '/dev/zero': it is not a regular file (a device)" "$exe" run inc.prm
+ln -s /dev/zero zero.prm && printf 'include zero.prm\n' > inc.prm
+expect "include of a device" 1 "cannot include 'zero.prm': it is not a regular file (a device)" "$exe" run inc.prm
+
+# Issue 31: hostile parameter and table files (items 1, 2, 7, 8).
+# nothing_quoted LABEL: stderr quotes no line of /etc/passwd
+nothing_quoted() { ! grep -q "root:" err.txt && ok "$1: no line of the file quoted" || fail "$1 quoted: $(cat err.txt)"; }
+table=(prm/response.prm --set Time/Waveform=table)
+expect "Table file /dev/zero" 1 "Time/Table file '/dev/zero': the table must be a CSV file whose name ends in .csv" \
+  "$exe" run "${table[@]}" --set 'Time/Table file=/dev/zero'
+ln -s /dev/zero zero.csv
+expect "Table file: a link to /dev/zero" 1 "cannot read 'zero.csv' (relative to the working directory: $PWD/zero.csv): it is not a regular file (a device)" \
+  "$exe" run "${table[@]}" --set 'Time/Table file=zero.csv'
+mkfifo table.csv
+expect "Table file: a FIFO" 1 "cannot read 'table.csv' (relative to the working directory: $PWD/table.csv): it is not a regular file (a FIFO)" \
+  "$exe" run "${table[@]}" --set 'Time/Table file=table.csv'
+expect "Table file /etc/passwd" 1 "the table must be a CSV file" "$exe" run "${table[@]}" --set 'Time/Table file=/etc/passwd'
+nothing_quoted "Table file /etc/passwd"
+expect "fit data /etc/passwd" 1 "cannot read data file '/etc/passwd': the data must be a CSV file whose name ends in .csv" \
+  "$exe" fit prm/fit-example.prm /etc/passwd
+nothing_quoted "fit data /etc/passwd"
+printf 'include self.prm\n' > self.prm
+expect "a file that includes itself" 1 "in parameter file 'self.prm': line 1: cannot include 'self.prm': it is this file itself, an include loop: self.prm line 1 -> self.prm" \
+  "$exe" run self.prm
+printf 'include b.prm\n' > a.prm
+printf 'subsection Loading\n  include a.prm\nend\n' > b.prm
+expect "two files that include each other" 1 "in parameter file 'b.prm' (included from a.prm line 1): line 2: cannot include 'a.prm': it is 'a.prm', which includes this file, an include loop: a.prm line 1 -> b.prm line 2 -> a.prm" \
+  "$exe" run a.prm
+for k in $(seq 0 17); do printf 'include d%s.prm\n' $((k + 1)) > d$k.prm; done
+expect "includes 17 deep" 1 "cannot include 'd17.prm': includes nest more than 16 deep: d0.prm line 1 -> " "$exe" run d0.prm
+printf 'include /etc/passwd\n' > pw.prm
+expect "include /etc/passwd" 1 "cannot include '/etc/passwd': only a parameter file (a name ending in .prm) can be included" \
+  "$exe" run pw.prm
+nothing_quoted "include /etc/passwd"
+# A bare CR after a comment no longer swallows the next line (a bad mass
+# there is found), nor does CR LF; an error names its line in either file.
+printf '# a note\rsubsection Loading\r  set Mass (g) = -5\rend\r' > cr.prm
+expect "bare CR line ends" 1 "Loading/Mass (g) must be zero or positive, got -5" "$exe" run cr.prm
+printf '# a note\r\nsubsection Loading\r\n  set Mass (g) = nan\r\nend\r\n' > crlf.prm
+expect "CR LF line ends" 1 "in parameter file 'crlf.prm': line 3: Loading/Mass (g) must be a finite number, got 'nan'" "$exe" run crlf.prm
+printf 'subsection Output\n  set Base name = run#2\nend\n' > named.prm
+printf '# the output\ninclude named.prm\n' > main.prm
+expect "'#' in an included name" 1 "in parameter file 'named.prm' (included from main.prm line 2): line 2: Output/Base name = 'run#2': '#' starts a comment" \
+  "$exe" run main.prm
+printf 'subsection Loading\n  set Masss (g) = 2\nend\n' > typo.prm
+printf '# one\n# two\ninclude typo.prm\n' > outer.prm
+expect "an error in an included file" 1 "in parameter file 'typo.prm' (included from outer.prm line 3): Line <2> of file <typo.prm>: No entry with name <Masss (g)>" \
+  "$exe" run outer.prm
+printf 'subsection Loading\n  include mass.prm\nend\n' > sub.prm
+printf 'set Mass (g) = 300\r\n' > mass.prm
+"$exe" run sub.prm --set 'Solver/Voltage increment (kV)=1' --set 'Output/Directory=inc' > out.txt 2> err.txt \
+  && "$PYTHON" -c "import h5py; p = h5py.File('inc/default.h5')['/'].attrs['parameters']; assert 'set Mass (g)        = 300' in p, p" \
+  && ok "an include inside a subsection with CR LF ends: its entry set (exit 0)" || fail "include in a subsection: $(cat err.txt)"
+# Bounds: ParaView output (3600 segments x 4000 elements per ring), a frequency sweep
+# of 100000 frequencies without its confirmation.
+expect "ParaView output of 37 GB a step" 1 "Output/ParaView segments = 3600 with 64000 samples per step: a step's ParaView file would take about 37095 MB, more than the 256 MB allowed" \
+  "$exe" run prm/paraview.prm --set 'Output/ParaView segments=3600' --set 'Discretization/Elements per ring=4000'
+expect "100000 frequencies" 1 "Frequency sweep: 100000 frequencies are more than 1000 (each takes seconds or more: hours in all): set Frequency sweep/Confirm long sweep = true" \
+  "$exe" frequency-sweep prm/frequency-sweep.prm --set 'Frequency sweep/Frequencies (Hz)=' --set 'Frequency sweep/Frequencies=100000'
+expect "100001 frequencies" 1 "Frequency sweep/Frequencies must be between 1 and 100000, got 100001" \
+  "$exe" frequency-sweep prm/frequency-sweep.prm --set 'Frequency sweep/Frequencies (Hz)=' --set 'Frequency sweep/Frequencies=100001'
+many_edges=(--set 'Sweep/Ring edge values (r/a)=1.2, 1.21, ..., 2.6' --set 'Sweep/Outer voltage range (kV)=5, 8, 0.0003')
+expect "a map of 1.4e6 points" 1 "the map would have 1.41014e+06 points, more than 1e+06 (minutes to hours of work): set Sweep/Confirm long sweep = true" \
+  "$exe" sweep prm/sweep-inner5.prm "${many_edges[@]}"
+expect "a map of 1.4e7 points" 1 "the map would have 1.40503e+07 points (281 x 50001), more than the 1e+07 it may hold in memory" \
+  "$exe" sweep prm/sweep-inner5.prm --set 'Sweep/Ring edge values (r/a)=1.2, 1.205, ..., 2.6' \
+  --set 'Sweep/Outer voltage range (kV)=5, 8, 0.00006' --set 'Sweep/Confirm long sweep=true'
+# confirmed LABEL PATTERN FILE ARGS...: the confirmed long work starts, prints
+# its estimate first, and stops cleanly on SIGTERM (a background job of a
+# script ignores SIGINT), FILE (readable) all it leaves
+confirmed() {
+  local label=$1 pattern=$2 file=$3; shift 3
+  rm -rf long
+  "$real_exe" "$@" --set Output/Directory=long > out.txt 2> err.txt &
+  local pid=$! rc
+  for _ in $(seq 600); do grep -q "^work: " out.txt && break; sleep 0.05; done
+  sleep 1.5 && kill -TERM $pid
+  wait $pid
+  rc=$?
+  if [ $rc -eq 2 ] && grep -q -- "$pattern" out.txt && grep -q "interrupted by SIGTERM" err.txt \
+     && [ "$(ls long)" = "$file" ] && "$PYTHON" -c "import h5py; h5py.File('long/$file')"; then
+    ok "$label: $(grep -m1 '^work: ' out.txt | head -c 120); $(grep -m1 interrupted err.txt | head -c 120)"
+  else
+    fail "$label: exit $rc, $(grep -m1 '^work' out.txt), $(tail -c 300 err.txt), $(ls long)"
+  fi
+}
+confirmed "1001 frequencies confirmed" "^work: 1001 periodic steady states" frequency-sweep_frequency_sweep.h5 \
+  frequency-sweep prm/frequency-sweep.prm --set 'Frequency sweep/Frequencies (Hz)=' \
+  --set 'Frequency sweep/Frequencies=1001' --set 'Frequency sweep/Confirm long sweep=true'
+confirmed "a map of 1.4e6 points confirmed" "^work: 1410141 map points (the progress shows the time left), results about 56.5 MB" \
+  sweep-inner5_map.h5 \
+  sweep prm/sweep-inner5.prm "${many_edges[@]}" --set 'Sweep/Confirm long sweep=true'
 
 # A time run whose rings stay at 0 V says so (and still completes).
 "$exe" run prm/response.prm --set 'Electrodes/Voltage path (kV)=0' --set 'Time/Cycles=1' \
@@ -91,14 +181,16 @@ expect "an invisible byte in a column name" 1 "unknown column 'V2_kV\\\\xC2\\\\x
 mkfifo fifo.csv
 expect "a FIFO as data file" 1 "cannot read data file 'fifo.csv': it is not a regular file (a FIFO)" \
   "$exe" fit prm/fit-example.prm fifo.csv
-expect "a directory as data file" 1 "cannot read data file 'prm': it is a directory" "$exe" fit prm/fit-example.prm prm
+mkdir folder.csv
+expect "a directory as data file" 1 "cannot read data file 'folder.csv': it is a directory" "$exe" fit prm/fit-example.prm folder.csv
 
 # cdea recover: regular files only, its exit codes.
 mkdir rec
 mkfifo rec/a.h5.journal
 expect "recover: a FIFO journal" 1 "the journal rec/a.h5.journal is not a regular file (a FIFO" "$exe" recover rec/a.h5
 ln -s /dev/zero rec/b.h5.journal
-expect "recover: /dev/zero as journal" 1 "is not a regular file (a FIFO, device or socket)" "$exe" recover rec/b.h5
+expect "recover: a link to /dev/zero as journal" 1 "the journal rec/b.h5.journal is a symbolic link, not a journal cdea wrote" "$exe" recover rec/b.h5
+[ -L rec/b.h5.journal ] && ok "the link is kept" || fail "the journal link was removed"
 mkdir rec/c.h5.journal
 expect "recover: a directory as journal" 1 "the journal rec/c.h5.journal is not a regular file (a directory)" \
   "$exe" recover rec/c.h5

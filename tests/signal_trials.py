@@ -1,12 +1,15 @@
 """SIGINT (or SIGTERM, SIGHUP) at a random moment in every command: run, a
-time run, shoot, compare, sweep, optimize, fit and recover, each on a case
-that takes about a second, with an older complete results file in place.
+time run, shoot, compare, sweep, frequency-sweep, response, chart, optimize,
+fit and recover, each on a case that takes about a second, with an older
+complete results file in place (fit: and an older _fit.prm).
 
 A trial passes when the command
   - exits 2 with a line saying "interrupted by SIG..." (compare: no table;
-    recover: nothing changed), its results file readable (h5py) with every
-    step it printed (run, time run, shoot), its journal, checkpoint and lock
-    gone;
+    recover: nothing changed; response, chart: nothing written), the older
+    file (and _fit.prm) byte for byte as it was, the results so far readable
+    (h5py) beside it in <stem>.partial.h5 (run, time run, shoot: with every
+    step printed; sweep, frequency-sweep: the rows or frequencies done),
+    its journal and lock gone;
   - or had ended before the signal: exit 0, the complete file;
   - or was killed by the signal during its start-up (before its handlers):
     nothing written, the older file byte for byte as it was, no lock.
@@ -44,6 +47,12 @@ COMMANDS = {
                 None, "none"),
     "sweep": (["sweep", "prm/sweep-inner5.prm", "--set",
                "Sweep/Outer voltage range (kV)=5, 8, 0.025"], "results/sweep-inner5_map.h5", "map"),
+    "frequency-sweep": (["frequency-sweep", "prm/frequency-sweep.prm", "--set",
+                         "Frequency sweep/Frequencies (Hz)=0.01, 0.1, 1, 3, 10"],
+                        "results/frequency-sweep_frequency_sweep.h5", "frequencies"),
+    "response": (["response", "prm/response.prm", "--set", "Solver/Voltage increment (kV)=0.002"],
+                 "results/response_response.h5", "whole"),
+    "chart": (["chart", "prm/default.prm"], "results/default_chart.h5", "whole"),
     "optimize": (["optimize", "prm/optimize-paper.prm", "--set", "Optimization/Starts=8"],
                  "results/optimize-paper_optimum.h5", "file"),
     "fit": (["fit", "prm/fit-example.prm", "prm/fit-example.csv", "--set",
@@ -66,6 +75,8 @@ def readable(path, kind):
                 return n if len(f["steps"]) <= n else None
             if kind == "map":
                 return f["displacement_mm"].shape[0]
+            if kind == "frequencies":
+                return f["sweep/frequency_Hz"].shape[0]
             return len(f.attrs)
     except Exception:  # noqa: BLE001 -- any failure to read is the finding
         return None
@@ -95,13 +106,17 @@ def trial(name, index, work):
     shutil.rmtree(os.path.join(work, "results"), ignore_errors=True)
     os.makedirs(os.path.join(work, "results"))
     older = None
-    if target:  # an older complete file in its place
-        with open(os.path.join(work, target), "wb") as f:
+    # an older complete file in its place (a fit: with its parameter file)
+    olders = [target] + (["results/fit-example_fit.prm"] if name == "fit" else []) \
+        if target else []
+    for path in olders:
+        with open(os.path.join(work, path), "wb") as f:
             f.write(b"older results " + str(index).encode())
-        older = digest(os.path.join(work, target))
+    if target:
+        older = [digest(os.path.join(work, path)) for path in olders]
     if kind == "recover":
         os.remove(os.path.join(work, target))
-        older = None
+        older, olders = None, []
         if not journal_for_recover(work):
             return ["no journal to recover"], "setup", "-", 0.0
     sig = rng.choice([signal.SIGINT, signal.SIGINT, signal.SIGTERM, signal.SIGHUP])
@@ -122,11 +137,13 @@ def trial(name, index, work):
     errors = open(os.path.join(work, "err.txt"), errors="replace").read()
     left = sorted(os.listdir(os.path.join(work, "results")))
     problems = []
-    if any(f.endswith((".lock", ".tmp")) for f in left):
+    kept = [digest(os.path.join(work, path)) for path in olders] == (older or [])
+    partial = os.path.join(work, target.replace(".h5", ".partial.h5")) if target else None
+    if any(f.endswith((".lock", ".tmp", ".older")) for f in left):
         problems.append(f"left behind: {left}")
     if rc == -sig:  # killed during the start-up: nothing may have changed
         outcome = "killed at start-up"
-        if target and digest(os.path.join(work, target)) != older:
+        if not kept:
             problems.append("killed at start-up, but the older file changed")
         if kind != "recover" and any(f.endswith(".journal") for f in left):
             problems.append(f"killed at start-up, but a journal exists: {left}")
@@ -138,16 +155,23 @@ def trial(name, index, work):
         outcome = "interrupted"
         if "interrupted by " + signal.Signals(sig).name not in errors:
             problems.append(f"exit 2 without 'interrupted by {signal.Signals(sig).name}'")
+        if kind != "recover" and not kept:
+            problems.append("interrupted, but the older file changed")
+        nothing = re.search(r"before the work began|nothing was written|nothing written", errors)
         if kind == "steps":
-            rows = readable(os.path.join(work, target), kind)
+            rows = readable(partial, kind)
             printed = len(STEP.findall(text))
             if rows is None or rows < printed:
-                problems.append(f"file rows {rows}, printed steps {printed}")
-            if any(f.endswith((".journal", ".partial.h5")) for f in left):
-                problems.append(f"journal or checkpoint left: {left}")
-        elif kind in ("map", "file") and not errors.count("before the work began"):
-            if readable(os.path.join(work, target), kind) is None:
-                problems.append("exit 2 without a readable file")
+                problems.append(f"partial file rows {rows}, printed steps {printed}")
+            if any(f.endswith(".journal") for f in left):
+                problems.append(f"journal left: {left}")
+        elif kind in ("map", "file", "frequencies") and not nothing:
+            if readable(partial, kind) is None:
+                problems.append("exit 2 without a readable partial file")
+            if name == "fit" and "fit-example_fit.partial.prm" not in left:
+                problems.append(f"the fit's partial pair is incomplete: {left}")
+        elif kind == "whole" and (not nothing or os.path.exists(partial)):
+            problems.append(f"interrupted, but not 'nothing was written' or a file left: {left}")
         elif kind == "recover" and not os.path.exists(os.path.join(work, target + ".journal")):
             problems.append("recover interrupted, but the journal is gone")
     else:

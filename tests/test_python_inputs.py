@@ -1,6 +1,6 @@
-"""The Python module's answers to inputs it cannot use (issue 22): fields()
-names the steps it has, overrides must be a dict, write(path) creates no
-folder, a fit whose start cannot reach a point returns (not converged, the
+"""The Python module's answers to inputs it cannot use (issues 22, 31): fields()
+names the steps it has, overrides must be a dict, include loops are refused,
+write(path) creates no folder and replaces only a regular file, a fit whose start cannot reach a point returns (not converged, the
 point named, standard errors NaN); plot_run.py puts a time run over time."""
 import math
 import os
@@ -53,6 +53,39 @@ def test_write_creates_no_chain_of_folders(tmp_path):
         r.write("/nonexistent-cdea-test/dir/x.h5")
     assert not os.path.exists("/nonexistent-cdea-test")
     assert r.write(str(tmp_path / "sub" / "x.h5")) == str(tmp_path / "sub" / "x.h5")
+
+
+def test_include_loops_refused(tmp_path, monkeypatch):
+    """Issue 31, item 2: an include loop is a ValueError with the chain, not a
+    stack overflow of the interpreter; an include is read as the main file."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "self.prm").write_text("include self.prm\n")
+    with pytest.raises(ValueError, match=r"cannot include 'self.prm': it is this file itself, "
+                       r"an include loop: self.prm line 1 -> self.prm"):
+        cdea.parameters("self.prm")
+    with pytest.raises(ValueError, match=r"in parameter file 'self.prm' \(included from the "
+                       r"parameter text line 2\): line 1: cannot include 'self.prm'"):
+        cdea.parameters("# a loop\ninclude self.prm\n")
+    (tmp_path / "mass.prm").write_text("set Mass (g) = 300\r\n")
+    text = cdea.parameters("subsection Loading\r\n  include mass.prm\rend\n")
+    assert "set Mass (g)        = 300" in text
+
+
+def test_write_refuses_what_is_not_a_file_of_its_own(tmp_path):
+    """Issue 31, items 3 and 4: write() replaces a regular file or nothing;
+    an empty name, a FIFO or a link is refused and left as it was."""
+    r = cdea.run(DEFAULT, overrides={"Solver/Voltage increment (kV)": 1})
+    with pytest.raises(OSError, match="'' names no file"):
+        r.write("")
+    fifo, link, target = tmp_path / "fifo.h5", tmp_path / "link.h5", tmp_path / "target"
+    os.mkfifo(fifo)
+    target.write_text("someone else's")
+    os.symlink(target, link)
+    for path, kind in ((fifo, "a FIFO"), (link, "a symbolic link")):
+        with pytest.raises(OSError, match=f"it is {kind}"):
+            r.write(str(path))
+    assert fifo.is_fifo() and link.is_symlink() and target.read_text() == "someone else's"
+    assert sorted(os.listdir(tmp_path)) == ["fifo.h5", "link.h5", "target"]
 
 
 def test_fit_start_beyond_the_fold(tmp_path):

@@ -1,5 +1,6 @@
 #include <cdea/analysis/frequency_response.h>
 #include <cdea/analysis/run_setup.h>
+#include <cdea/base/run_control.h>
 #include <cdea/fe/linear_dynamics.h>
 #include <cdea/input/solver_settings.h>
 #include <cdea/output/hdf5_writer.h>
@@ -26,7 +27,12 @@ namespace cdea
       const bool viscous = scene.law()->n_internal_variables() > 0;
       if (viscous)
         model->set_time_step(std::numeric_limits<double>::infinity(), TimeScheme::backward_euler);
-      LoadStepper     stepper(scene, *model, study_stepping_settings(p));
+      LoadStepper stepper(scene, *model, study_stepping_settings(p));
+      // `cdea response` under SIGINT, SIGTERM, SIGHUP: stop at the next step.
+      stepper.on_step = [](const StepSummary &) {
+        if (const int signal = StopOnSignals::requested())
+          throw RunInterrupted(signal);
+      };
       const RunResult run = stepper.run();
       if (!run.completed)
         throw std::runtime_error("no equilibrium at the end of the voltage path: " + run.message);

@@ -2,12 +2,14 @@
 #include <cdea/base/byte_pack.h>
 #include <cdea/base/format.h>
 #include <cdea/base/mpi_session.h>
+#include <cdea/base/run_control.h>
 #include <cdea/base/text.h>
 #include <cdea/output/hdf5_writer.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #ifndef CDEA_VERSION
@@ -18,12 +20,28 @@ namespace cdea
 {
   namespace
   {
+    /// Frequencies beyond which a sweep needs Frequency sweep/Confirm long
+    /// sweep (each is a periodic steady state of seconds or more), and at most.
+    constexpr std::size_t long_sweep = 1000, most_frequencies = 100000;
+
+    void check_length(const parameters::FrequencySweep &f, const std::size_t n)
+    {
+      if (n > most_frequencies)
+        throw InputError("Frequency sweep: " + std::to_string(n) + " frequencies are too many "
+                         "(at most " + std::to_string(most_frequencies) + ")");
+      if (n > long_sweep && !f.confirm_long)
+        throw InputError("Frequency sweep: " + std::to_string(n) + " frequencies are more than " +
+                         std::to_string(long_sweep) + " (each takes seconds or more: hours in "
+                         "all): set Frequency sweep/Confirm long sweep = true to run them");
+    }
+
     std::vector<double> sweep_frequencies(const parameters::FrequencySweep &f)
     {
       std::vector<double> list;
       if (!trim_blanks(f.frequency_list).empty())
         {
           list = parse_number_list(f.frequency_list, "Frequency sweep/Frequencies (Hz)");
+          check_length(f, list.size());
           for (std::size_t i = 0; i < list.size(); ++i)
             if (!(list[i] > 0. && list[i] <= 1e6) || (i > 0 && !(list[i] > list[i - 1])))
               throw InputError("Frequency sweep/Frequencies (Hz) must be increasing frequencies "
@@ -31,9 +49,10 @@ namespace cdea
           return list;
         }
       require_positive(f.lowest_frequency_Hz, "Frequency sweep/Lowest frequency (Hz)");
-      if (f.frequencies < 1 || f.frequencies > 100000)
+      if (f.frequencies < 1 || f.frequencies > int(most_frequencies))
         throw InputError("Frequency sweep/Frequencies must be between 1 and 100000, got " +
                          std::to_string(f.frequencies));
+      check_length(f, std::size_t(f.frequencies));
       if (!(f.highest_frequency_Hz >= f.lowest_frequency_Hz && f.highest_frequency_Hz <= 1e6) ||
           (f.frequencies > 1 && !(f.highest_frequency_Hz > f.lowest_frequency_Hz)))
         throw InputError("Frequency sweep/Highest frequency (Hz) must be above Frequency "
@@ -169,6 +188,23 @@ namespace cdea
     }
 
     constexpr int progress_tag = 7402;
+
+    constexpr const char *not_computed_prefix = "not computed: ";
+
+    /// A frequency left out after a stop request: NaN, not converged.
+    SteadyPeriod not_computed(const double frequency, const int signal)
+    {
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      SteadyPeriod p;
+      p.frequency = frequency;
+      for (double *x : {&p.defect, &p.check_move, &p.stroke_amplitude, &p.mean_displacement,
+                        &p.volume_swing, &p.electrical_work, &p.weight_work, &p.dissipated,
+                        &p.stored_change, &p.s2_min})
+        *x = nan;
+      p.first_harmonic = {nan, nan};
+      p.message        = not_computed_prefix + std::string(RunInterrupted(signal).what());
+      return p;
+    }
   } // namespace
 
   // Each frequency is solved from scratch (PeriodicSteadyState::solve builds
@@ -207,8 +243,12 @@ namespace cdea
     BytePacker local;
     for (const std::size_t i : mine)
       {
-        SteadyPeriod period = steady.solve(s.frequencies[i]);
-        if (root && on_frequency)
+        // After a stop request the frequencies left are not computed (NaN,
+        // flagged), as a sweep keeps the rows it has.
+        const int    signal = StopOnSignals::requested();
+        SteadyPeriod period = signal ? not_computed(s.frequencies[i], signal) :
+                                       steady.solve(s.frequencies[i]);
+        if (root && on_frequency && !signal)
           on_frequency(&period);
         if (!distributed)
           {
@@ -230,7 +270,14 @@ namespace cdea
         r.periods = gather_periods(local, n);
       }
     for (const SteadyPeriod &period : r.periods)
-      r.all_converged = r.all_converged && period.converged;
+      {
+        r.all_converged = r.all_converged && period.converged;
+        if (period.message.rfind(not_computed_prefix, 0) == 0)
+          {
+            r.stop_reason = period.message.substr(std::strlen(not_computed_prefix));
+            ++r.not_computed;
+          }
+      }
     usable_band(r);
     r.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();

@@ -184,6 +184,14 @@ namespace cdea
       {
         if (!paraview)
           return;
+        if (output->cut_short() && paraview->older_output_exists())
+          {
+            // As the HDF5 results: the older output stays, this run's is beside it.
+            std::cout << "ParaView: " << paraview->n_steps() << " steps in "
+                      << path.substr(0, path.size() - 3) << ".partial.pvd (the older output "
+                      << "of this name is kept)\n";
+            return;
+          }
         try
           {
             paraview->finish();

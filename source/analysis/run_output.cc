@@ -60,7 +60,8 @@ namespace cdea
       }
     catch (const RunInterrupted &e)
       {
-        stopped = e.what();
+        stopped       = e.what();
+        was_cut_short = true;
       }
     catch (const OutputError &e)
       {
@@ -68,7 +69,8 @@ namespace cdea
       }
     catch (const std::exception &e)
       {
-        stopped = "error: " + one_line_message(e);
+        stopped   = "error: " + one_line_message(e);
+        was_cut_short = true;
       }
     if (!stopped.empty())
       {
@@ -81,7 +83,8 @@ namespace cdea
 
   int RunOutput::finish(const RunResult &result)
   {
-    const ResultsFile::Finish done = results->finish(run_status(result, results->n_steps()));
+    const ResultsFile::Finish done =
+      results->finish(run_status(result, results->n_steps()), was_cut_short);
     std::cout << "results: " << done.steps_written << " steps in "
               << (done.written ? done.file : std::string("no file")) << " ("
               << results->checkpoints() << " checkpoints, " << std::fixed << std::setprecision(3)

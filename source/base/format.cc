@@ -73,4 +73,13 @@ namespace cdea
       --cut;
     return text.substr(0, cut) + more;
   }
+  std::string format_bytes(const double bytes)
+  {
+    const char *units[] = {"bytes", "kB", "MB", "GB", "TB"};
+    double      value   = bytes;
+    int         unit    = 0;
+    for (; unit < 4 && value >= 999.5; ++unit)
+      value /= 1e3;
+    return format_number(value, 3) + " " + units[unit];
+  }
 } // namespace cdea

@@ -3,7 +3,8 @@
 // stress against stretch and, for a law with internal variables, the
 // small-strain DMA chart (storage and loss modulus, loss factor against
 // frequency); a summary printed, everything in <Base name>_chart.h5
-// (doc/materials.md, "Material charts"). 0 written, 1 bad input, 2 not written.
+// (doc/materials.md, "Material charts"). 0 written, 1 bad input, 2 not written
+// (a SIGINT, SIGTERM or SIGHUP before the file: nothing written).
 
 #include <cdea/base/format.h>
 #include <cdea/base/run_control.h>
@@ -113,6 +114,13 @@ namespace cdea
           std::cout << "DMA chart: none (Material/Model = " << model
                     << " is elastic: no internal variables, no loss)\n";
         const std::string &path = invocation.output.path;
+        if (const int signal = StopOnSignals::requested())
+          {
+            std::cerr << "cdea: interrupted by " << signal_name(signal)
+                      << " before the chart was written; nothing was written\n";
+            invocation.output.give_up();
+            return exit_not_complete;
+          }
         try
           {
             Hdf5Writer w(path);

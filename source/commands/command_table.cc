@@ -47,14 +47,15 @@ namespace cdea
        {"small-signal frequency response about the equilibrium\n"
         "at the end of the voltage path: transfer functions,\n"
         "natural frequencies, <Base name>_response.h5"},
-       reads_parameters | time_runs | in_python, Ranks::one, Output::claimed_first,
-       response_job},
+       reads_parameters | stops_on_signals | time_runs | in_python, Ranks::one,
+       Output::claimed_first, response_job},
       {"frequency-sweep", {"FILE.prm"},
        {"periodic steady states of the waveform over the\n"
         "frequencies of subsection Frequency sweep: stroke,\n"
         "dissipation, loss of tension, the usable band,\n"
         "<Base name>_frequency_sweep.h5"},
-       reads_parameters | time_runs, Ranks::all, Output::claimed_first, frequency_sweep_job},
+       reads_parameters | stops_on_signals | time_runs, Ranks::all, Output::claimed_first,
+       frequency_sweep_job},
       {"recover", {"FILE.h5"},
        {"rebuild the results of a killed run from its\n"
         "journal FILE.h5.journal"},
@@ -76,7 +77,7 @@ namespace cdea
        {"material charts of Material/Model: uniaxial and\n"
         "equibiaxial stress-stretch, the DMA chart of a\n"
         "viscoelastic law, <Base name>_chart.h5"},
-       reads_parameters, Ranks::one, Output::claimed_first, chart_job},
+       reads_parameters | stops_on_signals, Ranks::one, Output::claimed_first, chart_job},
       {"print-parameters", {"", "--json"},
        {"print a complete, documented parameter file",
         "the same parameters and defaults as JSON"},

@@ -42,6 +42,10 @@ namespace cdea
       void check(Invocation &invocation) override
       {
         const std::string &data_file = invocation.arguments.at(1);
+        const Parameters  &p         = invocation.parameters;
+        const std::string  prm_path = p.output.directory + "/" + p.output.base_name + "_fit.prm";
+        if (const std::string why = refused_names(prm_path); !why.empty())
+          throw InputError("cannot write '" + prm_path + "': " + why);
         if (const FitDataKind kind = fit_data_kind(data_file);
             kind != FitDataKind::displacement_voltage)
           {
@@ -74,15 +78,10 @@ namespace cdea
                     });
         const double seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (!c.result.started)
-          {
-            // Nothing was fitted: an older fit file stays as it was.
-            invocation.output.give_up();
-            std::cerr << "cdea: " << c.result.status
-                      << " (change the start values in the parameter file or check that "
-                         "point; nothing was written)\n";
-            return exit_input_error;
-          }
+        if (!c.result.started) // nothing fitted: an older fit file stays as it was
+          return fit_not_started(invocation, c.result.status,
+                                 "change the start values in the parameter file or check that "
+                                 "point; ");
         print_values(c.result);
         print_residuals(c.result);
         for (const auto &w : c.result.warnings)

@@ -71,11 +71,7 @@ namespace cdea
         const FitResult r = kind == FitDataKind::dma ? fit_dma(p.scene(), dma, settings, progress) :
                                                        fit_creep(p, creep, settings, progress);
         if (!r.started)
-          {
-            invocation.output.give_up();
-            std::cerr << "cdea: " << r.status << " (nothing was written)\n";
-            return exit_input_error;
-          }
+          return fit_not_started(invocation, r.status, "");
         print_values(r);
         print_residuals(r);
         for (const auto &w : r.warnings)
@@ -182,9 +178,13 @@ namespace cdea
   int finish_fit(const std::function<void()> &write_results, const std::string &h5_path,
                  const std::string &prm_path, const FitResult &r)
   {
+    const int                signal = StopOnSignals::requested();
+    std::vector<std::string> wrote;
     try
       {
+        ReplaceTogether pair({h5_path, prm_path});
         write_results();
+        wrote = pair.commit(signal != 0);
       }
     catch (const std::exception &e)
       {
@@ -192,11 +192,13 @@ namespace cdea
                   << " (older files of this name stay as they were)\n";
         return exit_not_complete;
       }
-    std::cout << "wrote " << h5_path << (r.fitted.size() ? " and " + prm_path : "") << '\n';
-    if (const int signal = StopOnSignals::requested())
+    std::cout << "wrote " << wrote[0] << (wrote[1].empty() ? "" : " and " + wrote[1]) << '\n';
+    if (signal)
       {
         std::cerr << "cdea: interrupted by " << signal_name(signal)
-                  << "; the values reached are in " << h5_path << '\n';
+                  << "; the values reached are in " << wrote[0]
+                  << (wrote[0] != h5_path ? " (the older " + h5_path + " is kept as it was)" : "")
+                  << '\n';
         return exit_not_complete;
       }
     if (!r.converged)
@@ -206,6 +208,19 @@ namespace cdea
         return exit_not_complete;
       }
     return exit_success;
+  }
+
+  int fit_not_started(Invocation &invocation, const std::string &status, const std::string &hint)
+  {
+    invocation.output.give_up();
+    if (const int signal = StopOnSignals::requested())
+      {
+        std::cerr << "cdea: interrupted by " << signal_name(signal)
+                  << " during the evaluation of the start values; nothing was written\n";
+        return exit_not_complete;
+      }
+    std::cerr << "cdea: " << status << " (" << hint << "nothing was written)\n";
+    return exit_input_error;
   }
 
   void print_correlation(const std::vector<SceneParameter> &free, const FitResult &r,

@@ -26,6 +26,9 @@ namespace cdea
       {
         base     = invocation.parameters.scene();
         settings = optimization_settings(invocation.parameters, base);
+        const std::string prm_path = replay_path(invocation.parameters);
+        if (const std::string why = refused_names(prm_path); !why.empty())
+          throw InputError("cannot write '" + prm_path + "': " + why);
       }
 
       std::string output_path(const Invocation &invocation) const override
@@ -161,19 +164,28 @@ namespace cdea
                   << " s\n";
       }
 
-      /// The optimum file and the replay's parameter file, and how the run ended.
+      static std::string replay_path(const Parameters &p)
+      {
+        return p.output.directory + "/" + p.output.base_name + "_optimum.prm";
+      }
+
+      /// The optimum file and the replay's parameter file (together or not
+      /// at all; after a stop beside older ones, to their partial names),
+      /// and how the run ended.
       int write_and_report(Invocation &invocation, const OptimizationRun &run) const
       {
-        const Parameters  &p        = invocation.parameters;
-        const StartResult &best     = run.starts[run.best];
-        const std::string &h5_path  = invocation.output.path;
-        const std::string  prm_path = p.output.directory + "/" + p.output.base_name +
-                                     "_optimum.prm";
+        const Parameters  &p       = invocation.parameters;
+        const StartResult &best    = run.starts[run.best];
+        const std::string &h5_path = invocation.output.path;
+        const int          signal  = StopOnSignals::requested();
+        std::vector<std::string> wrote;
         try
           {
+            ReplaceTogether pair({h5_path, replay_path(p)});
             write_optimum_file(h5_path, run, settings, base, invocation.parameter_text);
-            write_replay_parameters(invocation.input, prm_path, best.best, p.output.base_name,
-                                    settings.max_field);
+            write_replay_parameters(invocation.input, replay_path(p), best.best,
+                                    p.output.base_name, settings.max_field);
+            wrote = pair.commit(signal != 0);
           }
         catch (const std::exception &error)
           {
@@ -181,11 +193,14 @@ namespace cdea
                       << " (older files of this name stay as they were)\n";
             return exit_not_complete;
           }
-        std::cout << "wrote " << h5_path << " and " << prm_path << '\n';
-        if (const int signal = StopOnSignals::requested())
+        std::cout << "wrote " << wrote[0] << " and " << wrote[1] << '\n';
+        if (signal)
           {
             std::cerr << "cdea: interrupted by " << signal_name(signal)
-                      << "; the best layout found so far is in " << h5_path << '\n';
+                      << "; the best layout found so far is in " << wrote[0]
+                      << (wrote[0] != h5_path ? " (the older " + h5_path + " is kept as it was)" :
+                                                "")
+                      << '\n';
             return exit_not_complete;
           }
         if (!best.converged)

@@ -2,7 +2,8 @@
 // equilibrium at the end of the voltage path (analysis/frequency_response.h):
 // the natural frequencies with their damping, a table of the transfer
 // functions at a few frequencies, and <Base name>_response.h5 with all of
-// them. 0 written, 1 bad input, 2 no equilibrium or not written.
+// them. 0 written, 1 bad input, 2 no equilibrium, interrupted (SIGINT,
+// SIGTERM, SIGHUP: nothing written) or not written.
 
 #include <cdea/analysis/frequency_response.h>
 #include <cdea/base/format.h>
@@ -39,6 +40,16 @@ namespace cdea
         try
           {
             r = frequency_response(input);
+            if (const int signal = StopOnSignals::requested())
+              throw RunInterrupted(signal);
+          }
+        catch (const RunInterrupted &e)
+          {
+            // Not divisible: no partial response is written.
+            std::cerr << "cdea: " << e.what()
+                      << " before the response was complete; nothing was written\n";
+            invocation.output.give_up();
+            return exit_not_complete;
           }
         catch (const std::runtime_error &e)
           {

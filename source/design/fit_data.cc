@@ -25,7 +25,11 @@ namespace cdea
 
   std::string read_data_file(const std::string &file)
   {
-    const FileRead read = read_regular_file(file, max_file_bytes);
+    // Only a CSV: its lines are quoted in messages.
+    const FileRead read = has_extension(file, ".csv") ?
+                            read_regular_file(file, max_file_bytes) :
+                            FileRead{false, "", "the data must be a CSV file whose name ends "
+                                                "in .csv"};
     if (!read.ok)
       throw InputError("cannot read data file '" + file + "': " + read.error);
     return read.bytes;

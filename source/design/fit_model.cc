@@ -38,7 +38,11 @@ namespace cdea
   CalibrationData read_calibration_data(const std::string &file, const unsigned int n_rings,
                                         const double voltage_ceiling)
   {
-    const FileRead read = read_regular_file(file, max_data_file_bytes);
+    // Only a CSV: its lines are quoted in messages.
+    const FileRead read = has_extension(file, ".csv") ?
+                            read_regular_file(file, max_data_file_bytes) :
+                            FileRead{false, "", "the data must be a CSV file whose name ends in "
+                                                ".csv"};
     if (!read.ok)
       throw InputError("cannot read data file '" + file + "': " + read.error);
     std::istringstream in(read.bytes);

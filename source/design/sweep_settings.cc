@@ -27,6 +27,10 @@ namespace cdea
 
 
     constexpr std::size_t max_values = 100000;
+    /// Map points beyond which a sweep needs Sweep/Confirm long sweep: with
+    /// the default discretization 1e6 points take minutes and 0.1 GB, a finer
+    /// one takes hours.
+    constexpr double long_map_points = 1e6;
     /// Map points (edge values x outer voltages): five doubles each in the rows
     /// (SweepRow) and again in the file's datasets, so 1e7 take about 1 GB.
     constexpr double max_map_points = 1e7;
@@ -103,6 +107,11 @@ namespace cdea
                        std::to_string(s.ring_edge_values.size()) + " x " +
                        std::to_string(s.outer_voltages.size()) + "), more than the " +
                        format(max_map_points) + " it may hold in memory");
+    if (points > long_map_points && !p.sweep.confirm_long)
+      throw InputError("Sweep/Ring edge values (r/a) x Sweep/Outer voltage range (kV): the map "
+                       "would have " + format(points) + " points, more than " +
+                       format(long_map_points) + " (minutes to hours of work): set Sweep/Confirm "
+                       "long sweep = true to compute it");
     return s;
   }
 

@@ -65,36 +65,59 @@ namespace cdea
       check_override_value(key, value);
     }
 
-    /// @p prm with every entry declared, the file or text parsed and the
-    /// overrides set; returns the text (a file read bounded, its structure
-    /// checked first: prm_text.h).
-    std::string parse_input(const ParameterInput &input, ParameterHandler &prm)
+    /// A .json or .xml parameter file: the bytes read (bounded, a regular
+    /// file) go to deal.II's reader of that format, which opens nothing.
+    void parse_other_format(const ParameterInput &input, const std::string &extension,
+                            const std::string &bytes, ParameterHandler &prm)
     {
-      const std::string text = input.is_text ? input.source : read_parameter_file(input.source);
-      const std::string name = input.is_text ? "parameter text" : input.source;
-      // .json and .xml files go to deal.II's readers of those formats.
-      std::string extension = std::filesystem::path(name).extension();
-      for (char &c : extension)
-        c = char(std::tolower(static_cast<unsigned char>(c)));
-      const bool prm_format = input.is_text || extension == ".prm";
-      Parameters::declare(prm);
-      if (prm_format)
-        check_prm_structure(text, where(input), prm);
+      if (extension != ".json" && extension != ".xml")
+        throw InputError(where(input) + "the name of a parameter file must end in .prm, .json "
+                         "or .xml");
+      std::istringstream in(bytes);
       try
         {
-          std::istringstream in(text);
-          if (prm_format)
-            prm.parse_input(in, name, "", false);
+          if (extension == ".json")
+            prm.parse_input_from_json(in, false);
           else
-            prm.parse_input(input.source, "", false, false);
+            prm.parse_input_from_xml(in, false);
         }
       catch (const dealii::ExceptionBase &e)
         {
-          throw InputError(where(input) + explain_parse_error(text, message_of(e)));
+          throw InputError(where(input) + message_of(e));
         }
+    }
+
+    /// @p prm with every entry declared, the file or text parsed and the
+    /// overrides set; returns the main text (a file read bounded, its
+    /// includes expanded and its structure checked first: prm_text.h).
+    std::string parse_input(const ParameterInput &input, ParameterHandler &prm)
+    {
+      const std::string raw  = input.is_text ? input.source : read_parameter_file(input.source);
+      const std::string name = input.is_text ? "parameter text" : input.source;
+      std::string extension = std::filesystem::path(name).extension();
+      for (char &c : extension)
+        c = char(std::tolower(static_cast<unsigned char>(c)));
+      Parameters::declare(prm);
+      std::string main = raw;
+      if (input.is_text || extension == ".prm")
+        {
+          const PrmText text = prepare_parameter_text(raw, name, !input.is_text, prm);
+          main               = text.main;
+          try
+            {
+              std::istringstream in(text.text);
+              prm.parse_input(in, name, "", false);
+            }
+          catch (const dealii::ExceptionBase &e)
+            {
+              throw InputError(explain_parse_error(text, message_of(e)));
+            }
+        }
+      else
+        parse_other_format(input, extension, raw, prm);
       for (const auto &[key, value] : input.overrides)
         apply_override(prm, key, value);
-      return text;
+      return main;
     }
   } // namespace
 

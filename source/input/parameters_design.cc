@@ -43,6 +43,9 @@ namespace cdea
         "Voltage of the inner ring; both rings are first raised to it together.");
       prm.add("Outer voltage range (kV)", "5, 8, 0.05", outer_voltage_range_text,
               "from, to, step of the outer ring's voltage in the map.");
+      prm.add("Confirm long sweep", "false", confirm_long,
+              "A map of more than 1e6 points (edge values x outer voltages) is "
+              "refused unless this is true.");
       prm.leave_subsection();
     }
 

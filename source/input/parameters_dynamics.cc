@@ -80,6 +80,9 @@ namespace cdea
               "amplitude lies between the quasi-static one divided by this factor "
               "and the quasi-static one times it; the usable band is the longest run "
               "of consecutive usable frequencies.");
+      prm.add("Confirm long sweep", "false", confirm_long,
+              "A sweep of more than 1000 frequencies (each a periodic steady state "
+              "of seconds to minutes) is refused unless this is true.");
       prm.leave_subsection();
     }
 

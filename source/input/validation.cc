@@ -5,6 +5,7 @@
 #include <cdea/input/validation.h>
 #include <cdea/input/voltage_table.h>
 #include <cdea/material/law_factory.h>
+#include <cdea/output/paraview_writer.h>
 
 #include <algorithm>
 #include <cmath>
@@ -165,6 +166,16 @@ namespace cdea
       if (samples > max_samples)
         throw InputError("Discretization/Samples per element: " + format(samples) +
                          " samples per step are too many; at most " + format(max_samples));
+      // A step's ParaView file is built in memory (output/paraview_writer.h).
+      if (const double vtu = ParaViewWriter::step_file_bytes(std::size_t(samples),
+                                                             p.output.paraview_segments);
+          p.output.paraview && vtu > ParaViewWriter::max_step_file_bytes)
+        throw InputError("Output/ParaView segments = " +
+                         std::to_string(p.output.paraview_segments) + " with " +
+                         format(samples) + " samples per step: a step's ParaView file would "
+                         "take about " + format(std::round(vtu * 1e-6)) + " MB, more than the " +
+                         format(ParaViewWriter::max_step_file_bytes * 1e-6) +
+                         " MB allowed; lower the segments or the samples");
       const double      steps = estimated_steps(p, scene);
       const std::string step_entries =
         p.solver.continuation == Continuation::arc_length ?

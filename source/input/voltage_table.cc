@@ -1,9 +1,10 @@
+#include <cdea/base/file_reading.h>
 #include <cdea/base/format.h>
 #include <cdea/base/text.h>
 #include <cdea/input/voltage_table.h>
 
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 
 namespace cdea
 {
@@ -23,18 +24,24 @@ namespace cdea
       return "'" + file + "' (relative to the working directory: " + resolved.string() + ")";
     }
 
-    /// Checks that @p file names a readable file and opens it.
-    std::ifstream open_table(const std::string &file)
+    /// As the fit's CSV files: a table is no larger than this.
+    constexpr std::size_t max_table_bytes = std::size_t(64) << 20;
+
+    /// The bytes of the table @p file: a regular file named *.csv (so that
+    /// a message quoting a line quotes a CSV, never another file), read
+    /// bounded.
+    std::string read_table(const std::string &file)
     {
       if (file.empty())
         throw InputError(entry + " must be given for Time/Waveform = table");
-      std::error_code error;
-      if (std::filesystem::is_directory(file, error))
-        throw InputError(entry + ": cannot read " + describe_file(file) + ": it is a directory");
-      std::ifstream in(file);
-      if (!in)
-        throw InputError(entry + ": cannot read " + describe_file(file));
-      return in;
+      if (!has_extension(file, ".csv"))
+        throw InputError(entry + " " + describe_file(file) +
+                         ": the table must be a CSV file whose name ends in .csv");
+      const FileRead read = read_regular_file(file, max_table_bytes);
+      if (!read.ok)
+        throw InputError(entry + ": cannot read " + describe_file(file) +
+                         (read.error == "it does not exist" ? std::string() : ": " + read.error));
+      return read.bytes;
     }
 
     /// One row of numbers (@p line, trailing blanks removed) appended to
@@ -68,8 +75,8 @@ namespace cdea
   VoltageTable read_voltage_table(const std::string &file, const unsigned int n_rings,
                                   const double ceiling)
   {
-    std::ifstream in = open_table(file);
-    VoltageTable  table;
+    std::istringstream in(read_table(file));
+    VoltageTable       table;
     std::string   line;
     unsigned int  number         = 0;
     bool          header_allowed = true; // the first non-comment line may be a header
@@ -93,8 +100,6 @@ namespace cdea
         add_row(line, entry + " '" + file + "', line " + std::to_string(number), n_rings,
                 ceiling, table);
       }
-    if (in.bad())
-      throw InputError(entry + ": cannot read " + describe_file(file));
     if (table.times.empty())
       throw InputError(entry + " " + describe_file(file) + " has no rows of numbers");
     return table;

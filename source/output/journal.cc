@@ -152,14 +152,17 @@ namespace cdea
       }
     };
 
+    /// A record: its type and where its payload is in Parsed::data (a
+    /// journal is held once in memory, not copied record by record).
     struct Record
     {
       unsigned char type;
-      std::string   payload;
+      std::size_t   offset, length;
     };
 
     struct Parsed
     {
+      std::string         data;
       std::vector<Record> records;
       std::size_t         dropped_bytes = 0;
       std::size_t         damaged_at    = no_damage;
@@ -191,22 +194,33 @@ namespace cdea
       return left - frame == length;
     }
 
-    Parsed read_records(const std::string &path)
+    /// The first bytes of a journal: format 2's magic (or the start of it:
+    /// a journal cut inside it holds nothing), else it is not read on.
+    void check_magic(const std::string &path, const std::string &head)
     {
-      FileRead read = read_regular_file(path, max_journal_bytes);
-      if (!read.ok)
-        throw OutputError("cannot read the journal " + path + ": " + read.error);
-      const std::string data = std::move(read.bytes);
-      Parsed            parsed;
-      if (data.size() >= sizeof(magic) &&
-          std::memcmp(data.data(), magic_format1, sizeof(magic)) == 0)
+      if (head.size() >= sizeof(magic) &&
+          std::memcmp(head.data(), magic_format1, sizeof(magic)) == 0)
         throw OutputError(path + " was written by an older version of cdea (journal format 1): "
                                  "recover it with that version");
-      if (data.size() < sizeof(magic) || std::memcmp(data.data(), magic, sizeof(magic)) != 0)
+      if (std::memcmp(head.data(), magic, std::min(head.size(), sizeof(magic))) != 0)
+        throw OutputError(path + " is not a cdea journal");
+    }
+
+    Parsed read_records(const std::string &path)
+    {
+      // Not through a symbolic link: a journal is cdea's own file.
+      ReadOptions options;
+      options.follow_links = false;
+      options.head_bytes   = sizeof(magic);
+      options.check_head   = [&](const std::string &head) { check_magic(path, head); };
+      FileRead read        = read_regular_file(path, max_journal_bytes, options);
+      if (!read.ok)
+        throw OutputError("cannot read the journal " + path + ": " + read.error);
+      Parsed             parsed;
+      parsed.data        = std::move(read.bytes);
+      const std::string &data = parsed.data;
+      if (data.size() < sizeof(magic))
         {
-          if (data.size() >= sizeof(magic) ||
-              std::memcmp(data.data(), magic, data.size()) != 0)
-            throw OutputError(path + " is not a cdea journal");
           parsed.dropped_bytes = data.size();
           return parsed;
         }
@@ -227,8 +241,7 @@ namespace cdea
               parsed.damaged_at    = at;
               return parsed;
             }
-          parsed.records.push_back(
-            {static_cast<unsigned char>(data[at]), data.substr(at + 5, length)});
+          parsed.records.push_back({static_cast<unsigned char>(data[at]), at + 5, length});
           if (data[at] == char(append_record))
             largest_step = std::max<std::size_t>(largest_step, length);
           at += frame + length;
@@ -324,9 +337,16 @@ namespace cdea
     // The flock, held while the journal is open, tells others this journal
     // is live (recover_results() never touches a locked one); it is taken
     // before the journal is emptied.
-    const int f = ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
+    // Created new, never through a link: a journal left by an earlier run
+    // has been saved and removed before (ResultsFile), and anything else of
+    // that name is not ours to empty.
+    const int f =
+      ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
     if (f < 0)
-      throw OutputError("cannot create the journal " + path + ": " + std::strerror(errno));
+      throw OutputError("cannot create the journal " + path + ": " +
+                        (errno == EEXIST ? std::string("something of that name is in the way "
+                                                       "(not a journal cdea can save): remove it") :
+                                           std::string(std::strerror(errno))));
     if (::flock(f, LOCK_EX | LOCK_NB) != 0)
       {
         ::close(f);
@@ -491,9 +511,10 @@ namespace cdea
 
     /// Replays one record after the start into @p replay; false at a step
     /// beyond @p max_steps (the replay ends there).
-    bool replay_record(const Record &r, JournalReplay &replay, const unsigned int max_steps)
+    bool replay_record(const Record &r, const std::string &data, JournalReplay &replay,
+                       const unsigned int max_steps)
     {
-      Decoder          in(r.payload.data(), r.payload.size());
+      Decoder          in(data.data() + r.offset, r.length);
       ResultsDocument &document = *replay.document;
       switch (r.type)
         {
@@ -543,12 +564,12 @@ namespace cdea
         for (const Record &r : parsed.records)
           if (r.type == start_record)
             {
-              Decoder in(r.payload.data(), r.payload.size());
+              Decoder in(parsed.data.data() + r.offset, r.length);
               replay.document = replay_start(in, name);
             }
           else if (stop_on_request && StopOnSignals::requested() != 0)
             throw RunInterrupted(StopOnSignals::requested());
-          else if (!replay_record(r, replay, max_steps))
+          else if (!replay_record(r, parsed.data, replay, max_steps))
             break;
       }
     catch (const RunInterrupted &)

@@ -6,6 +6,9 @@
 #include <cdea/output/paraview_writer.h>
 #include <cdea/output/safe_files.h>
 
+#include <sys/stat.h>
+
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -236,6 +239,18 @@ namespace cdea
     }
   } // namespace
 
+  double ParaViewWriter::step_file_bytes(const std::size_t samples, const unsigned int segments)
+  {
+    // Per point of the film: x, y, z and the real point data (Float64),
+    // ring and wrinkled (Int32); per quadrilateral: four Int64 vertices, an
+    // Int64 offset and a UInt8 type. The disk adds segments + 1 points.
+    double reals = 0.;
+    for (const StepField &row : step_fields())
+      reals += row.in_paraview && row.field.storage == Storage::real;
+    const double points = double(samples) * segments + segments + 1.;
+    return points * (8. * (3. + reals) + 8.) + double(samples) * segments * 41. + 4096.;
+  }
+
   ParaViewWriter::ParaViewWriter(const std::string &stem_, const unsigned int segments)
     : stem(stem_)
     , name(fs::path(stem_).filename().string())
@@ -243,12 +258,40 @@ namespace cdea
   {
     if (segments < 3)
       throw std::invalid_argument("ParaViewWriter: at least 3 segments are needed");
-    std::error_code error;
-    fs::remove_all(folder(true), error);
-    fs::create_directories(folder(true), error);
-    if (error || !fs::is_directory(folder(true)))
-      throw std::runtime_error("cannot create the ParaView folder '" + folder(true) +
-                               "'" + (error ? ": " + error.message() : std::string()));
+    // A partial output of a killed run is ours to replace, a link or another
+    // file of that name is not; the folder is made new (mkdir fails on
+    // anything there), so no link can send the files elsewhere.
+    for (const std::string &file : {stem + ".pvd", stem + ".partial.pvd"})
+      for (const std::string &name : {file, file + ".tmp"})
+        if (const std::string why = not_replaceable(name); !why.empty())
+          throw std::runtime_error("cannot write the ParaView file '" + name + "': " + why);
+    const std::string partial = folder(true);
+    struct stat       st      = {};
+    std::error_code   error;
+    for (const std::string &taken : {folder(false), stem + "_vtu.older"})
+      if (::lstat(taken.c_str(), &st) == 0 && !S_ISDIR(st.st_mode))
+        throw std::runtime_error("cannot write the ParaView folder '" + folder(false) + "': '" +
+                                 taken + "' is " + (S_ISLNK(st.st_mode) ? "a symbolic link" :
+                                                                          "not a folder") +
+                                 " (remove it)");
+    if (::lstat(partial.c_str(), &st) == 0)
+      {
+        if (!S_ISDIR(st.st_mode))
+          throw std::runtime_error("cannot create the ParaView folder '" + partial +
+                                   "': something that is not a folder is in the way "
+                                   "(remove it)");
+        fs::remove_all(partial, error);
+      }
+    if (::mkdir(partial.c_str(), 0755) != 0 || ::lstat(partial.c_str(), &st) != 0)
+      throw std::runtime_error("cannot create the ParaView folder '" + partial +
+                               "': " + std::strerror(errno));
+    folder_device = st.st_dev;
+    folder_inode  = st.st_ino;
+  }
+
+  bool ParaViewWriter::older_output_exists() const
+  {
+    return file_exists(stem + ".pvd") || file_exists(folder(false));
   }
 
   std::string ParaViewWriter::folder(const bool partial) const
@@ -274,6 +317,16 @@ namespace cdea
     if (fields.R.empty())
       throw std::invalid_argument("ParaViewWriter: a step without samples");
     const double tau  = static_cast<int>(summary.stage) - 2 + summary.load_factor;
+    if (const double bytes = step_file_bytes(fields.R.size(), segments); bytes > max_step_file_bytes)
+      throw std::runtime_error(
+        "a ParaView file of " + std::to_string(fields.R.size()) + " samples x " +
+        std::to_string(segments) + " segments would take " + std::to_string(long(bytes * 1e-6)) +
+        " MB, more than the " + std::to_string(long(max_step_file_bytes * 1e-6)) +
+        " MB allowed per step: lower Output/ParaView segments");
+    if (struct stat st = {}; ::lstat(folder(true).c_str(), &st) != 0 || !S_ISDIR(st.st_mode) ||
+                             st.st_dev != folder_device || st.st_ino != folder_inode)
+      throw std::runtime_error("the ParaView folder '" + folder(true) +
+                               "' was removed or replaced during the run");
     const double time = next_time(tau, last_tau, times.empty() ? nan : times.back(), turned);
     last_tau          = tau;
     std::ostringstream file;
@@ -313,6 +366,13 @@ namespace cdea
     if (!fs::is_directory(folder(true), error))
       throw std::runtime_error("cannot move the ParaView files to '" + folder(false) +
                                "': the folder '" + folder(true) + "' is gone");
+    // Only a folder of ours is set aside and replaced: a link or a file
+    // named <stem>_vtu or <stem>_vtu.older is not touched.
+    for (const std::string &taken : {folder(false), older})
+      if (struct stat st = {}; ::lstat(taken.c_str(), &st) == 0 && !S_ISDIR(st.st_mode))
+        throw std::runtime_error("cannot move the ParaView files to '" + folder(false) + "': '" +
+                                 taken + "' is not a folder (remove it; the files stay in '" +
+                                 folder(true) + "')");
     fs::remove_all(older, error);
     const bool had_older = fs::exists(folder(false), error);
     if (had_older)

@@ -39,10 +39,23 @@ namespace cdea
     {
     public:
       explicit JournalClaim(const std::string &journal)
-        : fd(::open(journal.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC))
+        : fd(-1)
       {
-        // O_NONBLOCK: a FIFO in the journal's place must not wait for a writer.
+        // Only a regular file is opened (opening a device can act on it);
+        // O_NONBLOCK: a FIFO put in its place meanwhile must not wait for a
+        // writer; O_NOFOLLOW: a link there is not a journal of cdea's.
         struct stat st = {};
+        if (::lstat(journal.c_str(), &st) == 0 && S_ISLNK(st.st_mode))
+          throw NotAJournal("the journal " + journal + " is a symbolic link, not a journal "
+                            "cdea wrote");
+        if (::lstat(journal.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+          throw NotAJournal("the journal " + journal + " is not a regular file (" +
+                            (S_ISDIR(st.st_mode) ? "a directory" : "a FIFO, device or socket") +
+                            ")");
+        fd = ::open(journal.c_str(), O_RDONLY | O_NONBLOCK | O_NOFOLLOW | O_CLOEXEC);
+        if (fd < 0 && errno == ELOOP)
+          throw NotAJournal("the journal " + journal + " is a symbolic link, not a journal "
+                            "cdea wrote");
         if (fd >= 0 && (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)))
           {
             ::close(fd);
@@ -69,17 +82,26 @@ namespace cdea
       int fd;
     };
 
-    /// Rows of /summary in the checkpoint at @p path; 0 if it is missing or
-    /// unreadable.
-    unsigned int checkpoint_steps(const std::string &path)
+    /// The checkpoint at @p path read once (a regular file, not through a
+    /// link: cdea's own), and the rows of /summary in it (0 if it is
+    /// missing or unreadable).
+    struct Checkpoint
     {
-      if (!is_regular_file(path)) // a FIFO would block H5Fopen
-        return 0;
+      std::vector<char> bytes;
+      unsigned int      steps = 0;
+    };
+
+    unsigned int summary_rows(std::vector<char> &bytes)
+    {
       hdf5::ErrorPrintingOff quiet;
       const hdf5::Handle     fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
-      if (fapl < 0 || H5Pset_file_locking(fapl, false, true) < 0)
+      // The image in memory: H5Fopen reads it, not the file of that name.
+      if (fapl < 0 || H5Pset_fapl_core(fapl, 1 << 16, false) < 0 ||
+          H5Pset_file_image(fapl, bytes.data(), bytes.size()) < 0)
         return 0;
-      const hdf5::Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, fapl), H5Fclose);
+      static unsigned long long count = 0;
+      const std::string name = "cdea-checkpoint-image-" + std::to_string(++count);
+      const hdf5::Handle file(H5Fopen(name.c_str(), H5F_ACC_RDONLY, fapl), H5Fclose);
       if (file < 0)
         return 0;
       const hdf5::Handle set(H5Dopen2(file, "/summary/stage", H5P_DEFAULT), H5Dclose);
@@ -93,12 +115,17 @@ namespace cdea
       return static_cast<unsigned int>(rows);
     }
 
-    std::vector<char> file_bytes(const std::string &path)
+    Checkpoint read_checkpoint(const std::string &path)
     {
-      const FileRead read = read_regular_file(path, max_journal_bytes);
-      if (!read.ok)
-        throw OutputError("cannot read " + path + ": " + read.error);
-      return std::vector<char>(read.bytes.begin(), read.bytes.end());
+      Checkpoint  c;
+      ReadOptions options;
+      options.follow_links = false;
+      const FileRead read  = read_regular_file(path, max_journal_bytes, options);
+      if (!read.ok || read.bytes.empty())
+        return c;
+      c.bytes.assign(read.bytes.begin(), read.bytes.end());
+      c.steps = summary_rows(c.bytes);
+      return c;
     }
 
     std::string where_to(const std::string &path, const bool into_path_if_free)
@@ -126,7 +153,8 @@ namespace cdea
       r.found                       = true;
       r.damaged                     = true;
       const std::string  checkpoint = checkpoint_of(path);
-      const unsigned int saved      = checkpoint_steps(checkpoint);
+      Checkpoint         copy       = read_checkpoint(checkpoint);
+      const unsigned int saved      = copy.steps;
       const std::string  kept =
         "; the journal" + std::string(file_exists(checkpoint) ? " and " + checkpoint : "") +
         " are kept: remove them once you have what you need";
@@ -138,7 +166,7 @@ namespace cdea
       r.file = where_to(path, into_path_if_free);
       std::vector<char> bytes;
       if (saved > steps)
-        bytes = file_bytes(checkpoint);
+        bytes = std::move(copy.bytes);
       else
         {
           replay.document->set_root_attribute(
@@ -165,7 +193,8 @@ namespace cdea
     {
       Recovery           r;
       const std::string  checkpoint = checkpoint_of(path);
-      const unsigned int steps      = checkpoint_steps(checkpoint);
+      const Checkpoint   copy       = read_checkpoint(checkpoint);
+      const unsigned int steps      = copy.steps;
       r.found                       = true;
       if (steps == 0)
         {
@@ -177,10 +206,13 @@ namespace cdea
             throw OutputError(r.message);
           return r;
         }
-      r.file = where_to(path, into_path_if_free);
-      if (std::rename(checkpoint.c_str(), r.file.c_str()) != 0)
-        throw OutputError("cannot move the checkpoint " + checkpoint + " to " + r.file + ": " +
-                          std::strerror(errno));
+      // Copied, not renamed: the bytes checked are the bytes written.
+      r.file                 = where_to(path, into_path_if_free);
+      const WriteOutcome out = replace_file(r.file, copy.bytes, true);
+      if (!out.ok)
+        throw OutputError("cannot write the checkpoint's steps: " + out.message +
+                          " (the checkpoint " + checkpoint + " is kept)");
+      remove_file(checkpoint);
       r.steps   = steps;
       r.message = "there is no journal " + journal_of(path) + "; the checkpoint's " +
                   std::to_string(steps) + " step(s) (the run as it was at its last " +

@@ -115,7 +115,7 @@ namespace cdea
       ++checkpoints;
     }
 
-    Finish finish(const std::string &status);
+    Finish finish(const std::string &status, bool keep_older);
 
     /// The steps of finish(): the output directory vanished during the run,
     /// so create it again and take the lock (@p owner: it was free; the
@@ -183,7 +183,7 @@ namespace cdea
   ResultsFile::~ResultsFile()
   {
     if (impl && !impl->finished)
-      impl->finish("ended without finishing: the program left the run early");
+      impl->finish("ended without finishing: the program left the run early", true);
   }
 
   ResultsFile::ResultsFile(ResultsFile &&) noexcept            = default;
@@ -240,16 +240,16 @@ namespace cdea
     d.document->set_summary_attribute(name, values, rows, columns);
   }
 
-  ResultsFile::Finish ResultsFile::finish(const std::string &status)
+  ResultsFile::Finish ResultsFile::finish(const std::string &status, const bool keep_older)
   {
     if (impl->finished)
       return impl->finish_result;
     impl->finished      = true;
-    impl->finish_result = impl->finish(status);
+    impl->finish_result = impl->finish(status, keep_older);
     return impl->finish_result;
   }
 
-  ResultsFile::Finish ResultsFile::Impl::finish(const std::string &status)
+  ResultsFile::Finish ResultsFile::Impl::finish(const std::string &status, const bool keep_older)
   {
     Finish             f;
     const unsigned int n = document->n_steps();
@@ -260,6 +260,12 @@ namespace cdea
         const bool  vanished = !(DirectoryIdentity::of(directory) == directory_id);
         bool        owner    = true; // the journal and lock at file_path are ours
         std::string target   = vanished ? reclaim_directory(owner, f) : file_path;
+        // Cut short: an older file stays, the steps go to the checkpoint's name.
+        if (keep_older && !vanished && file_exists(file_path))
+          {
+            target = checkpoint_of(file_path);
+            f.messages.push_back(file_path + " (older results) is kept as it was");
+          }
         const std::size_t  full_size = document->image_size();
         const WriteOutcome out       = replace_file(target, document->image(), true);
         if (out.ok)
@@ -271,7 +277,8 @@ namespace cdea
               {
                 // The checkpoint first: a kill between the two leaves a
                 // journal, whose recovery removes both, not a lone checkpoint.
-                remove_file(checkpoint_of(file_path));
+                if (target != checkpoint_of(file_path))
+                  remove_file(checkpoint_of(file_path));
                 remove_file(journal_of(file_path));
               }
             lock.release();

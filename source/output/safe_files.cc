@@ -1,7 +1,12 @@
+// Whole files replaced atomically, alone or in groups, and the names of
+// cdea's side files (safe_files.h).
+#include <cdea/base/file_reading.h>
 #include <cdea/output/safe_files.h>
 
+#include "folder_entry.h"
+
 #include <fcntl.h>
-#include <sys/file.h>
+#include <stdio.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -9,15 +14,184 @@
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
-#include <system_error>
 
 namespace cdea
 {
-  namespace
+  namespace files
   {
+    FolderEntry::FolderEntry(const std::string &path)
+    {
+      const auto slash = path.rfind('/');
+      file = slash == std::string::npos ? path : path.substr(slash + 1);
+      const std::string dir =
+        slash == std::string::npos ? std::string(".") : slash == 0 ? "/" : path.substr(0, slash);
+      if (file.empty() || file == "." || file == "..")
+        {
+          why = "'" + path + "' names no file";
+          return;
+        }
+      folder = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+      if (folder < 0)
+        why = "cannot open the folder " + system_message(dir, errno);
+    }
+
+    FolderEntry::~FolderEntry()
+    {
+      if (folder >= 0)
+        ::close(folder);
+    }
+
+    bool FolderEntry::stat(struct stat &st, const std::string &entry) const
+    {
+      return ::fstatat(folder, (entry.empty() ? file : entry).c_str(), &st,
+                       AT_SYMLINK_NOFOLLOW) == 0;
+    }
+
+    bool FolderEntry::remove_regular(const std::string &entry) const
+    {
+      struct stat st = {};
+      if (!stat(st, entry))
+        return true;
+      if (!S_ISREG(st.st_mode))
+        return false;
+      return ::unlinkat(folder, entry.c_str(), 0) == 0 || errno == ENOENT;
+    }
+
     std::string system_message(const std::string &path, const int error)
     {
       return path + ": " + std::strerror(error);
+    }
+  } // namespace files
+
+  using files::FolderEntry;
+  using files::system_message;
+
+  namespace
+  {
+    /// The group whose renames replace_file() holds back (one at a time).
+    ReplaceTogether *active_group = nullptr;
+
+    /// Why the entry cannot take a file of ours, "" if it can.
+    std::string refusal(const FolderEntry &at, const std::string &entry)
+    {
+      struct stat st = {};
+      if (!at.stat(st, entry) || S_ISREG(st.st_mode))
+        return "";
+      return "it is " + file_kind(st.st_mode) +
+             " (cdea replaces only a regular file or nothing; remove it or choose another name)";
+    }
+
+    /// The temporary file "<name>.tmp" created new (a leftover regular file
+    /// removed first, anything else refused); -1 with @p outcome filled.
+    int create_temporary(const FolderEntry &at, const std::string &tmp_path, WriteOutcome &outcome)
+    {
+      const std::string tmp = at.name() + ".tmp";
+      for (int attempt = 0; attempt < 3; ++attempt)
+        {
+          if (!at.remove_regular(tmp))
+            {
+              outcome.error   = EEXIST;
+              outcome.message = tmp_path + ": " + refusal(at, tmp);
+              return -1;
+            }
+          const int fd = ::openat(at.folder_fd(), tmp.c_str(),
+                                  O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+          if (fd >= 0 || errno != EEXIST)
+            {
+              if (fd < 0)
+                {
+                  outcome.error   = errno;
+                  outcome.message = system_message(tmp_path, errno);
+                }
+              return fd;
+            }
+        }
+      outcome.error   = EEXIST;
+      outcome.message = tmp_path + ": it keeps being created by someone else";
+      return -1;
+    }
+
+    /// The whole of @p bytes into @p fd (optionally synced); false with
+    /// @p outcome filled on failure.
+    bool write_all(const int fd, const std::vector<char> &bytes, const bool sync,
+                   const std::string &tmp_path, WriteOutcome &outcome)
+    {
+      while (outcome.written < bytes.size())
+        {
+          const ssize_t n =
+            ::write(fd, bytes.data() + outcome.written, bytes.size() - outcome.written);
+          if (n < 0 && errno == EINTR)
+            continue;
+          if (n <= 0)
+            {
+              outcome.error   = n < 0 ? errno : ENOSPC;
+              outcome.message = system_message(tmp_path, outcome.error);
+              return false;
+            }
+          outcome.written += std::size_t(n);
+        }
+      if (sync && ::fsync(fd) != 0)
+        {
+          outcome.error   = errno;
+          outcome.message = system_message(tmp_path, errno);
+          return false;
+        }
+      return true;
+    }
+
+    /// Renames the entry @p from onto @p to in the folder: only onto a
+    /// regular file, or onto nothing (then never onto a name taken
+    /// meanwhile). 0 or the errno; @p why says more for a refused target.
+    int rename_onto(const FolderEntry &at, const std::string &from, const std::string &to,
+                    std::string &why)
+    {
+      for (int attempt = 0; attempt < 3; ++attempt)
+        {
+          why = refusal(at, to);
+          if (!why.empty())
+            return EEXIST;
+          struct stat st = {};
+          if (at.stat(st, to))
+            return ::renameat(at.folder_fd(), from.c_str(), at.folder_fd(), to.c_str()) == 0 ?
+                     0 :
+                     errno;
+          if (::renameat2(at.folder_fd(), from.c_str(), at.folder_fd(), to.c_str(),
+                          RENAME_NOREPLACE) == 0)
+            return 0;
+          if (errno == EINVAL || errno == ENOSYS) // a file system without it
+            return ::renameat(at.folder_fd(), from.c_str(), at.folder_fd(), to.c_str()) == 0 ?
+                     0 :
+                     errno;
+          if (errno != EEXIST)
+            return errno;
+        }
+      return EEXIST;
+    }
+
+    /// The rename of "<path>.tmp" onto @p target (both in @p path's folder).
+    WriteOutcome rename_temporary(const std::string &path, const std::string &target,
+                                  const bool sync)
+    {
+      WriteOutcome      outcome;
+      const FolderEntry at(path), onto(target);
+      std::string       why;
+      const int error = !at.ok()   ? ENOENT :
+                        !onto.ok() ? ENOENT :
+                                     rename_onto(at, at.name() + ".tmp", onto.name(), why);
+      if (error != 0)
+        {
+          if (at.ok())
+            at.remove_regular(at.name() + ".tmp");
+          outcome.error   = error;
+          outcome.message = !at.ok()     ? at.error() :
+                            !why.empty() ? target + ": " + why :
+                                           system_message(target, error);
+          return outcome;
+        }
+      if (sync)
+        ::fsync(at.folder_fd()); // the rename itself on disk
+      outcome.ok = true;
+      return outcome;
     }
   } // namespace
 
@@ -25,201 +199,141 @@ namespace cdea
                             const bool sync)
   {
     WriteOutcome      outcome;
-    const std::string tmp = path + ".tmp";
-    const auto        failed = [&](const int error, const int fd) {
-      outcome.error   = error;
-      outcome.message = system_message(tmp, error);
-      if (fd >= 0)
-        ::close(fd);
-      ::unlink(tmp.c_str());
-      return outcome;
-    };
-    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd < 0)
-      return failed(errno, -1);
-    while (outcome.written < bytes.size())
+    const std::string tmp_path = path + ".tmp";
+    const FolderEntry at(path);
+    if (!at.ok())
       {
-        const ssize_t n =
-          ::write(fd, bytes.data() + outcome.written, bytes.size() - outcome.written);
-        if (n < 0 && errno == EINTR)
-          continue;
-        if (n <= 0)
-          return failed(n < 0 ? errno : ENOSPC, fd);
-        outcome.written += std::size_t(n);
-      }
-    if (sync && ::fsync(fd) != 0)
-      return failed(errno, fd);
-    if (::close(fd) != 0)
-      return failed(errno, -1);
-    if (::rename(tmp.c_str(), path.c_str()) != 0)
-      {
-        const int error = errno;
-        ::unlink(tmp.c_str());
-        outcome.error   = error;
-        outcome.message = system_message(path, error);
+        outcome.error   = EINVAL;
+        outcome.message = at.error();
         return outcome;
       }
-    outcome.ok = true;
+    if (const std::string why = refusal(at, at.name()); !why.empty())
+      {
+        outcome.error   = EEXIST;
+        outcome.message = path + ": " + why;
+        return outcome;
+      }
+    const int fd = create_temporary(at, tmp_path, outcome);
+    if (fd < 0)
+      return outcome;
+    const bool whole = write_all(fd, bytes, sync, tmp_path, outcome);
+    if (::close(fd) != 0 && whole)
+      {
+        outcome.error   = errno;
+        outcome.message = system_message(tmp_path, errno);
+      }
+    if (!outcome.message.empty())
+      {
+        at.remove_regular(at.name() + ".tmp");
+        return outcome;
+      }
+    if (active_group && active_group->holds(path))
+      {
+        active_group->hold(path);
+        outcome.ok = true;
+        return outcome;
+      }
+    outcome = rename_temporary(path, path, sync);
+    outcome.written = bytes.size();
     return outcome;
   }
 
-  OutputLock::~OutputLock() { release(); }
-
-  OutputLock::OutputLock(OutputLock &&other) noexcept
-    : fd(other.fd)
-    , lock_path(std::move(other.lock_path))
+  ReplaceTogether::ReplaceTogether(std::vector<std::string> paths_)
+    : paths(std::move(paths_))
+    , written(paths.size(), false)
   {
-    other.fd = -1;
+    if (active_group)
+      throw std::logic_error("ReplaceTogether: a group is already open");
+    active_group = this;
   }
 
-  OutputLock &OutputLock::operator=(OutputLock &&other) noexcept
+  ReplaceTogether::~ReplaceTogether()
   {
-    if (this != &other)
-      {
-        release();
-        fd        = other.fd;
-        lock_path = std::move(other.lock_path);
-        other.fd  = -1;
-      }
-    return *this;
+    if (active_group == this)
+      active_group = nullptr;
+    if (committed)
+      return;
+    for (std::size_t k = 0; k < paths.size(); ++k)
+      if (written[k])
+        remove_file(paths[k] + ".tmp");
   }
 
-  bool OutputLock::acquire(const std::string &path, std::string &why)
+  bool ReplaceTogether::holds(const std::string &path) const
   {
-    release();
-    const std::string name = path + ".lock";
-    // The lock file is deleted by its holder on release: a lock taken on a
-    // file that has meanwhile been deleted or replaced is worthless, so the
-    // path must still name the locked file afterwards.
-    for (int attempt = 0; attempt < 100; ++attempt)
-      {
-        const int f = ::open(name.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-        if (f < 0)
-          {
-            why = "cannot create the lock file " + system_message(name, errno);
-            return false;
-          }
-        if (::flock(f, LOCK_EX | LOCK_NB) != 0)
-          {
-            const int error = errno;
-            char      holder[32] = {};
-            const ssize_t n = ::pread(f, holder, sizeof(holder) - 1, 0);
-            ::close(f);
-            if (error != EWOULDBLOCK)
-              {
-                why = "cannot lock " + system_message(name, error);
-                return false;
-              }
-            std::string pid = n > 0 ? std::string(holder, std::size_t(n)) : std::string();
-            while (!pid.empty() && (pid.back() == '\n' || pid.back() == ' '))
-              pid.pop_back();
-            why = "another cdea process" + (pid.empty() ? std::string() : " (pid " + pid + ")") +
-                  " is writing " + path + " (lock file " + name + ")";
-            return false;
-          }
-        struct stat locked, named;
-        if (::fstat(f, &locked) == 0 && ::stat(name.c_str(), &named) == 0 &&
-            locked.st_dev == named.st_dev && locked.st_ino == named.st_ino)
-          {
-            const std::string pid = std::to_string(::getpid()) + "\n";
-            if (::ftruncate(f, 0) != 0 || ::pwrite(f, pid.data(), pid.size(), 0) < 0)
-              {
-                // Unreadable holder id: the lock itself still holds.
-              }
-            fd        = f;
-            lock_path = name;
-            return true;
-          }
-        ::close(f);
-      }
-    why = "cannot take the lock " + name + ": it keeps being replaced";
+    for (const std::string &p : paths)
+      if (p == path)
+        return true;
     return false;
   }
 
-  void OutputLock::release() noexcept
+  void ReplaceTogether::hold(const std::string &path)
   {
-    if (fd < 0)
-      return;
-    // Unlink while still holding the lock: a waiting process then finds the
-    // path gone or new and retries (see acquire()).
-    ::unlink(lock_path.c_str());
-    ::close(fd);
-    fd = -1;
+    for (std::size_t k = 0; k < paths.size(); ++k)
+      if (paths[k] == path)
+        written[k] = true;
   }
 
-  bool claim_output(const std::string &path, OutputLock &lock, std::string &why,
-                    std::vector<std::string> *created_out)
+  namespace
   {
-    std::vector<std::string> created;
-    try
-      {
-        const std::string directory = parent_directory(path);
-        created                     = create_directories(directory);
-        if (::access(directory.c_str(), W_OK) != 0)
-          why = "the directory '" + directory + "' is not writable";
-        else if (DirectoryIdentity::of(path).valid)
-          why = "it is a directory";
-        else
-          lock.acquire(path, why);
-      }
-    catch (const std::exception &e)
-      {
-        why = e.what();
-      }
-    if (!lock.held())
-      remove_created_directories(created);
-    else if (created_out)
-      *created_out = created;
-    return lock.held();
-  }
+    /// Puts back what a failed group commit replaced: the older file from
+    /// its hard link "<target>.older", or nothing where there was none (an
+    /// older file without that link cannot come back: the new one stays).
+    void take_back(const std::string &target, const bool existed, const bool linked) noexcept
+    {
+      if (linked)
+        std::rename((target + ".older").c_str(), target.c_str());
+      else if (!existed)
+        remove_file(target);
+    }
+  } // namespace
 
-  std::vector<std::string> create_directories(const std::string &directory)
+  std::vector<std::string> ReplaceTogether::commit(const bool keep_older)
   {
-    namespace fs = std::filesystem;
-    std::vector<std::string> created;
-    fs::path                 walked;
-    for (const fs::path &part : fs::path(directory))
+    if (active_group == this)
+      active_group = nullptr;
+    committed = true;
+    const std::size_t        n = paths.size();
+    std::vector<std::string> targets(n);
+    bool                     older = false;
+    for (std::size_t k = 0; k < n; ++k)
+      older = older || (written[k] && file_exists(paths[k]));
+    // Each older file keeps a second name until every rename is done, so
+    // that a failed rename can take the earlier ones back.
+    std::vector<bool> existed(n, false), linked(n, false);
+    for (std::size_t k = 0; k < n; ++k)
+      if (written[k])
+        {
+          targets[k] = keep_older && older ? partial_name(paths[k]) : paths[k];
+          existed[k] = file_exists(targets[k]);
+          if (n > 1 && existed[k] && not_replaceable(targets[k]).empty())
+            {
+              remove_file(targets[k] + ".older");
+              linked[k] = ::link(targets[k].c_str(), (targets[k] + ".older").c_str()) == 0;
+            }
+        }
+    for (std::size_t k = 0; k < n; ++k)
       {
-        walked /= part;
-        if (part.empty() || part == "/" || part == "." || part == "..")
+        if (!written[k])
           continue;
-        if (::mkdir(walked.c_str(), 0755) == 0)
-          created.push_back(walked.string());
-        else if (errno != EEXIST)
-          {
-            const int error = errno;
-            remove_created_directories(created);
-            throw std::runtime_error("cannot create directory " +
-                                     system_message(walked.string(), error));
-          }
+        const WriteOutcome out = rename_temporary(paths[k], targets[k], true);
+        if (out.ok)
+          continue;
+        for (std::size_t j = k + 1; j < n; ++j)
+          if (written[j])
+            remove_file(paths[j] + ".tmp");
+        for (std::size_t j = 0; j < k; ++j)
+          if (written[j])
+            take_back(targets[j], existed[j], linked[j]);
+        for (std::size_t j = k; j < n; ++j)
+          if (linked[j])
+            remove_file(targets[j] + ".older");
+        throw OutputError("cannot write " + out.message +
+                          (k > 0 ? " (the files written with it were taken back)" : ""));
       }
-    struct stat s;
-    if (::stat(directory.c_str(), &s) != 0 || !S_ISDIR(s.st_mode))
-      {
-        remove_created_directories(created);
-        throw std::runtime_error("cannot create directory '" + directory +
-                                 "': a file of that name is in the way");
-      }
-    return created;
-  }
-
-  void remove_created_directories(const std::vector<std::string> &created) noexcept
-  {
-    for (auto it = created.rbegin(); it != created.rend(); ++it)
-      ::rmdir(it->c_str());
-  }
-
-  DirectoryIdentity DirectoryIdentity::of(const std::string &directory)
-  {
-    DirectoryIdentity id;
-    struct stat       s;
-    if (::stat(directory.c_str(), &s) == 0 && S_ISDIR(s.st_mode))
-      {
-        id.device = s.st_dev;
-        id.inode  = s.st_ino;
-        id.valid  = true;
-      }
-    return id;
+    for (std::size_t k = 0; k < n; ++k)
+      if (linked[k])
+        remove_file(targets[k] + ".older");
+    return targets;
   }
 
   std::string parent_directory(const std::string &path)
@@ -237,6 +351,16 @@ namespace cdea
     return path + tag;
   }
 
+  std::string partial_name(const std::string &path)
+  {
+    const auto slash = path.rfind('/');
+    const auto dot   = path.rfind('.');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash) ||
+        dot == (slash == std::string::npos ? 0 : slash + 1))
+      return path + ".partial";
+    return path.substr(0, dot) + ".partial" + path.substr(dot);
+  }
+
   std::string free_sibling_name(const std::string &path, const std::string &tag)
   {
     std::string candidate = sibling_name(path, tag);
@@ -251,5 +375,27 @@ namespace cdea
     return ::lstat(path.c_str(), &s) == 0;
   }
 
-  void remove_file(const std::string &path) noexcept { ::unlink(path.c_str()); }
+  void remove_file(const std::string &path) noexcept
+  {
+    const FolderEntry at(path);
+    if (at.ok())
+      at.remove_regular(at.name());
+  }
+
+  std::string not_replaceable(const std::string &path)
+  {
+    const FolderEntry at(path);
+    if (at.ok())
+      return refusal(at, at.name());
+    return file_exists(parent_directory(path)) || at.name().empty() ? at.error() : "";
+  }
+
+  std::string refused_names(const std::string &path)
+  {
+    for (const std::string &name :
+         {path, path + ".tmp", partial_name(path), partial_name(path) + ".tmp"})
+      if (const std::string why = not_replaceable(name); !why.empty())
+        return name == path ? why : "its side file " + name + ": " + why;
+    return "";
+  }
 } // namespace cdea

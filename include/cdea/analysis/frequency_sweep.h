@@ -39,6 +39,12 @@ namespace cdea
     double usable_factor = 0.;
     double seconds       = 0.;
     bool   all_converged = true;
+    /// Frequencies not computed because a stop was asked for (SIGINT,
+    /// SIGTERM, SIGHUP in `cdea frequency-sweep`): NaN in their periods, the
+    /// message "not computed: interrupted by SIGINT"; stop_reason the part
+    /// after "not computed: ".
+    std::size_t not_computed = 0;
+    std::string stop_reason;
   };
 
   /// The sweep. Collective over MPI_COMM_WORLD: the frequencies are dealt
@@ -46,7 +52,9 @@ namespace cdea
   /// and rank 0 gathers them (the other ranks return no periods). On rank 0,
   /// @p on_frequency is called once per frequency as it is done: with its
   /// period if rank 0 computed it, with nullptr if another rank did (its
-  /// period comes with the gather).
+  /// period comes with the gather). After a stop request
+  /// (StopOnSignals::requested()) the frequencies not begun are left out
+  /// (FrequencySweepResult::not_computed) and not reported.
   FrequencySweepResult
   frequency_sweep(const RunInput &input, const FrequencySweepSettings &s,
                   const std::function<void(const SteadyPeriod *)> &on_frequency);

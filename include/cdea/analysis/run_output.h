@@ -6,7 +6,8 @@
 // command front turns into a stop request, StopOnSignals) stops the run at
 // that step boundary; a stop or an output error ends the run as incomplete
 // instead of killing it; at the end the file is written whole and renamed
-// into place (doc/usage.md, "What survives what").
+// into place, or, for a run cut short by a signal or an error, beside an
+// older file to <stem>.partial.h5 (doc/usage.md, "What survives what").
 
 #include <cdea/base/run_control.h>
 #include <cdea/output/results_file.h>
@@ -41,8 +42,12 @@ namespace cdea
     bool prepare(const std::function<void()> &setup);
 
     /// Runs @p run; a stop, an output error or another error ends it as
-    /// incomplete with the reason (the steps so far stay).
+    /// incomplete with the reason (the steps so far stay; after a stop or an
+    /// error beside an older file, which stays: ResultsFile::finish()).
     RunResult guard(const std::function<RunResult()> &run);
+
+    /// A signal or an error cut the run short (after guard()).
+    bool cut_short() const { return was_cut_short; }
 
     /// Writes the file, prints where the steps went (and why not all, if
     /// so) and returns the exit code of the run.
@@ -51,5 +56,7 @@ namespace cdea
   private:
     RunOutput() = default;
     std::unique_ptr<ResultsFile> results;
+    bool was_cut_short = false; ///< a signal or an error stopped the run
+
   };
 } // namespace cdea

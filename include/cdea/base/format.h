@@ -14,6 +14,8 @@ namespace cdea
   std::string format_number(double value, int digits = 6);
   /// A number with @p decimals digits after the point, right-aligned in @p width.
   std::string format_fixed(double value, int decimals, int width = 0);
+  /// A size in bytes as "25 kB", "11.7 MB", "1.2 GB" (3 significant digits).
+  std::string format_bytes(double bytes);
   /// A number with 17 significant digits, read back as the same double (for
   /// parameter files written by cdea).
   std::string exact_number(double value);

@@ -34,9 +34,15 @@ namespace cdea
                          int label_width);
 
   /// How every fit ends: @p write_results (the fit file, and the parameter
-  /// file with the fitted values if any), "wrote ...", and the exit code:
-  /// 2 if writing failed (older files stay), a stop was asked for or the fit
-  /// did not converge (each said on stderr), else 0.
+  /// file with the fitted values if any, replaced together or not at all;
+  /// after a stop beside older ones, to their partial names), "wrote ...",
+  /// and the exit code: 2 if writing failed (older files stay), a stop was
+  /// asked for or the fit did not converge (each said on stderr), else 0.
   int finish_fit(const std::function<void()> &write_results, const std::string &h5_path,
                  const std::string &prm_path, const FitResult &r);
+
+  /// A fit that could not start (its start values failed, or a stop was
+  /// asked for during the start's evaluation): nothing is written (an older
+  /// fit stays), @p status said; exit 1, or 2 after a stop.
+  int fit_not_started(Invocation &invocation, const std::string &status, const std::string &hint);
 } // namespace cdea

@@ -216,6 +216,7 @@ namespace cdea
       std::string ring_edge_values_text;    ///< "1.2, 1.25, 1.3, ..., 2.6"
       double      inner_voltage_kV;
       std::string outer_voltage_range_text; ///< "from, to, step"
+      bool        confirm_long;             ///< more than 1e6 map points allowed
       void        declare(ParameterDeclarations &prm);
     };
 
@@ -280,6 +281,7 @@ namespace cdea
       bool        log_spacing;
       std::string frequency_list; ///< "Frequencies (Hz)" as given; empty: the range
       double      usable_factor;
+      bool        confirm_long; ///< more than 1000 frequencies allowed
       void        declare(ParameterDeclarations &prm);
     };
 

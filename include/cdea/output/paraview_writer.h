@@ -29,6 +29,7 @@
 
 #include <cdea/model/records.h>
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -38,20 +39,35 @@ namespace cdea
   {
   public:
     /// Prepares the partial folder for @p stem (a partial output left by a
-    /// killed run of the same name is replaced). Throws std::runtime_error
-    /// naming the path if it cannot be created.
+    /// killed run of the same name is replaced; anything else of that name
+    /// is refused). Throws std::runtime_error naming the path if it cannot
+    /// be created.
     ParaViewWriter(const std::string &stem, unsigned int segments);
 
     /// Writes the VTU of one converged step and the partial PVD. Throws
-    /// std::runtime_error naming the file if writing fails.
+    /// std::runtime_error naming the file if writing fails, or if the file
+    /// would be larger than max_step_file_bytes.
     void write_step(const StepSummary &summary, const StepFields &fields);
 
     /// Moves the output in place: <stem>_vtu/ and <stem>.pvd, replacing
-    /// an older output of that name. Throws std::runtime_error on failure.
+    /// an older output of that name (a folder, never a link or a file).
+    /// Throws std::runtime_error on failure.
     void finish();
 
     /// Number of steps written.
     unsigned int n_steps() const { return static_cast<unsigned int>(times.size()); }
+
+    /// An older output of the name is there (<stem>.pvd or <stem>_vtu/): a
+    /// run cut short leaves it and keeps its own partial output.
+    bool older_output_exists() const;
+
+    /// The size of the VTU file of a step of @p samples samples (bytes; at
+    /// most about 10 % above it: 423 kB for the 385 kB of prm/paraview.prm's
+    /// steps), and the largest allowed: a step's file is
+    /// built in memory, so a larger one is refused (write_step() throws, and
+    /// the input check refuses it up front: input/validation.cc).
+    static double           step_file_bytes(std::size_t samples, unsigned int segments);
+    static constexpr double max_step_file_bytes = 256e6;
 
     /// The PVD time of a step with stage parameter @p tau = stage - 2 + t after
     /// one at @p previous_tau with time @p previous_time (first step:
@@ -62,6 +78,9 @@ namespace cdea
   private:
     std::string         stem, name;
     unsigned int        segments;
+    /// The partial folder as made (device, inode): one swapped for another
+    /// or a link during the run is not written into.
+    unsigned long long  folder_device = 0, folder_inode = 0;
     std::vector<double> times;
     double              last_tau = 0.;
     bool                turned   = false;

@@ -33,8 +33,9 @@
 // <file>.journal; at most about once a second (CDEA_CHECKPOINT_SECONDS) the
 // whole file is written to <stem>.partial.h5 by write-then-rename; finish()
 // writes <file> the same way and removes the journal, the checkpoint and the
-// lock <file>.lock. Until then an older <file> is not touched. A killed run
-// leaves the journal, which recover_results() turns into a file.
+// lock <file>.lock. Until then an older <file> is not touched, and a run cut
+// short leaves it alone for good (its steps go to <stem>.partial.h5). A killed
+// run leaves the journal, which recover_results() turns into a file.
 
 #include <cdea/model/records.h>
 #include <cdea/output/safe_files.h>
@@ -126,14 +127,16 @@ namespace cdea
 
     /// Ends the run's output: sets the root attribute run_status to
     /// @p status and writes the file at path() (written whole, then renamed
-    /// onto any older file). If the output directory vanished it is created
+    /// onto any older file); with @p keep_older (the run was cut short: a
+    /// signal, an error) an older file at path() stays as it is and the
+    /// steps go beside it to <stem>.partial.h5. If the output directory vanished it is created
     /// again; if the file does not fit (disk full, file size limit), the
     /// leading steps that fit are written, to path() if nothing is there,
     /// else beside an older file (which stays as it is) to the checkpoint's
     /// name <stem>.partial.h5, and the journal is kept. Then the journal,
     /// checkpoint and lock go. Never throws; calls after the first do
     /// nothing.
-    Finish finish(const std::string &status);
+    Finish finish(const std::string &status, bool keep_older = false);
 
     /// Gives the output up before its first step (a write failed): removes
     /// the journal, the lock and the directories this run created, and
