@@ -23,7 +23,7 @@ namespace cdea
   namespace
   {
     /// A postprocessor's column of @p s in the file's unit (NaN if absent).
-    double column(const StepSummary &s, const OutputField &c) { return s.columns.in_file_units(c); }
+    double column(const StepSummary &s, const Quantity &c) { return s.columns.in_file_units(c); }
 
     /// "-" for NaN, else fixed-point with @p decimals.
     std::string fixed_or_dash(const double value, const int decimals)

@@ -37,7 +37,7 @@ namespace cdea
     }
 
     /// A postprocessor's column of @p s in the file's unit (NaN if absent).
-    double column(const StepSummary &s, const OutputField &c) { return s.columns.in_file_units(c); }
+    double column(const StepSummary &s, const Quantity &c) { return s.columns.in_file_units(c); }
 
     /// One cell of the progress table: a blank, then the value right-aligned in
     /// @p width - 1 characters ("-" if it is NaN), so that columns never run

@@ -407,7 +407,7 @@ namespace cdea
     for (const auto &entry : summary.columns)
       if (std::find(described.begin(), described.end(), entry.first) == described.end())
         {
-          describe_column(entry.first->name, entry.first->unit, entry.first->description);
+          describe_column(entry.first->name, entry.first->unit.name, entry.first->description);
           described.push_back(entry.first);
         }
     Encoder out;

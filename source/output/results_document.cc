@@ -31,9 +31,9 @@ namespace cdea
     }
 
     /// The values of a row of the table in the file's unit.
-    std::vector<double> file_values(const OutputField &row, const StepSummary &summary)
+    std::vector<double> file_values(const Quantity &row, const StepSummary &summary)
     {
-      return scaled(row.summary_values(summary), row.factor);
+      return in_unit(row.summary_values(summary), row.unit);
     }
   } // namespace
 
@@ -109,16 +109,16 @@ namespace cdea
                     H5Dclose);
     }
 
-    void add_standard_column(const OutputField &row)
+    void add_standard_column(const Quantity &row)
     {
       const bool is_int   = row.storage == Storage::integer;
-      const bool per_ring = row.shape == Shape::per_ring;
+      const bool per_ring = row.shape == shape::step_ring;
       Column     column;
       column.width       = per_ring ? rings : 1;
       column.memory_type = is_int ? H5T_NATIVE_INT : H5T_NATIVE_DOUBLE;
       column.dataset     = create_summary_dataset(row.name, is_int ? H5T_STD_I32LE : H5T_IEEE_F64LE,
                                                   per_ring ? rings : 0, 0);
-      w.describe(column.dataset, row.unit, row.description);
+      w.describe(column.dataset, row.unit.name, row.description);
       standard_columns.push_back(std::move(column));
       standard_names.insert(row.name);
     }
@@ -204,10 +204,10 @@ namespace cdea
   /// The standard /summary columns of row `rows`, from the table.
   void ResultsDocument::Impl::write_standard_row(const StepSummary &s)
   {
-    const std::vector<const OutputField *> &rows_of_table = standard_summary_columns();
+    const std::vector<const Quantity *> &rows_of_table = standard_summary_columns();
     for (std::size_t c = 0; c < rows_of_table.size(); ++c)
       {
-        const OutputField  &row    = *rows_of_table[c];
+        const Quantity  &row    = *rows_of_table[c];
         const Column       &column = standard_columns[c];
         const std::vector<double> values = file_values(row, s);
         extend(row.name, column, rows + 1);
@@ -247,12 +247,12 @@ namespace cdea
     Handle group(w.check(H5Gcreate2(steps, group_name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                          std::string("H5Gcreate2(/steps/") + group_name + ")"),
                  H5Gclose);
-    for (const OutputField *row : step_attributes())
+    for (const Quantity *row : step_attributes())
       {
         const std::vector<double> values = file_values(*row, s);
         if (row->storage == Storage::integer)
           w.int_attribute(group, row->name, static_cast<int>(values[0]));
-        else if (row->shape == Shape::per_ring)
+        else if (row->shape == shape::step_ring)
           w.double_array_attribute(group, row->name, values);
         else
           w.double_attribute(group, row->name, values[0]);
@@ -262,11 +262,11 @@ namespace cdea
         {
           const std::vector<int> values = as_integers(step_field_values(row, fields));
           write_field(group, row.field.name, H5T_STD_I32LE, H5T_NATIVE_INT, values.data(),
-                      values.size(), row.field.unit, row.field.description);
+                      values.size(), row.field.unit.name, row.field.description);
         }
       else if (row.in_file)
         write_real_field(group, row.field.name,
-                         scaled(step_field_values(row, fields), row.field.factor), row.field.unit,
+                         in_unit(step_field_values(row, fields), row.field.unit), row.field.unit.name,
                          row.field.description);
     for (const InternalField &f : fields.internal)
       write_real_field(group, f.name, f.values, f.unit, f.description);
@@ -306,7 +306,7 @@ namespace cdea
                                  "H5Gcreate2(/steps)"),
                        H5Gclose);
 
-    for (const OutputField *row : standard_summary_columns())
+    for (const Quantity *row : standard_summary_columns())
       d.add_standard_column(*row);
 
     write_onset(OnsetRecord{});
@@ -360,7 +360,7 @@ namespace cdea
     Impl            &d = *impl;
     ErrorPrintingOff quiet;
     for (const auto &entry : summary.columns)
-      d.extra_descriptions[entry.first->name] = {entry.first->unit, entry.first->description};
+      d.extra_descriptions[entry.first->name] = {entry.first->unit.name, entry.first->description};
     d.write_standard_row(summary);
     d.write_extra_row(named_columns(summary, extra_columns));
     // A /summary row alone has no /steps group (time-dependent runs, doc/time.md).

@@ -57,7 +57,7 @@ namespace cdea
     std::size_t bytes = 0;
     std::string file;
     /// The columns of the table whose description is recorded.
-    std::vector<const OutputField *> described;
+    std::vector<const Quantity *> described;
     void        write_record(unsigned char type, const std::string &payload);
   };
 
