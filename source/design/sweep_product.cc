@@ -1,19 +1,16 @@
-// The map file of `cdea sweep`, <Directory>/<Base name>_map.h5, written with
-// the plain HDF5 C API by rank 0 after the rows have been gathered. The file
-// holds no run-dependent data (no times, no rank count, no object time
-// stamps), so a serial and a distributed run of the same map give the same file.
+// The product of `cdea sweep`, the design map (model/quantities_sweep.h):
+// written to <Directory>/<Base name>_map.h5 by rank 0 after the rows have
+// been gathered, and returned by the Python module. It holds no
+// run-dependent data (no times, no rank count), so a serial and a
+// distributed run of the same map give the same file.
 
 #include <cdea/analysis/run_record.h>
 #include <cdea/base/format.h>
 #include <cdea/design/sweep.h>
-#include <cdea/output/hdf5_support.h>
-#include <cdea/output/safe_files.h>
-
-#include <hdf5.h>
+#include <cdea/model/quantities_sweep.h>
 
 #include <algorithm>
 #include <limits>
-#include <stdexcept>
 
 #ifndef CDEA_VERSION
 #  define CDEA_VERSION "unknown"
@@ -25,68 +22,39 @@ namespace cdea
   {
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
-    using hdf5::ErrorPrintingOff;
-    using hdf5::Handle;
-  } // namespace
-
-  namespace
-  {
-    using Kind = MapFileContent::Kind;
-
     /// The root attributes: the parameters, the map's grid and its outcome.
-    void add_attributes(MapFileContent &content, const SweepMap &map,
-                        const std::string &parameter_text)
+    void add_attributes(ProductGroup &root, const SweepMap &map, const std::string &parameter_text)
     {
-      const SweepSettings &s    = map.settings;
-      const auto           text = [&](const std::string &name, const std::string &value) {
-        content.attributes.push_back({name, Kind::text, 0., value});
-      };
-      const auto real = [&](const std::string &name, const double value, const Kind kind) {
-        content.attributes.push_back({name, kind, value, ""});
-      };
-      text("parameters", parameter_text);
-      text("code_version", CDEA_VERSION);
-      text("method", to_string(RunMethod::finite_elements));
-      text("run_status", sweep_run_status(map));
-      real("inner_voltage_kV", s.inner_voltage / 1e3, Kind::real);
-      real("outer_voltage_from_kV", s.outer_from / 1e3, Kind::real);
-      real("outer_voltage_to_kV", s.outer_to / 1e3, Kind::real);
-      real("outer_voltage_step_kV", s.outer_step / 1e3, Kind::real);
-      real("line_tolerance_V", s.line_tolerance, Kind::real);
-      real("zero_voltage_displacement_mm", map.zero_voltage_displacement * 1e3, Kind::real);
-      real("n_rv", double(map.rows.size()), Kind::integer);
-      real("n_outer", double(s.outer_voltages.size()), Kind::integer);
-      std::string values;
+      using namespace sweep_quantity;
+      const SweepSettings &s = map.settings;
+      std::string          values;
       for (std::size_t i = 0; i < s.ring_edge_values.size(); ++i)
         values += (i ? ", " : "") + format_number(s.ring_edge_values[i], 12);
-      text("ring_edge_values", values);
+      root.set(sweep_quantity::parameters, parameter_text)
+        .set(code_version, CDEA_VERSION)
+        .set(method, to_string(RunMethod::finite_elements))
+        .set(sweep_quantity::run_status, sweep_run_status(map))
+        .set(inner_voltage, s.inner_voltage)
+        .set(outer_from, s.outer_from)
+        .set(outer_to, s.outer_to)
+        .set(outer_step, s.outer_step)
+        .set(line_tolerance, s.line_tolerance)
+        .set(sweep_quantity::zero_voltage_displacement, map.zero_voltage_displacement)
+        .set(n_rv, map.rows.size())
+        .set(n_outer, s.outer_voltages.size())
+        .set(ring_edge_values, values);
     }
 
-    /// The datasets of a map, added in the file's order: one value per row,
-    /// rows x outer voltages, or rows x the inner edges of both rings.
-    class MapDatasets
+    /// The values of a map over its rows (SI): one per row, rows x outer
+    /// voltages, or rows x the inner edges of both rings.
+    class MapValues
     {
     public:
-      MapDatasets(MapFileContent &content, const SweepMap &map)
-        : content(content)
-        , map(map)
+      explicit MapValues(const SweepMap &map)
+        : map(map)
         , n(map.rows.size())
         , m(map.settings.outer_voltages.size())
       {}
-
-      void add(const std::string &name, const std::vector<std::size_t> &dims,
-               std::vector<double> values, const std::string &unit,
-               const std::string &description, const Kind kind = Kind::real)
-      {
-        MapFileContent::Dataset d;
-        d.name        = name;
-        d.unit        = unit;
-        d.description = description;
-        d.dims        = dims;
-        d.kind        = kind;
-        d.values      = std::move(values);
-        content.datasets.push_back(std::move(d));
-      }
 
       template <typename Get>
       std::vector<double> per_row(const Get &get) const
@@ -97,135 +65,101 @@ namespace cdea
         return v;
       }
 
-      std::vector<double> grid(const std::vector<double> SweepRow::*field,
-                               const double                      factor) const
+      std::vector<double> grid(const std::vector<double> SweepRow::*field) const
       {
         std::vector<double> v(n * m, nan);
         for (std::size_t i = 0; i < n; ++i)
           for (std::size_t k = 0; k < m; ++k)
-            v[i * m + k] = (map.rows[i].*field)[k] * factor;
+            v[i * m + k] = (map.rows[i].*field)[k];
         return v;
       }
 
-      /// rows x 2: @p get(row, j) in kPa for the inner edges of rings 1 and 2.
+      /// rows x 2: @p get(row, j) for the inner edges of rings 1 and 2.
       template <typename Get>
       std::vector<double> two_edges(const Get &get) const
       {
         std::vector<double> v(n * 2);
         for (std::size_t i = 0; i < n; ++i)
           for (unsigned int j = 0; j < 2; ++j)
-            v[i * 2 + j] = get(map.rows[i], j) / 1e3;
+            v[i * 2 + j] = get(map.rows[i], j);
         return v;
       }
 
-      MapFileContent    &content;
-      const SweepMap    &map;
-      const std::size_t  n, m;
+      const SweepMap   &map;
+      const std::size_t n, m;
     };
 
     /// The grid: the layouts, the outer voltages and the fields over both.
-    void add_grid(MapDatasets &d)
+    void add_grid(ProductGroup &root, const MapValues &d)
     {
+      using namespace sweep_quantity;
       const SweepMap     &map = d.map;
       const std::size_t   n = d.n, m = d.m;
-      std::vector<double> outer(m);
-      for (std::size_t k = 0; k < m; ++k)
-        outer[k] = map.settings.outer_voltages[k] / 1e3;
-      d.add("rv_over_a", {n}, d.per_row([](const SweepRow &r) { return r.rv_over_a; }), "1",
-            "inner ring's outer edge r_v over the disk radius a (pre-stretched flat film)");
-      d.add("outer_voltage_kV", {m}, outer, "kV",
-            "voltage of the outer ring; the inner ring is held at inner_voltage_kV");
-      d.add("displacement_mm", {n, m}, d.grid(&SweepRow::displacement, 1e3), "mm",
-            "disk deflection |z(disk) - z(frame)|, rv x outer voltage; NaN where the "
-            "continuation did not reach the point");
-      d.add("stroke_mm", {n, m}, d.grid(&SweepRow::stroke, 1e3), "mm",
-            "displacement minus zero_voltage_displacement_mm");
-      d.add("stroke_increase_percent", {n, m}, d.grid(&SweepRow::stroke_increase, 1.), "%",
-            "100 (stroke / stroke with both rings at the inner voltage - 1)");
       std::vector<double> v(n * m * 2, nan);
       for (std::size_t i = 0; i < n; ++i)
         for (std::size_t k = 0; k < m; ++k)
           {
-            v[(i * m + k) * 2 + 0] = map.rows[i].s2_inner_ring1[k] / 1e3;
-            v[(i * m + k) * 2 + 1] = map.rows[i].s2_inner_ring2[k] / 1e3;
+            v[(i * m + k) * 2 + 0] = map.rows[i].s2_inner_ring1[k];
+            v[(i * m + k) * 2 + 1] = map.rows[i].s2_inner_ring2[k];
           }
-      d.add("s2_inner_edge_kPa", {n, m, 2}, v, "kPa",
-            "nominal hoop stress s2 at the inner edge of ring 1 (disk edge) and ring 2 "
-            "(r_v, on the outer ring's side), rv x outer voltage x 2");
+      root.set(rv_over_a, d.per_row([](const SweepRow &r) { return r.rv_over_a; }))
+        .set(outer_voltage, map.settings.outer_voltages)
+        .set(displacement, d.grid(&SweepRow::displacement), {n, m})
+        .set(stroke, d.grid(&SweepRow::stroke), {n, m})
+        .set(stroke_increase, d.grid(&SweepRow::stroke_increase), {n, m})
+        .set(s2_inner_edge, v, {n, m, 2});
     }
 
     /// The red and the blue line: one point per row each.
-    void add_lines(MapDatasets &d)
+    void add_lines(ProductGroup &root, const MapValues &d)
     {
-      const std::pair<const char *, SweepLine SweepRow::*> lines[] = {{"red", &SweepRow::red},
-                                                                      {"blue", &SweepRow::blue}};
-      for (const auto &[name, line] : lines)
-        {
-          const std::string prefix = std::string(name) + "_line_";
-          const std::string what =
-            std::string(name) == "red" ?
-              "red line (s2 = 0 at the outer ring's inner edge)" :
-              "blue line (equal s2 at the inner edges of both rings)";
-          d.add(prefix + "outer_kV", {d.n},
-                d.per_row([&](const SweepRow &r) { return (r.*line).outer_voltage / 1e3; }),
-                "kV",
-                "outer voltage on the " + what +
-                  ", by root finding to line_tolerance_V; NaN where absent in the range");
-          d.add(prefix + "increase_percent", {d.n},
-                d.per_row([&](const SweepRow &r) { return (r.*line).stroke_increase; }), "%",
-                "stroke increase on the " + what);
-          d.add(prefix + "displacement_mm", {d.n},
-                d.per_row([&](const SweepRow &r) { return (r.*line).displacement * 1e3; }),
-                "mm", "displacement on the " + what);
-          d.add(prefix + "s2_inner_edge_kPa", {d.n, 2},
-                d.two_edges(
-                  [&](const SweepRow &r, unsigned int j) { return (r.*line).s2_inner[j]; }),
-                "kPa", "s2 at the inner edges of rings 1 and 2 on the " + what);
-        }
+      using namespace sweep_quantity;
+      struct Line
+      {
+        SweepLine SweepRow::*line;
+        const Quantity      &outer, &increase, &displacement, &s2;
+      };
+      for (const Line &l : {Line{&SweepRow::red, red_outer, red_increase, red_displacement, red_s2},
+                            Line{&SweepRow::blue, blue_outer, blue_increase, blue_displacement,
+                                 blue_s2}})
+        root.set(l.outer, d.per_row([&](const SweepRow &r) { return (r.*l.line).outer_voltage; }))
+          .set(l.increase,
+               d.per_row([&](const SweepRow &r) { return (r.*l.line).stroke_increase; }))
+          .set(l.displacement,
+               d.per_row([&](const SweepRow &r) { return (r.*l.line).displacement; }))
+          .set(l.s2,
+               d.two_edges([&](const SweepRow &r, unsigned int j) { return (r.*l.line).s2_inner[j]; }),
+               {d.n, 2});
     }
 
     /// Per row: its base state, how far it got, its cost and why it stopped.
-    void add_row_outcomes(MapDatasets &d)
+    void add_row_outcomes(ProductGroup &root, const MapValues &d)
     {
-      const std::size_t n = d.n;
-      d.add("base_displacement_mm", {n},
-            d.per_row([](const SweepRow &r) { return r.base_displacement * 1e3; }), "mm",
-            "displacement with both rings at the inner voltage (the reference of the "
-            "stroke increase)");
-      d.add("base_s2_inner_edge_kPa", {n, 2},
-            d.two_edges([](const SweepRow &r, unsigned int j) { return r.base_s2_inner[j]; }),
-            "kPa",
-            "s2 at the inner edges of rings 1 and 2 with both rings at the inner voltage");
-      d.add("lowest_outer_kV", {n},
-            d.per_row([](const SweepRow &r) { return r.lowest_voltage / 1e3; }), "kV",
-            "lowest outer voltage of the grid reached by the continuation");
-      d.add("highest_outer_kV", {n},
-            d.per_row([](const SweepRow &r) { return r.highest_voltage / 1e3; }), "kV",
-            "highest outer voltage of the grid reached by the continuation");
-      d.add("solves", {n}, d.per_row([](const SweepRow &r) { return double(r.solves); }), "1",
-            "equilibrium solves of the row (load stages, continuation, root finding)",
-            Kind::integer);
-      d.add("newton_iterations", {n},
-            d.per_row([](const SweepRow &r) { return double(r.newton_iterations); }), "1",
-            "Newton iterations of the row", Kind::integer);
-      d.add("stop_message", {n}, {}, "",
-            "why the continuation of the row stopped before the end of the grid (empty if it "
-            "did not)",
-            Kind::text);
+      using namespace sweep_quantity;
+      std::vector<std::string> messages;
       for (const SweepRow &r : d.map.rows)
-        d.content.datasets.back().texts.push_back(r.message);
+        messages.push_back(r.message);
+      root.set(base_displacement, d.per_row([](const SweepRow &r) { return r.base_displacement; }))
+        .set(base_s2, d.two_edges([](const SweepRow &r, unsigned int j) { return r.base_s2_inner[j]; }),
+             {d.n, 2})
+        .set(lowest_outer, d.per_row([](const SweepRow &r) { return r.lowest_voltage; }))
+        .set(highest_outer, d.per_row([](const SweepRow &r) { return r.highest_voltage; }))
+        .set(solves, d.per_row([](const SweepRow &r) { return double(r.solves); }))
+        .set(newton_iterations,
+             d.per_row([](const SweepRow &r) { return double(r.newton_iterations); }))
+        .set(stop_message, messages);
     }
   } // namespace
 
-  MapFileContent sweep_map_content(const SweepMap &map, const std::string &parameter_text)
+  Product sweep_product(const SweepMap &map, const std::string &parameter_text)
   {
-    MapFileContent content;
-    add_attributes(content, map, parameter_text);
-    MapDatasets datasets(content, map);
-    add_grid(datasets);
-    add_lines(datasets);
-    add_row_outcomes(datasets);
-    return content;
+    Product         product;
+    const MapValues values(map);
+    add_attributes(product.root(), map, parameter_text);
+    add_grid(product.root(), values);
+    add_lines(product.root(), values);
+    add_row_outcomes(product.root(), values);
+    return product;
   }
 
   bool some_row_reached(const SweepMap &map)
@@ -254,37 +188,4 @@ namespace cdea
                                    stopped + "no layout reached the inner voltage";
   }
 
-  void write_sweep_file(const std::string &path, const SweepMap &map,
-                        const std::string &parameter_text)
-  {
-    using Kind                   = MapFileContent::Kind;
-    const MapFileContent content = sweep_map_content(map, parameter_text);
-
-    ErrorPrintingOff quiet;
-    const hdf5::Writer w("cannot write '" + path + "'");
-    // In memory, then written whole and renamed onto the path: an older map
-    // stays until the new one is complete. No modification times in the
-    // object headers: the same map gives the same bytes.
-    Handle file = hdf5::create_memory_file(path, false);
-
-    for (const MapFileContent::Attribute &a : content.attributes)
-      if (a.kind == Kind::text)
-        w.string_attribute(file, a.name, a.text);
-      else if (a.kind == Kind::integer)
-        w.int_attribute(file, a.name, int(a.real));
-      else
-        w.double_attribute(file, a.name, a.real);
-    for (const MapFileContent::Dataset &d : content.datasets)
-      if (d.kind == Kind::text)
-        w.string_dataset(file, d.name, d.texts, d.description);
-      else if (d.kind == Kind::integer)
-        w.int_dataset(file, d.name, std::vector<int>(d.values.begin(), d.values.end()),
-                      d.description);
-      else
-        w.double_dataset(file, d.name, std::vector<hsize_t>(d.dims.begin(), d.dims.end()),
-                         d.values, d.unit, d.description);
-    const WriteOutcome out = replace_file(path, hdf5::file_image(file, w.name()), true);
-    if (!out.ok)
-      throw std::runtime_error("cannot write '" + path + "': " + out.message);
-  }
 } // namespace cdea
