@@ -312,14 +312,8 @@ namespace cdea
         std::vector<std::vector<double>> v;
         std::vector<double>              d;
         model.curve(c.result.values, 8, v, d);
-        for (std::size_t k = 0; k < v.size(); ++k)
-          {
-            std::vector<double> kV;
-            for (const double x : v[k])
-              kV.push_back(x * 1e-3);
-            c.curve_kV.push_back(kV);
-            c.curve_mm.push_back(d[k] * 1e3);
-          }
+        c.curve_voltages     = std::move(v);
+        c.curve_displacement = std::move(d);
       }
     c.solves = model.solves();
     c.ramps  = model.ramps();
