@@ -10,9 +10,8 @@
 #include <cdea/commands/command.h>
 #include <cdea/material/material_chart.h>
 #include <cdea/material/membrane_law.h>
-#include <cdea/model/product.h>
+#include <cdea/model/chart_product.h>
 #include <cdea/model/quantities_chart.h>
-#include <cdea/model/quantities_common.h>
 #include <cdea/output/product_file.h>
 #include <cdea/output/product_table.h>
 
@@ -20,56 +19,12 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
-#include <optional>
 
 namespace cdea
 {
   namespace
   {
     constexpr double two_pi = 6.28318530717958647692;
-
-    void add_curve(Product &product, const StressStretchCurve &c)
-    {
-      using namespace chart_quantity;
-      ProductGroup &g = product.group("/" + path_name(c.path));
-      g.set(locking_stretch, c.locking_stretch)
-        .set(stretch, c.stretch)
-        .set(c.path == ChartPath::uniaxial ? uniaxial_transverse_stretch :
-                                             equibiaxial_transverse_stretch,
-             c.transverse_stretch)
-        .set(nominal_stress, c.nominal_stress);
-      if (!c.instantaneous_stress.empty())
-        g.set(instantaneous_stress, c.instantaneous_stress)
-          .set(instantaneous_transverse_stretch, c.instantaneous_transverse_stretch);
-    }
-
-    /// The product of `cdea chart`: both curves and the DMA chart if there is one.
-    Product chart_product(const std::string &parameter_text, const std::string &model,
-                          const StressStretchCurve &uniaxial,
-                          const StressStretchCurve &equibiaxial, const DmaChart *dma)
-    {
-      using namespace chart_quantity;
-      Product product;
-      product.root()
-        .set(common_quantity::parameters, parameter_text)
-        .set(common_quantity::code_version, CDEA_VERSION)
-        .set(material_model, model)
-        .set(voltage, 0.)
-        .set(chart_quantity::dma,
-             dma ? "small-strain standard linear solid" : "none: the law is elastic");
-      add_curve(product, uniaxial);
-      add_curve(product, equibiaxial);
-      if (dma)
-        product.group("/dma")
-          .set(relaxed_modulus, dma->moduli.relaxed)
-          .set(instantaneous_modulus, dma->moduli.instantaneous)
-          .set(relaxation_time, dma->moduli.relaxation_time)
-          .set(frequency, dma->frequency)
-          .set(storage_modulus, dma->storage)
-          .set(loss_modulus, dma->loss)
-          .set(loss_factor, dma->loss_factor);
-      return product;
-    }
 
     class Chart final : public CommandJob
     {
@@ -87,15 +42,9 @@ namespace cdea
       int run(Invocation &invocation) override
       {
         const std::string model = invocation.parameters.material_law.model;
-        const StressStretchCurve uniaxial =
-          stress_stretch_curve(*law, ChartPath::uniaxial, settings);
-        const StressStretchCurve equibiaxial =
-          stress_stretch_curve(*law, ChartPath::equibiaxial, settings);
-        std::optional<DmaChart> dma;
-        if (law->n_internal_variables() > 0)
-          dma = dma_chart(*law, settings);
-        const Product product = chart_product(invocation.parameter_text, model, uniaxial,
-                                              equibiaxial, dma ? &*dma : nullptr);
+        const Product     product =
+          chart_product(*law, settings, invocation.parameter_text, model);
+        const bool dma = product.find("/dma") != nullptr;
         std::cout << "cdea " << CDEA_VERSION << " chart: Material/Model = " << model
                   << ", zero voltage\n";
         print_curve(product.at("/uniaxial"));
