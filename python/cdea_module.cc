@@ -168,17 +168,6 @@ namespace
     return a;
   }
 
-  /// A /summary attribute: a number (scalar attributes), or a numpy array.
-  py::object attribute_value(const SummaryAttribute &a)
-  {
-    if (a.scalar)
-      return a.integer ? py::object(py::int_(static_cast<int>(a.values[0]))) :
-                         py::object(py::float_(a.values[0]));
-    if (a.rows > 0)
-      return real_array(a.values, {py::ssize_t(a.rows), py::ssize_t(a.columns)});
-    return real_array(a.values, {py::ssize_t(a.values.size())});
-  }
-
   /// Writes a results file with @p writer at @p path, or at @p default_path
   /// if @p path is None; returns where. A file that cannot be written raises
   /// OSError with the writer's message. The GIL stays held: it keeps two
@@ -274,33 +263,21 @@ namespace
       return steps;
     }
 
+    /// None, or the onset attributes but onset_found, without "onset_".
     py::object onset() const
     {
-      if (!record.result.onset.found)
+      using namespace summary_attribute;
+      if (record.attributes.at(onset_found).values.at(0) == 0.)
         return py::none();
       py::dict onset;
-      for (const SummaryAttribute &a : onset_attributes(record.result.onset, record.n_rings))
-        if (!a.integer)
-          onset[a.name.substr(std::string("onset_").size()).c_str()] = attribute_value(a);
+      for (const Quantity *row : {&onset_voltage, &onset_radius, &onset_load_factor})
+        onset[std::string(row->name).substr(std::string("onset_").size()).c_str()] =
+          python::value(record.attributes.at(*row));
       return onset;
     }
 
-    /// The /summary attributes: onset, limit points, breakdown.
-    py::dict attributes() const
-    {
-      py::dict           attributes;
-      const unsigned int run = record.time_run ? time_run : load_path_runs;
-      for (const SummaryAttribute &a :
-           run_attributes(run, record.result.onset, record.result.limit_points,
-                          record.result.breakdown, record.n_rings))
-        attributes[a.name.c_str()] = attribute_value(a);
-      if (record.time_run && !record.steps.empty() && !std::isnan(record.result.error_estimate))
-        for (const SummaryAttribute &a : time_integration_attributes(record.result.time_steps,
-                                                                     record.result.rejected_steps,
-                                                                     record.result.error_estimate))
-          attributes[a.name.c_str()] = attribute_value(a);
-      return attributes;
-    }
+    /// The /summary attributes: onset, limit points, breakdown, time integration.
+    py::dict attributes() const { return python::entries(record.attributes, Place::attribute); }
 
     /// Unit and description of every /summary column.
     py::dict columns() const

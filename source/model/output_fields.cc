@@ -58,70 +58,52 @@ namespace cdea
     return attributes;
   }
 
-  std::vector<SummaryAttribute> onset_attributes(const OnsetRecord &onset,
-                                                 const unsigned int n_rings)
+  ProductGroup onset_attributes(const OnsetRecord &onset, const unsigned int n_rings)
   {
     using namespace summary_attribute;
-    std::vector<SummaryAttribute> a(4);
-    a[0] = {onset_found.name, {onset.found ? 1. : 0.}, 0, 0, true, true};
-    a[1] = {onset_voltage.name, onset.found ? in_unit(onset.voltages, onset_voltage.unit) :
-                                              std::vector<double>(n_rings, nan)};
-    a[2] = {onset_radius.name,
-            {onset.found ? onset_radius.in_file_units(onset.radius) : nan},
-            0,
-            0,
-            true};
-    a[3] = {onset_load_factor.name, {onset.found ? onset.load_factor : nan}, 0, 0, true};
-    return a;
+    ProductGroup g("/summary");
+    g.set(onset_found, onset.found)
+      .set(onset_voltage, onset.found ? onset.voltages : std::vector<double>(n_rings, nan))
+      .set(onset_radius, onset.found ? onset.radius : nan)
+      .set(onset_load_factor, onset.found ? onset.load_factor : nan);
+    return g;
   }
 
-  std::vector<SummaryAttribute> limit_point_attributes(const std::vector<LimitPoint> &limits,
-                                                       const unsigned int n_rings)
+  ProductGroup limit_point_attributes(const std::vector<LimitPoint> &limits,
+                                      const unsigned int n_rings)
   {
     using namespace summary_attribute;
-    SummaryAttribute voltages{limit_point_voltage.name, {}, unsigned(limits.size()), n_rings};
-    SummaryAttribute displacements{limit_point_displacement.name, {}};
+    std::vector<double> voltages, displacements;
     for (const LimitPoint &limit : limits)
       {
-        for (const double v : limit.voltages)
-          voltages.values.push_back(limit_point_voltage.in_file_units(v));
-        displacements.values.push_back(limit_point_displacement.in_file_units(limit.displacement));
+        voltages.insert(voltages.end(), limit.voltages.begin(), limit.voltages.end());
+        displacements.push_back(limit.displacement);
       }
-    return {voltages, displacements};
+    ProductGroup g("/summary");
+    g.set(limit_point_voltage, voltages, {limits.size(), n_rings})
+      .set(limit_point_displacement, displacements, {limits.size()});
+    return g;
   }
 
-  std::vector<SummaryAttribute> breakdown_attributes(const OnsetRecord &breakdown)
+  ProductGroup breakdown_attributes(const OnsetRecord &breakdown)
   {
     using namespace summary_attribute;
-    if (!breakdown.found)
-      return {};
-    return {{breakdown_voltage.name, in_unit(breakdown.voltages, breakdown_voltage.unit)},
-            {breakdown_radius.name, {breakdown_radius.in_file_units(breakdown.radius)}}};
+    ProductGroup g("/summary");
+    if (breakdown.found)
+      g.set(breakdown_voltage, breakdown.voltages)
+        .set(breakdown_radius, std::vector<double>{breakdown.radius});
+    return g;
   }
 
-  std::vector<SummaryAttribute> time_integration_attributes(const unsigned int steps,
-                                                            const unsigned int rejected,
-                                                            const double       error_estimate)
+  ProductGroup time_integration_attributes(const unsigned int steps, const unsigned int rejected,
+                                           const double error_estimate)
   {
     using namespace summary_attribute;
-    return {{time_steps.name, {double(steps)}},
-            {time_steps_rejected.name, {double(rejected)}},
-            {time_error_estimate.name, {time_error_estimate.in_file_units(error_estimate)}}};
-  }
-
-  std::vector<SummaryAttribute> run_attributes(const unsigned int run, const OnsetRecord &onset,
-                                               const std::vector<LimitPoint> &limits,
-                                               const OnsetRecord             &breakdown,
-                                               const unsigned int             n_rings)
-  {
-    std::vector<SummaryAttribute> all = onset_attributes(onset, n_rings);
-    const auto                    add = [&](const std::vector<SummaryAttribute> &more) {
-      all.insert(all.end(), more.begin(), more.end());
-    };
-    add(breakdown_attributes(breakdown));
-    if (run & summary_attribute::limit_point_voltage.runs)
-      add(limit_point_attributes(limits, n_rings));
-    return all;
+    ProductGroup g("/summary");
+    g.set(time_steps, std::vector<double>{double(steps)})
+      .set(time_steps_rejected, std::vector<double>{double(rejected)})
+      .set(time_error_estimate, std::vector<double>{error_estimate});
+    return g;
   }
 
   namespace

@@ -90,6 +90,12 @@ namespace cdea
     return *this;
   }
 
+  ProductGroup &ProductGroup::set(const ProductEntry &value)
+  {
+    entry(*value.quantity, value.quantity->storage) = value;
+    return *this;
+  }
+
   const ProductEntry *ProductGroup::find(const Quantity &row) const
   {
     for (const auto *list : {&attributes, &datasets})

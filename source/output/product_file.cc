@@ -1,4 +1,5 @@
 #include <cdea/model/product.h>
+#include <cdea/output/file_attribute.h>
 #include <cdea/output/hdf5_writer.h>
 #include <cdea/output/product_file.h>
 
@@ -24,19 +25,17 @@ namespace cdea
 
     void write_attribute(Hdf5Writer &w, const std::string &group, const ProductEntry &e)
     {
-      const Quantity &row = *e.quantity;
-      if (row.storage == Storage::text && e.dims.empty())
-        w.attribute(group, row.name, e.texts.at(0));
-      else if (row.storage == Storage::text)
-        w.attribute(group, row.name, joined(e.texts));
-      else if (row.storage == Storage::integer)
-        w.attribute(group, row.name, static_cast<int>(e.values.at(0)));
-      else if (e.dims.empty())
-        w.attribute(group, row.name, e.value(0));
-      else if (e.dims.size() == 2 && !e.values.empty())
-        w.attribute(group, row.name, e.in_unit(), e.dims[0], e.dims[1]);
+      const FileAttribute a = file_attribute(e);
+      if (a.kind == FileAttribute::Kind::text)
+        w.attribute(group, a.name, a.text);
+      else if (a.kind == FileAttribute::Kind::integer)
+        w.attribute(group, a.name, static_cast<int>(a.values.at(0)));
+      else if (a.dims.empty())
+        w.attribute(group, a.name, a.values.at(0));
+      else if (a.dims.size() == 2 && !a.values.empty())
+        w.attribute(group, a.name, a.values, a.dims[0], a.dims[1]);
       else
-        w.attribute(group, row.name, e.in_unit());
+        w.attribute(group, a.name, a.values);
     }
 
     /// The real or the imaginary parts of a complex entry in the row's unit.
@@ -74,6 +73,24 @@ namespace cdea
         }
     }
   } // namespace
+
+  FileAttribute file_attribute(const ProductEntry &e)
+  {
+    const Quantity &row = *e.quantity;
+    FileAttribute   a;
+    a.name = row.name;
+    a.dims = e.dims;
+    if (row.storage == Storage::text)
+      {
+        a.kind = FileAttribute::Kind::text;
+        a.text = e.dims.empty() ? e.texts.at(0) : joined(e.texts);
+        return a;
+      }
+    a.kind   = row.storage == Storage::integer ? FileAttribute::Kind::integer :
+                                                 FileAttribute::Kind::real;
+    a.values = e.in_unit();
+    return a;
+  }
 
   void write_product_file(const Product &product, const std::string &path)
   {

@@ -1,4 +1,6 @@
 #include <cdea/model/output_fields.h>
+#include <cdea/model/quantities_common.h>
+#include <cdea/output/file_attribute.h>
 #include <cdea/output/hdf5_support.h>
 #include <cdea/output/results_document.h>
 
@@ -185,15 +187,21 @@ namespace cdea
                    "extra summary column (the unit is part of the name); NaN where not written");
     }
 
-    /// The summary attribute @p a, as a scalar, a 1D or a 2D attribute.
-    void write_summary_attribute(const SummaryAttribute &a) const
+    /// The summary attribute @p a: a scalar, a whole number, a list or
+    /// rows x columns.
+    void write_summary_attribute(const FileAttribute &a) const
     {
-      if (a.scalar && a.integer)
-        w.int_attribute(summary, a.name, static_cast<int>(a.values[0]));
-      else if (a.scalar)
-        w.double_attribute(summary, a.name, a.values[0]);
+      if (a.kind == FileAttribute::Kind::text)
+        w.string_attribute(summary, a.name, a.text);
+      else if (a.kind == FileAttribute::Kind::integer)
+        w.int_attribute(summary, a.name, static_cast<int>(a.values.at(0)));
+      else if (a.dims.empty())
+        w.double_attribute(summary, a.name, a.values.at(0));
+      else if (a.dims.size() == 2 && !a.values.empty())
+        w.double_array_attribute(summary, a.name, a.values, unsigned(a.dims[0]),
+                                 unsigned(a.dims[1]));
       else
-        w.double_array_attribute(summary, a.name, a.values, a.rows, a.columns);
+        w.double_array_attribute(summary, a.name, a.values);
     }
 
     void write_standard_row(const StepSummary &s);
@@ -283,17 +291,18 @@ namespace cdea
     if (n_rings == 0)
       throw std::invalid_argument(d.w.name() + ": n_rings must be at least 1");
     for (const auto &attribute : extra_root_attributes)
-      if (attribute.first.empty() || attribute.first == "parameters" ||
-          attribute.first == "code_version" || attribute.first == "n_rings" ||
-          attribute.first == "run_status")
+      if (attribute.first.empty() || attribute.first == common_quantity::parameters.name ||
+          attribute.first == common_quantity::code_version.name ||
+          attribute.first == run_attribute::n_rings.name ||
+          attribute.first == run_attribute::run_status.name)
         throw std::invalid_argument(d.w.name() + ": extra root attribute name '" +
                                     attribute.first + "' is empty or reserved");
 
     ErrorPrintingOff quiet;
     d.file = hdf5::create_memory_file(name);
-    d.w.string_attribute(d.file, "parameters", parameters_text);
-    d.w.string_attribute(d.file, "code_version", CDEA_VERSION);
-    d.w.int_attribute(d.file, "n_rings", static_cast<int>(n_rings));
+    d.w.string_attribute(d.file, common_quantity::parameters.name, parameters_text);
+    d.w.string_attribute(d.file, common_quantity::code_version.name, CDEA_VERSION);
+    d.w.int_attribute(d.file, run_attribute::n_rings.name, static_cast<int>(n_rings));
     for (const auto &attribute : extra_root_attributes)
       d.w.string_attribute(d.file, attribute.first, attribute.second);
 
@@ -389,8 +398,8 @@ namespace cdea
   {
     check_onset(onset);
     ErrorPrintingOff quiet;
-    for (const SummaryAttribute &a : onset_attributes(onset, impl->rings))
-      impl->write_summary_attribute(a);
+    for (const ProductEntry &a : onset_attributes(onset, impl->rings).attributes)
+      impl->write_summary_attribute(file_attribute(a));
   }
 
   void ResultsDocument::set_summary_attribute(const std::string         &name,
@@ -401,8 +410,32 @@ namespace cdea
     if (name.empty() || (rows > 0 && std::size_t(rows) * columns != values.size()))
       throw std::invalid_argument(impl->w.name() + ": summary attribute '" + name +
                                   "' needs a name and rows x columns values");
+    FileAttribute a;
+    a.name   = name;
+    a.dims   = rows > 0 ? std::vector<std::size_t>{rows, columns} :
+                          std::vector<std::size_t>{values.size()};
+    a.values = values;
+    set_summary_attribute(a);
+  }
+
+  void ResultsDocument::set_summary_attribute(const FileAttribute &a)
+  {
+    check_summary_attribute(a);
     ErrorPrintingOff quiet;
-    impl->w.double_array_attribute(impl->summary, name, values, rows, columns);
+    impl->write_summary_attribute(a);
+  }
+
+  void ResultsDocument::check_summary_attribute(const FileAttribute &a) const
+  {
+    std::size_t size = 1;
+    for (const std::size_t d : a.dims)
+      size *= d;
+    const bool numbers = a.kind != FileAttribute::Kind::text;
+    if (a.name.empty() || (numbers && a.dims.empty() && a.values.size() != 1) ||
+        (numbers && a.dims.size() == 2 && !a.values.empty() && size != a.values.size()) ||
+        (a.kind == FileAttribute::Kind::integer && !a.dims.empty()))
+      throw std::invalid_argument(impl->w.name() + ": summary attribute '" + a.name +
+                                  "' needs a name and values of its dimensions");
   }
 
   void ResultsDocument::set_root_attribute(const std::string &name, const std::string &value)

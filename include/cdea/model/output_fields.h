@@ -14,6 +14,7 @@
 // The file's units: lengths in mm, stresses in kPa, voltages in kV, fields in
 // MV/m, masses in g, volumes in mm^3, energies in mJ.
 
+#include <cdea/model/product.h>
 #include <cdea/model/quantity.h>
 #include <cdea/model/records.h>
 
@@ -172,6 +173,33 @@ namespace cdea
   /// the standard columns (stage, load_factor, voltage_kV, displacement_mm).
   const std::vector<const Quantity *> &step_attributes();
 
+  /// The root attributes of a run's results file (besides parameters and
+  /// code_version, model/quantities_common.h): strings but n_rings.
+  namespace run_attribute
+  {
+    // clang-format off
+    inline constexpr Quantity n_rings = summary_attribute_row(
+      "n_rings", units::one, Storage::integer, shape::scalar, every_run,
+      "electrode rings of the actuator");
+    inline constexpr Quantity method = summary_attribute_row(
+      "method", units::none, Storage::text, shape::scalar, every_run,
+      "the model: finite elements, shooting, or finite elements in time");
+    inline constexpr Quantity run_status = summary_attribute_row(
+      "run_status", units::none, Storage::text, shape::scalar, every_run,
+      "complete, or how and after which step the run stopped (running: a checkpoint)");
+    inline constexpr Quantity material_model = summary_attribute_row(
+      "material_model", units::none, Storage::text, shape::scalar, time_run,
+      "Material/Model of the time run");
+    inline constexpr Quantity waveform = summary_attribute_row(
+      "waveform", units::none, Storage::text, shape::scalar, time_run, "Time/Waveform");
+    inline constexpr Quantity time_scheme = summary_attribute_row(
+      "time_scheme", units::none, Storage::text, shape::scalar, time_run, "Time/Scheme");
+    inline constexpr Quantity time_step_control = summary_attribute_row(
+      "time_step_control", units::none, Storage::text, shape::scalar, time_run,
+      "how an ESDIRK run sizes its steps: by its error estimate or fixed");
+    // clang-format on
+  } // namespace run_attribute
+
   /// The /summary attributes: the loss of tension (onset), limit points and
   /// breakdown. Written as attributes (no unit or description in the file).
   namespace summary_attribute
@@ -217,41 +245,24 @@ namespace cdea
     // clang-format on
   } // namespace summary_attribute
 
-  /// An attribute of /summary as the file holds it: a scalar, a 1D array
-  /// (rows == 0) or rows x columns doubles; onset_found is the one integer.
-  struct SummaryAttribute
-  {
-    std::string         name;
-    std::vector<double> values;
-    unsigned int        rows    = 0, columns = 0;
-    bool                scalar  = false;
-    bool                integer = false;
-  };
-
+  /// The /summary attributes of what a run reports, each a row of
+  /// namespace summary_attribute with its SI values: the one assembly of
+  /// them, which the run's product stream (model/run_stream.h) sends to the
+  /// results file, its journal and a run kept in memory.
   /// onset_found, onset_voltage_kV (NaN per ring if none), onset_radius_mm
   /// and onset_load_factor (NaN if none).
-  std::vector<SummaryAttribute> onset_attributes(const OnsetRecord &onset, unsigned int n_rings);
+  ProductGroup onset_attributes(const OnsetRecord &onset, unsigned int n_rings);
 
-  /// limit_point_voltage_kV (k x rings; empty 1D if k = 0) and
-  /// limit_point_displacement_mm (k).
-  std::vector<SummaryAttribute> limit_point_attributes(const std::vector<LimitPoint> &limits,
-                                                       unsigned int n_rings);
+  /// limit_point_voltage_kV (k x rings) and limit_point_displacement_mm (k).
+  ProductGroup limit_point_attributes(const std::vector<LimitPoint> &limits, unsigned int n_rings);
 
   /// breakdown_voltage_kV (one per ring) and breakdown_radius_mm (one value);
   /// none if the breakdown field was not reached.
-  std::vector<SummaryAttribute> breakdown_attributes(const OnsetRecord &breakdown);
+  ProductGroup breakdown_attributes(const OnsetRecord &breakdown);
 
   /// time_steps, time_steps_rejected and time_error_estimate_mm (@p error_estimate in m).
-  std::vector<SummaryAttribute> time_integration_attributes(unsigned int steps,
-                                                            unsigned int rejected,
-                                                            double       error_estimate);
-
-  /// Every /summary attribute a run of kind @p run (a RunKind) has, for its
-  /// onset, limit points and breakdown.
-  std::vector<SummaryAttribute> run_attributes(unsigned int run, const OnsetRecord &onset,
-                                               const std::vector<LimitPoint> &limits,
-                                               const OnsetRecord             &breakdown,
-                                               unsigned int                   n_rings);
+  ProductGroup time_integration_attributes(unsigned int steps, unsigned int rejected,
+                                           double error_estimate);
 
   /// A dataset of /steps/NNNNNN, or a point array of the ParaView output.
   struct StepField

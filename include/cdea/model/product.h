@@ -63,6 +63,8 @@ namespace cdea
     ProductGroup &set(const Quantity &row, std::vector<std::string> texts);
     ProductGroup &set(const Quantity &row, const std::vector<std::complex<double>> &si_values,
                       std::vector<std::size_t> dims = {});
+    /// Sets (or replaces) @p entry, a value of another group.
+    ProductGroup &set(const ProductEntry &entry);
     /// The same as set(), with @p detail appended to the row's description.
     ProductGroup &set_detailed(const Quantity &row, std::vector<double> si_values,
                                std::vector<std::size_t> dims, std::string detail);
