@@ -154,15 +154,6 @@ namespace
       "{'Subsection/Entry': value}. Writes nothing.");
   }
 
-  /// A dict parameter name -> value of each free parameter.
-  py::dict by_name(const Calibration &c, const std::vector<double> &values)
-  {
-    py::dict d;
-    for (std::size_t j = 0; j < c.settings.free.size(); ++j)
-      d[py::str(c.settings.free[j].name())] = values[j];
-    return d;
-  }
-
   void bind_fit_result(py::module_ &m)
   {
     py::class_<Calibration>(m, "FitResult",
@@ -173,10 +164,18 @@ namespace
         [](const Calibration &c) { return python::entries(c.product.root(), Place::attribute); },
         "the root attributes of the fit file (dict)")
       .def_property_readonly(
-        "values", [](const Calibration &c) { return by_name(c, c.result.values); },
+        "values",
+        [](const Calibration &c) {
+          return python::by_name(c.product.root(), fit_quantity::free_parameters,
+                                 fit_quantity::fitted_values);
+        },
         "fitted values by parameter name (SI units)")
       .def_property_readonly(
-        "standard_errors", [](const Calibration &c) { return by_name(c, c.result.standard_errors); },
+        "standard_errors",
+        [](const Calibration &c) {
+          return python::by_name(c.product.root(), fit_quantity::free_parameters,
+                                 fit_quantity::standard_errors);
+        },
         "standard errors by parameter name (SI units; NaN if not identifiable)")
       .def_property_readonly(
         "correlation",

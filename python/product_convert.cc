@@ -86,6 +86,15 @@ namespace cdea::python
     return d;
   }
 
+  py::dict by_name(const ProductGroup &group, const Quantity &names, const Quantity &values)
+  {
+    const ProductEntry &n = group.at(names), &v = group.at(values);
+    py::dict            d;
+    for (std::size_t j = 0; j < n.texts.size(); ++j)
+      d[py::str(n.texts[j])] = v.value(j);
+    return d;
+  }
+
   py::dict columns(const ProductGroup &group)
   {
     py::dict d;

@@ -25,6 +25,10 @@ namespace cdea::python
   /// Python keys (one dict for a whole product, such as a response).
   py::dict flattened(const Product &product);
 
+  /// The values of @p values (one per item of the list @p names) by those
+  /// names: a dict {name: value}.
+  py::dict by_name(const ProductGroup &group, const Quantity &names, const Quantity &values);
+
   /// Key -> (unit, description) of the datasets of @p group.
   py::dict columns(const ProductGroup &group);
 } // namespace cdea::python

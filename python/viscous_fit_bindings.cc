@@ -34,14 +34,6 @@ namespace
     CreepData   creep;
     FitResult   result;
 
-    py::dict by_name(const std::vector<double> &values) const
-    {
-      py::dict d;
-      for (std::size_t j = 0; j < settings.free.size(); ++j)
-        d[py::str(settings.free[j].name())] = values[j];
-      return d;
-    }
-
     /// The fit's product (model/quantities_fit.h), once fitted.
     Product product;
   };
@@ -85,11 +77,17 @@ void bind_viscous_fit(py::module_ &m)
       return c.kind == FitDataKind::dma ? "dma" : "creep";
     })
     .def_property_readonly("values",
-                           [](const ViscousCalibration &c) { return c.by_name(c.result.values); },
+                           [](const ViscousCalibration &c) {
+                             return python::by_name(c.product.root(), fit_quantity::free_parameters,
+                                                    fit_quantity::fitted_values);
+                           },
                            "fitted values by parameter name (SI units)")
-    .def_property_readonly(
-      "standard_errors", [](const ViscousCalibration &c) { return c.by_name(c.result.standard_errors); },
-      "standard errors by parameter name (SI units)")
+    .def_property_readonly("standard_errors",
+                           [](const ViscousCalibration &c) {
+                             return python::by_name(c.product.root(), fit_quantity::free_parameters,
+                                                    fit_quantity::standard_errors);
+                           },
+                           "standard errors by parameter name (SI units)")
     .def_property_readonly("correlation",
                            [](const ViscousCalibration &c) {
                              return python::value(c.product.root().at(fit_quantity::correlation));

@@ -149,6 +149,15 @@ namespace cdea
                              std::vector<std::size_t>{std::size_t(m.rows()), std::size_t(m.cols())};
       return v;
     }
+
+    /// |z| of each of @p values.
+    std::vector<double> magnitudes(const Eigen::VectorXcd &values)
+    {
+      std::vector<double> v;
+      for (Eigen::Index i = 0; i < values.size(); ++i)
+        v.push_back(std::abs(values[i]));
+      return v;
+    }
   } // namespace
 
   Product response_product(const std::string &parameter_text, const FrequencyResponse &r)
@@ -166,12 +175,9 @@ namespace cdea
       .set(water_mass, r.water_mass)
       .set(density, r.density)
       .set(seconds, r.seconds);
-    std::vector<double> amplitude_values, phase_values;
+    std::vector<double> phase_values;
     for (Eigen::Index i = 0; i < r.disk_drive.size(); ++i)
-      {
-        amplitude_values.push_back(std::abs(r.disk_drive[i]));
-        phase_values.push_back(std::arg(r.disk_drive[i]));
-      }
+      phase_values.push_back(std::arg(r.disk_drive[i]));
     ProductGroup &transfer = product.group("/transfer");
     transfer.set(frequency, r.frequency);
     const std::pair<const Quantity *, Eigen::MatrixXcd> complex_values[] = {
@@ -185,7 +191,7 @@ namespace cdea
         const auto               v = row_major(values, dims);
         transfer.set(*row, v, dims);
       }
-    transfer.set(amplitude, amplitude_values).set(phase, phase_values);
+    transfer.set(amplitude, magnitudes(r.disk_drive)).set(phase, phase_values);
     const std::size_t        m = r.mode_frequency.size(), s = r.sample_R.size();
     std::vector<std::size_t> dims;
     const auto               shapes_r = row_major(r.mode_r, dims);
