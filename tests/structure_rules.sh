@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The structure of the code as doc/architecture.md states it ("Folder order"):
 # tests/structure_check.py finds no include against the folder order, no
-# include cycle between files and no function above 80 lines in the repository;
+# include cycle between files, no function above 80 lines, no unit factor
+# beyond the few allowed outside the table of quantities in the repository;
 # and, so that the check itself cannot pass by finding nothing, it fails on a
 # scratch tree with one of each and names every one of them.
 source "$(dirname "$0")/script_helpers.bash"
@@ -14,8 +15,10 @@ else
 fi
 
 # A scratch tree: folders a -> b, a file of a that includes b (upward), two
-# files of b that include each other, a function of 93 lines and a file of
-# 601 lines.
+# files of b that include each other, a function of 93 lines, a file of 601
+# lines, one unit factor more than the check allows outside the table of
+# quantities (one per line of a file; a tolerance 1e-9 * x, written before its
+# scale, is not one) and a row of the table made outside it.
 mkdir -p tree/doc tree/include/cdea/a tree/include/cdea/b tree/source/a tree/source/b
 printf '# x\n## Folder order\n\n    a -> b\n' > tree/doc/architecture.md
 printf '#pragma once\n#include <cdea/b/two.h>\n' > tree/include/cdea/a/up.h
@@ -27,12 +30,19 @@ printf '#pragma once\n#include <cdea/b/one.h>\n' > tree/include/cdea/b/two.h
   printf '}\n'
 } > tree/source/a/up.cc
 for i in $(seq 1 601); do printf '// line %d\n' "$i"; done > tree/source/b/long_file.cc
-
+allowed=$(sed -n 's/^MAX_UNIT_FACTORS = //p' "$check")
+n_factors=$((allowed + 1))
+{
+  for i in $(seq 1 "$n_factors"); do printf 'double mm%d(double x) { return x * 1e3; }\n' "$i"; done
+  printf 'bool near(double x, double y) { return x - y < 1e-9 * y; }\n'
+  printf 'constexpr Quantity stroke{"stroke_mm"};\n'
+} > tree/source/b/units.cc
 if out=$("$PYTHON" "$check" tree 2>&1); then
-  fail "structure_check passed a tree with four problems"; echo "$out"
+  fail "structure_check passed a tree with six problems"; echo "$out"
 else
   ok "structure_check fails on the scratch tree"
-  for expected in "a/up.h" "b/one -> b/two" "long_function" "long_file.cc: 601 lines"; do
+  for expected in "a/up.h" "b/one -> b/two" "long_function" "long_file.cc: 601 lines" \
+                  "$n_factors unit factors outside" "units.cc:$((n_factors + 2)): a row of the table"; do
     if grep -q "$expected" <<< "$out"; then ok "names $expected"
     else fail "does not name $expected:"; echo "$out"; fi
   done

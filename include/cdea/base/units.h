@@ -51,6 +51,7 @@ namespace cdea
     inline constexpr Unit degree{"deg", 180., 3.14159265358979323846}; ///< from rad
     inline constexpr Unit s{"s"};
     inline constexpr Unit ms{"ms", 1e3, 1., 1e-3};
+    inline constexpr Unit MB{"MB", 1., 1e6, 1e6}; ///< from bytes
     inline constexpr Unit Hz{"Hz"};
     inline constexpr Unit percent{"%"};
     inline constexpr Unit rad{"rad"};
