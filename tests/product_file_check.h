@@ -179,6 +179,27 @@ namespace cdea_test
     return r.integer == (row.storage == cdea::Storage::integer) && same_values(r.values, values);
   }
 
+  /// Checks that the objects @p found of a file are those @p expected and
+  /// that none is @p wrong, listing those that are not.
+  inline void check_contents(const std::set<std::string> &found,
+                             const std::set<std::string> &expected,
+                             const std::vector<std::string> &wrong, const std::string &what)
+  {
+    std::string odd;
+    for (const std::string &f : found)
+      if (!expected.count(f))
+        odd += " " + f;
+    for (const std::string &e : expected)
+      if (!found.count(e))
+        odd += " missing:" + e;
+    check(odd.empty(), what + ": every object of the file is a value of its product" + odd);
+    std::string list;
+    for (const std::string &w : wrong)
+      list += " " + w;
+    check(wrong.empty(), what + ": names, units, descriptions, dimensions and values bit for bit "
+                                "as the rows say" + list);
+  }
+
   /// The whole check of the file at @p path against @p product.
   inline void check_product_file(const cdea::Product &product, const std::string &path,
                                  const std::string &what)
@@ -228,18 +249,6 @@ namespace cdea_test
       }
     const std::set<std::string> found = file_contents(file);
     H5Fclose(file);
-    std::string odd;
-    for (const std::string &f : found)
-      if (!expected.count(f))
-        odd += " " + f;
-    for (const std::string &e : expected)
-      if (!found.count(e))
-        odd += " missing:" + e;
-    check(odd.empty(), what + ": every object of the file is a value of the product" + odd);
-    std::string list;
-    for (const std::string &w : wrong)
-      list += " " + w;
-    check(wrong.empty(), what + ": names, units, descriptions, dimensions and values bit for bit "
-                                "as the rows say" + list);
+    check_contents(found, expected, wrong, what);
   }
 } // namespace cdea_test

@@ -74,6 +74,17 @@ namespace cdea
     }
   } // namespace
 
+  FileAttribute real_attribute(const std::string &name, const std::vector<double> &values,
+                               const unsigned int rows, const unsigned int columns)
+  {
+    FileAttribute a;
+    a.name   = name;
+    a.dims   = rows > 0 ? std::vector<std::size_t>{rows, columns} :
+                          std::vector<std::size_t>{values.size()};
+    a.values = values;
+    return a;
+  }
+
   FileAttribute file_attribute(const ProductEntry &e)
   {
     const Quantity &row = *e.quantity;

@@ -410,12 +410,7 @@ namespace cdea
     if (name.empty() || (rows > 0 && std::size_t(rows) * columns != values.size()))
       throw std::invalid_argument(impl->w.name() + ": summary attribute '" + name +
                                   "' needs a name and rows x columns values");
-    FileAttribute a;
-    a.name   = name;
-    a.dims   = rows > 0 ? std::vector<std::size_t>{rows, columns} :
-                          std::vector<std::size_t>{values.size()};
-    a.values = values;
-    set_summary_attribute(a);
+    set_summary_attribute(real_attribute(name, values, rows, columns));
   }
 
   void ResultsDocument::set_summary_attribute(const FileAttribute &a)

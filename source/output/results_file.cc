@@ -254,12 +254,7 @@ namespace cdea
         (rows == 0 && columns != 0 && !values.empty()))
       throw std::invalid_argument("ResultsFile '" + d.file_path + "': summary attribute '" +
                                   name + "' needs a name and rows x columns values");
-    FileAttribute a;
-    a.name   = name;
-    a.dims   = rows > 0 ? std::vector<std::size_t>{rows, columns} :
-                          std::vector<std::size_t>{values.size()};
-    a.values = values;
-    set_summary_attribute(a);
+    set_summary_attribute(real_attribute(name, values, rows, columns));
   }
 
   ResultsFile::Finish ResultsFile::finish(const std::string &status)

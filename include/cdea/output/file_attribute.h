@@ -32,4 +32,9 @@ namespace cdea
   /// @p entry (an attribute of a product) as the file holds it: its values
   /// converted by its row, a list of texts joined by "; ".
   FileAttribute file_attribute(const ProductEntry &entry);
+
+  /// The real attribute @p name of @p values: rows x columns, or a list if
+  /// @p rows is 0.
+  FileAttribute real_attribute(const std::string &name, const std::vector<double> &values,
+                               unsigned int rows, unsigned int columns);
 } // namespace cdea
