@@ -48,7 +48,7 @@ namespace
     // Eight of the postprocessors' columns of a quasi-static cdea run.
     using namespace cdea::summary_column;
     double value = 0.;
-    for (const cdea::OutputField *c :
+    for (const cdea::Quantity *c :
          {&volume, &volume_change, &level_drop, &min_eigenvalue, &stable, &wrinkled_zone_inner,
           &wrinkled_zone_outer, &max_field})
       s.columns.set(*c, ++value);

@@ -1,7 +1,7 @@
 // The Python module `cdea` (pybind11): `cdea run` (time runs too), `cdea
 // shoot` and `cdea sweep` in-process (analysis/session.h), their results as numpy
 // arrays with the names and units of the results files
-// (model/output_fields.h for /summary and /steps, sweep_map_content() for
+// (model/output_fields.h for /summary and /steps, the map's product for
 // the map), written to HDF5 only when asked. Bad input raises ValueError with the command line's message. MPI is
 // not started (only the Trilinos KLU solver starts it, when it needs it).
 // Documented in doc/python.md.
@@ -10,11 +10,14 @@
 #include <cdea/analysis/frequency_response.h>
 #include <cdea/analysis/session.h>
 #include <cdea/design/sweep.h>
+#include <cdea/output/product_file.h>
 
 #include <pybind11/complex.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+
+#include "product_convert.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -165,17 +168,6 @@ namespace
     return a;
   }
 
-  /// A /summary attribute: a number (scalar attributes), or a numpy array.
-  py::object attribute_value(const SummaryAttribute &a)
-  {
-    if (a.scalar)
-      return a.integer ? py::object(py::int_(static_cast<int>(a.values[0]))) :
-                         py::object(py::float_(a.values[0]));
-    if (a.rows > 0)
-      return real_array(a.values, {py::ssize_t(a.rows), py::ssize_t(a.columns)});
-    return real_array(a.values, {py::ssize_t(a.values.size())});
-  }
-
   /// Writes a results file with @p writer at @p path, or at @p default_path
   /// if @p path is None; returns where. A file that cannot be written raises
   /// OSError with the writer's message. The GIL stays held: it keeps two
@@ -215,9 +207,9 @@ namespace
       if (summary_cache)
         return summary_cache.cast<py::dict>();
       py::dict summary;
-      for (const OutputField *column : standard_summary_columns())
+      for (const Quantity *column : standard_summary_columns())
         summary[column->name] = standard_column(*column);
-      for (const OutputField *column : postprocessor_columns())
+      for (const Quantity *column : postprocessor_columns())
         {
           std::vector<double> values;
           for (const StepSummary &s : record.steps)
@@ -248,7 +240,7 @@ namespace
         if (row.in_file)
           {
             const std::vector<double> values =
-              scaled(step_field_values(row, f), row.field.factor);
+              in_unit(step_field_values(row, f), row.field.unit);
             const std::vector<py::ssize_t> shape = {py::ssize_t(values.size())};
             fields[row.field.name] = row.field.storage == Storage::integer ?
                                        py::object(integer_array(values, shape)) :
@@ -271,42 +263,30 @@ namespace
       return steps;
     }
 
+    /// None, or the onset attributes but onset_found, without "onset_".
     py::object onset() const
     {
-      if (!record.result.onset.found)
+      using namespace summary_attribute;
+      if (record.attributes.at(onset_found).values.at(0) == 0.)
         return py::none();
       py::dict onset;
-      for (const SummaryAttribute &a : onset_attributes(record.result.onset, record.n_rings))
-        if (!a.integer)
-          onset[a.name.substr(std::string("onset_").size()).c_str()] = attribute_value(a);
+      for (const Quantity *row : {&onset_voltage, &onset_radius, &onset_load_factor})
+        onset[std::string(row->name).substr(std::string("onset_").size()).c_str()] =
+          python::value(record.attributes.at(*row));
       return onset;
     }
 
-    /// The /summary attributes: onset, limit points, breakdown.
-    py::dict attributes() const
-    {
-      py::dict           attributes;
-      const unsigned int run = record.time_run ? time_run : load_path_runs;
-      for (const SummaryAttribute &a :
-           run_attributes(run, record.result.onset, record.result.limit_points,
-                          record.result.breakdown, record.n_rings))
-        attributes[a.name.c_str()] = attribute_value(a);
-      if (record.time_run && !record.steps.empty() && !std::isnan(record.result.error_estimate))
-        for (const SummaryAttribute &a : time_integration_attributes(record.result.time_steps,
-                                                                     record.result.rejected_steps,
-                                                                     record.result.error_estimate))
-          attributes[a.name.c_str()] = attribute_value(a);
-      return attributes;
-    }
+    /// The /summary attributes: onset, limit points, breakdown, time integration.
+    py::dict attributes() const { return python::entries(record.attributes, Place::attribute); }
 
     /// Unit and description of every /summary column.
     py::dict columns() const
     {
       py::dict columns;
-      for (const OutputField *c : standard_summary_columns())
-        columns[c->name] = py::make_tuple(c->unit, c->description);
-      for (const OutputField *c : postprocessor_columns())
-        columns[c->name] = py::make_tuple(c->unit, c->description);
+      for (const Quantity *c : standard_summary_columns())
+        columns[c->name] = py::make_tuple(c->unit.name, c->description);
+      for (const Quantity *c : postprocessor_columns())
+        columns[c->name] = py::make_tuple(c->unit.name, c->description);
       return columns;
     }
 
@@ -322,28 +302,28 @@ namespace
     py::object summary_cache; // the summary dict once built
 
     /// A standard column over the steps, as the file stores it.
-    py::object standard_column(const OutputField &column) const
+    py::object standard_column(const Quantity &column) const
     {
       const std::size_t   n     = record.steps.size();
-      const std::size_t   width = column.shape == Shape::per_ring ? record.n_rings : 1;
+      const std::size_t   width = column.shape == shape::step_ring ? record.n_rings : 1;
       std::vector<double> values;
       values.reserve(n * width);
       for (const StepSummary &s : record.steps)
         {
-          const std::vector<double> row = scaled(column.summary_values(s), column.factor);
+          const std::vector<double> row = in_unit(column.summary_values(s), column.unit);
           values.insert(values.end(), row.begin(), row.end());
         }
       std::vector<py::ssize_t> shape = {py::ssize_t(n)};
-      if (column.shape == Shape::per_ring)
+      if (column.shape == shape::step_ring)
         shape.push_back(py::ssize_t(width));
       return column.storage == Storage::integer ? py::object(integer_array(values, shape)) :
                                                   py::object(real_array(values, shape));
     }
 
     /// The postprocessors' columns of the steps, in the order they first appear.
-    std::vector<const OutputField *> postprocessor_columns() const
+    std::vector<const Quantity *> postprocessor_columns() const
     {
-      std::vector<const OutputField *> columns;
+      std::vector<const Quantity *> columns;
       for (const StepSummary &s : record.steps)
         for (const auto &entry : s.columns)
           if (std::find(columns.begin(), columns.end(), entry.first) == columns.end())
@@ -352,61 +332,23 @@ namespace
     }
   };
 
-  /// The result of cdea.sweep().
+  /// The result of cdea.sweep(): the map's product.
   class Sweep
   {
   public:
     explicit Sweep(SweepRecord record)
       : record(std::move(record))
-      , content(sweep_map_content(this->record.map, this->record.parameters))
+      , product(sweep_product(this->record.map, this->record.parameters))
     {}
-
-    py::dict arrays() const
-    {
-      py::dict arrays;
-      for (const MapFileContent::Dataset &d : content.datasets)
-        {
-          const std::vector<py::ssize_t> shape(d.dims.begin(), d.dims.end());
-          if (d.kind == MapFileContent::Kind::text)
-            arrays[d.name.c_str()] = py::module_::import("numpy").attr("array")(d.texts, "object");
-          else if (d.kind == MapFileContent::Kind::integer)
-            arrays[d.name.c_str()] = integer_array(d.values, shape);
-          else
-            arrays[d.name.c_str()] = real_array(d.values, shape);
-        }
-      return arrays;
-    }
-
-    py::dict attributes() const
-    {
-      py::dict attributes;
-      for (const MapFileContent::Attribute &a : content.attributes)
-        if (a.kind == MapFileContent::Kind::text)
-          attributes[a.name.c_str()] = a.text;
-        else if (a.kind == MapFileContent::Kind::integer)
-          attributes[a.name.c_str()] = static_cast<int>(a.real);
-        else
-          attributes[a.name.c_str()] = a.real;
-      return attributes;
-    }
-
-    py::dict columns() const
-    {
-      py::dict columns;
-      for (const MapFileContent::Dataset &d : content.datasets)
-        columns[d.name.c_str()] = py::make_tuple(d.unit, d.description);
-      return columns;
-    }
 
     std::string write(const py::object &path) const
     {
-      return write_file(path, record.results_path, [this](const std::string &file) {
-        write_sweep_file(file, record.map, record.parameters);
-      });
+      return write_file(path, record.results_path,
+                        [this](const std::string &file) { write_product_file(product, file); });
     }
 
-    SweepRecord    record;
-    MapFileContent content;
+    SweepRecord record;
+    Product     product;
   };
 
   Run run_method(const py::object &prm, const py::object &overrides, const RunMethod method)
@@ -477,10 +419,16 @@ namespace
     py::class_<Sweep>(m, "SweepResult",
                       "The design map of cdea.sweep(), in memory: the datasets and root "
                       "attributes of the map file as numpy arrays (same names, same units).")
-      .def_property_readonly("arrays", &Sweep::arrays, "dict of numpy arrays, one per dataset")
-      .def_property_readonly("attributes", &Sweep::attributes, "dict of the root attributes")
-      .def_property_readonly("columns", &Sweep::columns,
-                             "dict name -> (unit, description) of the datasets")
+      .def_property_readonly(
+        "arrays", [](const Sweep &s) { return python::entries(s.product.root(), Place::dataset); },
+        "dict of numpy arrays, one per dataset")
+      .def_property_readonly(
+        "attributes",
+        [](const Sweep &s) { return python::entries(s.product.root(), Place::attribute); },
+        "dict of the root attributes")
+      .def_property_readonly(
+        "columns", [](const Sweep &s) { return python::columns(s.product.root()); },
+        "dict name -> (unit, description) of the datasets")
       .def_property_readonly("seconds", [](const Sweep &s) { return s.record.seconds; })
       .def_property_readonly("parameters", [](const Sweep &s) { return s.record.parameters; })
       .def_property_readonly("results_path", [](const Sweep &s) { return s.record.results_path; })

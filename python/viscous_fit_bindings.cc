@@ -6,10 +6,14 @@
 #include <cdea/design/viscous_fit.h>
 #include <cdea/input/parameter_input.h>
 #include <cdea/input/validation.h>
+#include <cdea/model/quantities_fit.h>
+#include <cdea/output/product_file.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+
+#include "product_convert.h"
 
 #include <cmath>
 #include <iostream>
@@ -20,13 +24,6 @@ using namespace cdea;
 
 namespace
 {
-  py::array_t<double> numbers(const std::vector<double> &v)
-  {
-    py::array_t<double> a(py::ssize_t(v.size()));
-    std::copy(v.begin(), v.end(), a.mutable_data());
-    return a;
-  }
-
   /// An in-process DMA or creep fit.
   struct ViscousCalibration
   {
@@ -37,76 +34,8 @@ namespace
     CreepData   creep;
     FitResult   result;
 
-    py::dict by_name(const std::vector<double> &values) const
-    {
-      py::dict d;
-      for (std::size_t j = 0; j < settings.free.size(); ++j)
-        d[py::str(settings.free[j].name())] = values[j];
-      return d;
-    }
-
-    py::array_t<double> correlation() const
-    {
-      const auto          K = py::ssize_t(settings.free.size());
-      py::array_t<double> a({K, K});
-      for (py::ssize_t i = 0; i < K; ++i)
-        for (py::ssize_t j = 0; j < K; ++j)
-          a.mutable_at(i, j) = result.correlation.size() ? result.correlation(i, j) : NAN;
-      return a;
-    }
-
-    /// /data of the fit file (kPa or mm, as written).
-    py::dict data() const
-    {
-      py::dict            d;
-      std::vector<double> fitted, residual;
-      const double        unit = kind == FitDataKind::dma ? 1e-3 : 1e3;
-      for (Eigen::Index i = 0; i < result.fitted.size(); ++i)
-        {
-          fitted.push_back(result.fitted[i] * unit);
-          residual.push_back(result.residuals[i] * unit);
-        }
-      if (kind == FitDataKind::dma)
-        {
-          std::vector<double> storage, loss, fs, fl, rs, rl;
-          for (std::size_t i = 0; i < dma.size(); ++i)
-            {
-              storage.push_back(dma.storage[i] * 1e-3);
-              loss.push_back(dma.loss[i] * 1e-3);
-              if (!fitted.empty())
-                {
-                  fs.push_back(fitted[2 * i]), fl.push_back(fitted[2 * i + 1]);
-                  rs.push_back(residual[2 * i]), rl.push_back(residual[2 * i + 1]);
-                }
-            }
-          d["frequency_Hz"]          = numbers(dma.frequency);
-          d["storage_kPa"]           = numbers(storage);
-          d["loss_kPa"]              = numbers(loss);
-          d["weight"]                = numbers(dma.weight);
-          d["fitted_storage_kPa"]    = numbers(fs);
-          d["fitted_loss_kPa"]       = numbers(fl);
-          d["residual_storage_kPa"]  = numbers(rs);
-          d["residual_loss_kPa"]     = numbers(rl);
-          return d;
-        }
-      std::vector<double> measured;
-      for (const double x : creep.displacement)
-        measured.push_back(x * 1e3);
-      d["time_s"]          = numbers(creep.times);
-      d["displacement_mm"] = numbers(measured);
-      d["weight"]          = numbers(creep.weight);
-      d["fitted_mm"]       = numbers(fitted);
-      d["residual_mm"]     = numbers(residual);
-      return d;
-    }
-
-    void write(const std::string &path) const
-    {
-      if (kind == FitDataKind::dma)
-        write_dma_fit_file(path, parameter_text, dma, settings, result);
-      else
-        write_creep_fit_file(path, parameter_text, creep, settings, result);
-    }
+    /// The fit's product (model/quantities_fit.h), once fitted.
+    Product product;
   };
 
   /// CSV text (a str with a line break) or a path, read as @p kind.
@@ -148,18 +77,35 @@ void bind_viscous_fit(py::module_ &m)
       return c.kind == FitDataKind::dma ? "dma" : "creep";
     })
     .def_property_readonly("values",
-                           [](const ViscousCalibration &c) { return c.by_name(c.result.values); },
+                           [](const ViscousCalibration &c) {
+                             return python::by_name(c.product.root(), fit_quantity::free_parameters,
+                                                    fit_quantity::fitted_values);
+                           },
                            "fitted values by parameter name (SI units)")
+    .def_property_readonly("standard_errors",
+                           [](const ViscousCalibration &c) {
+                             return python::by_name(c.product.root(), fit_quantity::free_parameters,
+                                                    fit_quantity::standard_errors);
+                           },
+                           "standard errors by parameter name (SI units)")
+    .def_property_readonly("correlation",
+                           [](const ViscousCalibration &c) {
+                             return python::value(c.product.root().at(fit_quantity::correlation));
+                           })
     .def_property_readonly(
-      "standard_errors", [](const ViscousCalibration &c) { return c.by_name(c.result.standard_errors); },
-      "standard errors by parameter name (SI units)")
-    .def_property_readonly("correlation", &ViscousCalibration::correlation)
-    .def_property_readonly("data", &ViscousCalibration::data, "/data of the fit file (dict)")
+      "data",
+      [](const ViscousCalibration &c) {
+        return python::entries(c.product.at("/data"), Place::dataset);
+      },
+      "/data of the fit file (dict)")
     .def_property_readonly("rms", [](const ViscousCalibration &c) { return c.result.rms; },
                            "weighted rms residual (SI: Pa for DMA, m for creep)")
     .def_property_readonly("warnings", [](const ViscousCalibration &c) { return c.result.warnings; })
     .def_property_readonly("converged", [](const ViscousCalibration &c) { return c.result.converged; })
-    .def("write", [](const ViscousCalibration &c, const std::string &path) { c.write(path); },
+    .def("write",
+         [](const ViscousCalibration &c, const std::string &path) {
+           write_product_file(c.product, path);
+         },
          py::arg("path"), "Write the fit file (HDF5) to path");
   m.def(
     "fit_viscoelastic",
@@ -178,6 +124,9 @@ void bind_viscous_fit(py::module_ &m)
                                               fit_creep(p, c.creep, c.settings, report);
       if (!c.result.started)
         throw InputError(c.result.status);
+      c.product = c.kind == FitDataKind::dma ?
+                    dma_fit_product(c.parameter_text, c.dma, c.settings, c.result) :
+                    creep_fit_product(c.parameter_text, c.creep, c.settings, c.result);
       return c;
     },
     py::arg("prm"), py::arg("data"), py::arg("overrides") = py::none(),

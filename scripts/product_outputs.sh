@@ -71,6 +71,7 @@ chart-spectrum|chart|spectrum.prm|-|
 chart-shear-thinning|chart|shear-thinning.prm|-|
 response-response|response|response.prm|-|
 frequency-sweep|frequency-sweep|frequency-sweep.prm|-|
+recover-fold-rv1.7|recover|fold-rv1.7.prm|-|
 EOF
 }
 
@@ -100,10 +101,21 @@ cases | while IFS='|' read -r name command prm data sets; do
   if [ -n "$sets" ]; then
     extra=(--set "${sets#--set }")
   fi
+  output=(--set "Output/Directory=$dir/files")
+  if [ "$command" = recover ]; then
+    # A run of the example killed after its 50th step (its journal cut
+    # there, the same for every build), then `cdea recover` of its file.
+    results="$dir/files/${prm%.prm}.h5"
+    (cd "$src" && CDEA_CHECKPOINT_SECONDS=1e9 "$python" scripts/killed_run_journal.py \
+       "$build/cdea" "prm/$prm" 50 "$results" "$results.journal" \
+       --set "Output/Directory=$dir/files") || echo "$name: no journal to recover"
+    args=(recover "$results")
+    output=()
+  fi
   start=$(date +%s.%N)
   set +e
   # From the source folder, as the examples' relative table files expect.
-  (cd "$src" && "$build/cdea" "${args[@]}" "${extra[@]}" --set "Output/Directory=$dir/files" \
+  (cd "$src" && "$build/cdea" "${args[@]}" "${extra[@]}" "${output[@]}" \
       > "$dir/stdout.raw" 2> "$dir/stderr.raw")
   rc=$?
   set -e

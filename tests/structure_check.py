@@ -12,6 +12,18 @@
 5. No friend declaration in fe/: what is built on the model's state sees it
    through the read-only ModelAccess (include/cdea/fe/model_access.h), not
    its inside.
+6. Unit factors only in the table of quantities (include/cdea/base/units.h):
+   a power of ten of a unit (1e3, 1e-3, 1e6, 1e-6, 1e9, 1e-9, 1e12, 1e-12,
+   1000., 0.001) that multiplies or divides a value from the right (x * 1e3,
+   x / 1e3) is a unit factor, and at most MAX_UNIT_FACTORS of them stand
+   anywhere else in source/, include/ and python/: the number left today (in
+   the input checks, the settings parsers, the laws and two load terms), so
+   that no new one is added; lower it as they move to the table. A relative
+   tolerance or bound is written before its scale (1e-9 * scale) and is not
+   one.
+7. The rows of the table (Quantity objects) are defined only in the table's
+   files (model/quantity.h, model/quantities_*.h, model/output_fields.*):
+   a study names a row, never makes one.
 
 Usage: structure_check.py [SOURCE_DIR] [--list-functions N]
 Prints every violation with its file and line; exits 1 if there is one.
@@ -22,6 +34,10 @@ import sys
 
 MAX_FUNCTION_LINES = 80
 MAX_FILE_LINES = 600
+MAX_UNIT_FACTORS = 55
+UNIT_TABLE = "include/cdea/base/units.h"
+QUANTITY_TABLE = re.compile(r"^(include/cdea|source)/model/(quantity\.h|quantities_\w+\.h|"
+                            r"output_fields\.(h|cc))$")
 
 
 def folder_order(root):
@@ -296,6 +312,31 @@ def check_friends(root):
     return problems
 
 
+UNIT_LITERAL = r"(?:1e-?(?:3|6|9|12)|1000\.0*|0\.001)"
+UNIT_FACTOR = re.compile(r"[*/]\s*(" + UNIT_LITERAL + r")(?![\w.])")
+QUANTITY_DEFINITION = re.compile(r"\bQuantity\s+\w+\s*[{=(]")
+
+
+def check_unit_factors(root):
+    """Unit factors and rows of the table outside the table (rules 6 and 7)."""
+    problems, factors = [], []
+    for path, _ in code_files(root):
+        code = strip_code(open(os.path.join(root, path), encoding="utf-8").read())
+        for number, line in enumerate(code.split("\n"), 1):
+            if path != UNIT_TABLE:
+                factors += [f"{path}:{number}: unit factor {m.group(1)}"
+                            for m in UNIT_FACTOR.finditer(line)]
+            if not QUANTITY_TABLE.match(path) and QUANTITY_DEFINITION.search(line):
+                problems.append(f"{path}:{number}: a row of the table of quantities defined "
+                                f"outside it (model/quantities_*.h)")
+    if len(factors) > MAX_UNIT_FACTORS:
+        problems += factors
+        problems.append(f"{len(factors)} unit factors outside {UNIT_TABLE} (at most "
+                        f"{MAX_UNIT_FACTORS}): convert through a unit of the table "
+                        f"(units::mm.from_si(x), units::kPa.in_si(x))")
+    return problems, len(factors)
+
+
 def main():
     args = sys.argv[1:]
     listing = 0
@@ -306,13 +347,14 @@ def main():
     root = args[0] if args else os.environ.get(
         "CDEA_SOURCE_DIR", os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
     order = folder_order(root)
+    unit_problems, n_factors = check_unit_factors(root)
     problems = (check_order_and_cycles(root, order) + check_function_lengths(root, listing) +
-                check_friends(root))
+                check_friends(root) + unit_problems)
     for p in problems:
         print(p)
     n_files = len(code_files(root))
-    print(f"structure_check: {n_files} files, folder order {' -> '.join(order)} (python above): "
-          f"{len(problems)} problem(s)")
+    print(f"structure_check: {n_files} files, folder order {' -> '.join(order)} (python above), "
+          f"{n_factors} unit factors outside the table: {len(problems)} problem(s)")
     return 1 if problems else 0
 
 

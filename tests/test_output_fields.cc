@@ -34,7 +34,7 @@ using namespace cdea_test;
 namespace
 {
   /// Every postprocessor column of the table.
-  const std::vector<const OutputField *> postprocessor_columns = {
+  const std::vector<const Quantity *> postprocessor_columns = {
     &summary_column::wrinkled_zone_inner,  &summary_column::wrinkled_zone_outer,
     &summary_column::min_eigenvalue,       &summary_column::stable,
     &summary_column::max_field,            &summary_column::volume,
@@ -48,17 +48,17 @@ namespace
     std::set<std::string> names;
     bool                  described = true;
     for (const auto *list : {&standard_summary_columns(), &postprocessor_columns})
-      for (const OutputField *c : *list)
+      for (const Quantity *c : *list)
         {
           names.insert(c->name);
-          described = described && *c->unit && std::string(c->description).size() > 5 &&
-                      (c->runs & every_run) != 0 && c->factor > 0.;
+          described = described && *c->unit.name && std::string(c->description).size() > 5 &&
+                      (c->runs & every_run) != 0 && c->unit.multiply > 0.;
         }
     check(names.size() == standard_summary_columns().size() + postprocessor_columns.size(),
           "every /summary column has a name of its own");
     check(described, "every /summary column has a unit, a description, runs and a factor");
     std::vector<std::string> standard;
-    for (const OutputField *c : standard_summary_columns())
+    for (const Quantity *c : standard_summary_columns())
       standard.push_back(c->name);
     check(standard == std::vector<std::string>{"stage", "load_factor", "voltage_kV", "mass_g",
                                                "displacement_mm", "stroke_mm", "s2_min_kPa",
@@ -66,9 +66,9 @@ namespace
                                                "newton_iterations"},
           "the standard columns in the file's order");
     bool with_values = true;
-    for (const OutputField *c : standard_summary_columns())
+    for (const Quantity *c : standard_summary_columns())
       with_values = with_values && c->summary_values;
-    for (const OutputField *c : postprocessor_columns)
+    for (const Quantity *c : postprocessor_columns)
       with_values = with_values && !c->summary_values;
     check(with_values, "standard columns read the summary, postprocessor columns are set");
     std::vector<std::string> in_file, in_paraview;
@@ -99,18 +99,18 @@ namespace
           "set() overwrites, get() reads by handle");
     check(v.in_file_units(summary_column::volume) == 3e-6 * 1e9,
           "in the file's unit: mm^3 from m^3");
-    std::vector<const OutputField *> order;
+    std::vector<const Quantity *> order;
     for (const auto &entry : v)
       order.push_back(entry.first);
-    check(order == std::vector<const OutputField *>{&summary_column::volume,
+    check(order == std::vector<const Quantity *>{&summary_column::volume,
                                                     &summary_column::waveform_time},
           "in the order first set");
   }
 
   /// The postprocessor columns the steps of @p record have.
-  std::set<const OutputField *> columns_of(const RunRecord &record)
+  std::set<const Quantity *> columns_of(const RunRecord &record)
   {
-    std::set<const OutputField *> seen;
+    std::set<const Quantity *> seen;
     for (const StepSummary &s : record.steps)
       for (const auto &entry : s.columns)
         seen.insert(entry.first);
@@ -120,9 +120,9 @@ namespace
   void check_runs(const std::string &what, const unsigned int kind, const RunRecord &record)
   {
     check(!record.steps.empty() && record.result.completed, what + " run completes");
-    const std::set<const OutputField *> seen = columns_of(record);
-    std::set<const OutputField *>       expected;
-    for (const OutputField *c : postprocessor_columns)
+    const std::set<const Quantity *> seen = columns_of(record);
+    std::set<const Quantity *>       expected;
+    for (const Quantity *c : postprocessor_columns)
       if (c->runs & kind)
         expected.insert(c);
     check(seen == expected, what + ": its columns are the rows that name it (" +
@@ -224,7 +224,7 @@ namespace
           what + ": volume_mm3 in mm^3");
     const std::vector<double> t = doubles(file, time);
     check(t.size() == 2 && std::isnan(t[0]) && t[1] == 0.25, what + ": time_s NaN before it is set");
-    check(text_attribute(file, volume, "unit") == summary_column::volume.unit &&
+    check(text_attribute(file, volume, "unit") == summary_column::volume.unit.name &&
             text_attribute(file, volume, "description") == summary_column::volume.description &&
             text_attribute(file, time, "description") == summary_column::waveform_time.description,
           what + ": units and descriptions from the table");

@@ -37,7 +37,7 @@ namespace
   const Scene scene = cdea::paper_scene({1., 3.}, {{5.}});
 
   /// A time column of @p s in the file's unit (NaN if absent).
-  double column(const StepSummary &s, const OutputField &c) { return s.columns.in_file_units(c); }
+  double column(const StepSummary &s, const Quantity &c) { return s.columns.in_file_units(c); }
 
   struct EnergyRun
   {

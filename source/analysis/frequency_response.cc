@@ -3,7 +3,8 @@
 #include <cdea/base/run_control.h>
 #include <cdea/fe/linear_dynamics.h>
 #include <cdea/input/solver_settings.h>
-#include <cdea/output/hdf5_writer.h>
+#include <cdea/model/quantities_common.h>
+#include <cdea/model/quantities_response.h>
 
 #include <chrono>
 #include <cmath>
@@ -130,89 +131,72 @@ namespace cdea
 {
   namespace
   {
-    /// Real and imaginary parts of @p values times @p factor, row-major.
-    void complex_datasets(Hdf5Writer &w, const std::string &path, const Eigen::MatrixXcd &values,
-                          const double factor, const std::string &unit,
-                          const std::string &description)
+    /// The values of @p m row by row, and the dimensions of a dataset of
+    /// them (one dimension if @p m has one column).
+    template <typename Matrix>
+    auto row_major(const Matrix &m, std::vector<std::size_t> &dims)
     {
-      const std::size_t   rows = values.rows(), columns = values.cols();
-      std::vector<double> re, im;
-      for (std::size_t i = 0; i < rows; ++i)
-        for (std::size_t k = 0; k < columns; ++k)
-          {
-            re.push_back(factor * values(i, k).real());
-            im.push_back(factor * values(i, k).imag());
-          }
-      const std::vector<std::size_t> dims =
-        columns == 1 ? std::vector<std::size_t>{rows} : std::vector<std::size_t>{rows, columns};
-      w.dataset(path + "_real", dims, re, unit, description + " (real part)");
-      w.dataset(path + "_imag", dims, im, unit, description + " (imaginary part)");
-    }
-
-    std::vector<double> column_values(const Eigen::MatrixXd &m)
-    {
-      std::vector<double> v;
+      std::vector<typename Matrix::Scalar> v;
       for (Eigen::Index i = 0; i < m.rows(); ++i)
         for (Eigen::Index j = 0; j < m.cols(); ++j)
           v.push_back(m(i, j));
+      dims = m.cols() == 1 ? std::vector<std::size_t>{std::size_t(m.rows())} :
+                             std::vector<std::size_t>{std::size_t(m.rows()), std::size_t(m.cols())};
+      return v;
+    }
+
+    /// |z| of each of @p values.
+    std::vector<double> magnitudes(const Eigen::VectorXcd &values)
+    {
+      std::vector<double> v;
+      for (Eigen::Index i = 0; i < values.size(); ++i)
+        v.push_back(std::abs(values[i]));
       return v;
     }
   } // namespace
 
-  void write_response_file(const std::string &path, const std::string &parameter_text,
-                           const FrequencyResponse &r)
+  Product response_product(const std::string &parameter_text, const FrequencyResponse &r)
   {
-    Hdf5Writer          w(path);
-    std::vector<double> bias_kV;
-    for (const double v : r.bias)
-      bias_kV.push_back(v * 1e-3);
-    w.attribute("/", "parameters", parameter_text);
-    w.attribute("/", "code_version", std::string(CDEA_VERSION));
-    w.attribute("/", "bias_voltage_kV", bias_kV);
-    w.attribute("/", "displacement_mm", r.displacement * 1e3);
-    w.attribute("/", "volume_mm3", r.volume * 1e9);
-    w.attribute("/", "drive_scale_kV", r.drive_scale * 1e-3);
-    w.attribute("/", "disk_mass_g", r.disk_mass * 1e3);
-    w.attribute("/", "water_column_mass_kg_per_m4", r.water_mass);
-    w.attribute("/", "membrane_density_kg_per_m3", r.density);
-    w.attribute("/", "seconds", r.seconds);
-    const std::size_t n = r.frequency.size();
-    w.group("/transfer");
-    w.dataset("/transfer/frequency_Hz", {n}, r.frequency, "Hz", "drive frequency");
-    // Per kV: m/V * 1e3 mm/m * 1e3 V/kV = 1e6.
-    complex_datasets(w, "/transfer/disk_mm_per_kV", r.disk, 1e6, "mm/kV",
-                     "displacement amplitude of the disk per kV on each ring (frequencies x rings)");
-    complex_datasets(w, "/transfer/volume_mm3_per_kV", r.volume_per_volt, 1e12, "mm^3/kV",
-                     "enclosed volume amplitude per kV on each ring (frequencies x rings)");
-    complex_datasets(w, "/transfer/drive_disk_mm_per_kV", r.disk_drive, 1e6, "mm/kV",
-                     "displacement amplitude of the disk per kV of the drive (every ring in "
-                     "proportion to its bias voltage, drive_scale_kV the largest)");
-    complex_datasets(w, "/transfer/drive_volume_mm3_per_kV", r.volume_drive, 1e12, "mm^3/kV",
-                     "enclosed volume amplitude per kV of the drive");
-    std::vector<double> amplitude, phase;
+    using namespace response_quantity;
+    Product product;
+    product.root()
+      .set(common_quantity::parameters, parameter_text)
+      .set(common_quantity::code_version, CDEA_VERSION)
+      .set(bias_voltage, r.bias)
+      .set(displacement, r.displacement)
+      .set(volume, r.volume)
+      .set(drive_scale, r.drive_scale)
+      .set(disk_mass, r.disk_mass)
+      .set(water_mass, r.water_mass)
+      .set(density, r.density)
+      .set(seconds, r.seconds);
+    std::vector<double> phase_values;
     for (Eigen::Index i = 0; i < r.disk_drive.size(); ++i)
+      phase_values.push_back(std::arg(r.disk_drive[i]));
+    ProductGroup &transfer = product.group("/transfer");
+    transfer.set(frequency, r.frequency);
+    const std::pair<const Quantity *, Eigen::MatrixXcd> complex_values[] = {
+      {&disk, r.disk},
+      {&volume_per_volt, r.volume_per_volt},
+      {&drive_disk, r.disk_drive},
+      {&drive_volume, r.volume_drive}};
+    for (const auto &[row, values] : complex_values)
       {
-        amplitude.push_back(1e6 * std::abs(r.disk_drive[i]));
-        phase.push_back(std::arg(r.disk_drive[i]) * 180. / M_PI);
+        std::vector<std::size_t> dims;
+        const auto               v = row_major(values, dims);
+        transfer.set(*row, v, dims);
       }
-    w.dataset("/transfer/drive_disk_amplitude_mm_per_kV", {n}, amplitude, "mm/kV",
-              "|drive_disk|: the Bode amplitude");
-    w.dataset("/transfer/drive_disk_phase_deg", {n}, phase, "deg",
-              "arg(drive_disk): the Bode phase (0: in phase with the voltage)");
-    w.group("/modes");
-    const std::size_t m = r.mode_frequency.size(), s = r.sample_R.size();
-    std::vector<double> R_mm;
-    for (const double R : r.sample_R)
-      R_mm.push_back(R * 1e3);
-    w.dataset("/modes/frequency_Hz", {m}, r.mode_frequency, "Hz",
-              "natural frequencies (modes of Re K(omega) and M at their own omega)");
-    w.dataset("/modes/damping_ratio", {m}, r.mode_damping, "1",
-              "modal damping ratio u^T Im K u / (2 u^T Re K u)");
-    w.dataset("/modes/R_mm", {s}, R_mm, "mm", "reference radius of the shape samples");
-    w.dataset("/modes/shape_r", {m, s}, column_values(r.mode_r), "1",
-              "radial displacement of each mode per unit disk displacement (modes x samples)");
-    w.dataset("/modes/shape_z", {m, s}, column_values(r.mode_z), "1",
-              "vertical displacement of each mode per unit disk displacement (modes x samples)");
-    w.commit();
+    transfer.set(amplitude, magnitudes(r.disk_drive)).set(phase, phase_values);
+    const std::size_t        m = r.mode_frequency.size(), s = r.sample_R.size();
+    std::vector<std::size_t> dims;
+    const auto               shapes_r = row_major(r.mode_r, dims);
+    const auto               shapes_z = row_major(r.mode_z, dims);
+    product.group("/modes")
+      .set(mode_frequency, r.mode_frequency)
+      .set(mode_damping, r.mode_damping)
+      .set(sample_R, r.sample_R)
+      .set(shape_r, shapes_r, {m, s})
+      .set(shape_z, shapes_z, {m, s});
+    return product;
   }
 } // namespace cdea

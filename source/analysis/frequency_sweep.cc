@@ -4,7 +4,8 @@
 #include <cdea/base/mpi_session.h>
 #include <cdea/base/run_control.h>
 #include <cdea/base/text.h>
-#include <cdea/output/hdf5_writer.h>
+#include <cdea/model/quantities_common.h>
+#include <cdea/model/quantities_frequency_sweep.h>
 
 #include <algorithm>
 #include <chrono>
@@ -284,63 +285,52 @@ namespace cdea
     return r;
   }
 
-  void write_frequency_sweep_file(const std::string &path, const std::string &parameter_text,
+  Product periods_product(const std::vector<SteadyPeriod> &periods)
+  {
+    using namespace frequency_sweep_quantity;
+    Product       product;
+    ProductGroup &sweep  = product.group("/sweep");
+    const auto    column = [&](const Quantity &row, const auto &value) {
+      std::vector<double> v;
+      for (const SteadyPeriod &s : periods)
+        v.push_back(value(s));
+      sweep.set(row, v);
+    };
+    std::vector<std::complex<double>> harmonics;
+    for (const SteadyPeriod &s : periods)
+      harmonics.push_back(s.first_harmonic);
+    column(frequency, [](auto &s) { return s.frequency; });
+    column(stroke_amplitude, [](auto &s) { return s.stroke_amplitude; });
+    column(mean_displacement, [](auto &s) { return s.mean_displacement; });
+    sweep.set(harmonic, harmonics);
+    column(swept_volume, [](auto &s) { return s.volume_swing; });
+    column(dissipated, [](auto &s) { return s.dissipated; });
+    column(electrical_work, [](auto &s) { return s.electrical_work; });
+    column(energy_defect, [](auto &s) { return s.energy_defect(); });
+    column(s2_min, [](auto &s) { return s.s2_min; });
+    column(periodicity_defect, [](auto &s) { return std::max(s.defect, s.check_move); });
+    column(frequency_seconds, [](auto &s) { return s.seconds; });
+    column(loss_of_tension, [](auto &s) { return s.loss_of_tension ? 1. : 0.; });
+    column(converged, [](auto &s) { return s.converged ? 1. : 0.; });
+    column(newton_iterations, [](auto &s) { return double(s.newton_iterations); });
+    column(period_maps, [](auto &s) { return double(s.period_maps); });
+    return product;
+  }
+
+  Product frequency_sweep_product(const std::string          &parameter_text,
                                   const FrequencySweepResult &r)
   {
-    Hdf5Writer w(path);
-    w.attribute("/", "parameters", parameter_text);
-    w.attribute("/", "code_version", std::string(CDEA_VERSION));
-    w.attribute("/", "quasi_static_amplitude_mm", r.quasi_static_amplitude * 1e3);
-    w.attribute("/", "usable_stroke_factor", r.usable_factor);
-    w.attribute("/", "usable_band_low_Hz", r.band_low);
-    w.attribute("/", "usable_band_high_Hz", r.band_high);
-    w.attribute("/", "seconds", r.seconds);
-    const std::size_t n = r.periods.size();
-    w.group("/sweep");
-    auto column = [&](const std::string &name, const std::string &unit,
-                      const std::string &description, auto value) {
-      std::vector<double> v;
-      for (const SteadyPeriod &s : r.periods)
-        v.push_back(value(s));
-      w.dataset("/sweep/" + name, {n}, v, unit, description);
-    };
-    column("frequency_Hz", "Hz", "drive frequency", [](auto &s) { return s.frequency; });
-    column("stroke_amplitude_mm", "mm", "half the peak-to-peak of z(A) over the steady period",
-           [](auto &s) { return s.stroke_amplitude * 1e3; });
-    column("mean_displacement_mm", "mm", "z(A) averaged over the steady period",
-           [](auto &s) { return s.mean_displacement * 1e3; });
-    column("harmonic_real_mm", "mm", "z(A)'s first harmonic c: z = mean + Re(c exp(i w t)) + ...",
-           [](auto &s) { return s.first_harmonic.real() * 1e3; });
-    column("harmonic_imag_mm", "mm", "imaginary part of c",
-           [](auto &s) { return s.first_harmonic.imag() * 1e3; });
-    column("swept_volume_mm3", "mm^3",
-           "peak-to-peak of the enclosed volume: the volume pumped per cycle with the water "
-           "load, the swept volume without",
-           [](auto &s) { return s.volume_swing * 1e9; });
-    column("dissipated_energy_mJ", "mJ", "the branches' dissipation over the period",
-           [](auto &s) { return s.dissipated * 1e3; });
-    column("electrical_work_mJ", "mJ", "the voltage source's work over the period",
-           [](auto &s) { return s.electrical_work * 1e3; });
-    column("energy_defect", "1", "|electrical work - dissipated - stored change| / dissipated",
-           [](auto &s) { return s.energy_defect(); });
-    column("s2_min_kPa", "kPa", "smallest hoop stress over the period",
-           [](auto &s) { return s.s2_min * 1e-3; });
-    column("periodicity_defect", "1", "weighted periodicity defect (Steady state/Tolerance)",
-           [](auto &s) { return std::max(s.defect, s.check_move); });
-    column("seconds", "s", "computing time of the frequency", [](auto &s) { return s.seconds; });
-    std::vector<int> flag, converged, newton, maps;
-    for (const SteadyPeriod &s : r.periods)
-      {
-        flag.push_back(s.loss_of_tension ? 1 : 0);
-        converged.push_back(s.converged ? 1 : 0);
-        newton.push_back(int(s.newton_iterations));
-        maps.push_back(int(s.period_maps));
-      }
-    w.dataset("/sweep/loss_of_tension", flag, "1: the swing reaches loss of tension (s2 < 0)");
-    w.dataset("/sweep/usable", r.usable, "1: taut and the stroke within the usable factor");
-    w.dataset("/sweep/converged", converged, "1: the periodic steady state converged");
-    w.dataset("/sweep/newton_iterations", newton, "Newton iterations");
-    w.dataset("/sweep/period_maps", maps, "periods integrated (GMRES, checks, start)");
-    w.commit();
+    using namespace frequency_sweep_quantity;
+    Product product = periods_product(r.periods);
+    product.root()
+      .set(common_quantity::parameters, parameter_text)
+      .set(common_quantity::code_version, CDEA_VERSION)
+      .set(quasi_static_amplitude, r.quasi_static_amplitude)
+      .set(usable_factor, r.usable_factor)
+      .set(band_low, r.band_low)
+      .set(band_high, r.band_high)
+      .set(seconds, r.seconds);
+    product.group("/sweep").set(usable, std::vector<double>(r.usable.begin(), r.usable.end()));
+    return product;
   }
 } // namespace cdea

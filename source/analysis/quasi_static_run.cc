@@ -23,7 +23,10 @@ namespace cdea
   namespace
   {
     /// A postprocessor's column of @p s in the file's unit (NaN if absent).
-    double column(const StepSummary &s, const OutputField &c) { return s.columns.in_file_units(c); }
+    double column(const StepSummary &s, const Quantity &c) { return s.columns.in_file_units(c); }
+
+    /// A length (m) in mm, as the file's displacement, stroke and radii.
+    double mm(const double metres) { return units::mm.from_si(metres); }
 
     /// "-" for NaN, else fixed-point with @p decimals.
     std::string fixed_or_dash(const double value, const int decimals)
@@ -37,12 +40,12 @@ namespace cdea
       return std::isnan(stable) ? "-" : stable > 0. ? "yes" : "NO";
     }
 
-    /// Prints one table row per converged step and writes it to the file.
+    /// Prints one table row per converged step and streams it to the file.
     class StepRecorder
     {
     public:
-      StepRecorder(ResultsFile &file, LoadStepper &stepper, const Scene &scene)
-        : file(file)
+      StepRecorder(RunStream &stream, LoadStepper &stepper, const Scene &scene)
+        : stream(stream)
         , stepper(stepper)
         , scene(scene)
       {}
@@ -58,18 +61,18 @@ namespace cdea
 
       void step(const StepSummary &s)
       {
-        file.append(s, stepper.step_fields());
+        stream.step(s, stepper.step_fields());
         last = s;
         std::ostringstream v;
         for (const double x : s.voltages)
-          v << ' ' << std::setw(6) << format_fixed(x * 1e-3, 3);
+          v << ' ' << std::setw(6) << format_fixed(summary_column::voltage.in_file_units(x), 3);
         // Fixed-point from the first row on, for the rows and the lines after them.
         // Every column keeps a blank before it, also for t >= 1000 or s2 < -1000 mu.
         std::cout << std::fixed;
-        std::cout << std::setw(5) << file.n_steps() - 1 << std::setw(13) << stage_name(s.stage)
+        std::cout << std::setw(5) << stream.n_steps() - 1 << std::setw(13) << stage_name(s.stage)
                   << ' ' << std::setw(9) << format_fixed(s.load_factor, 5) << "  " << v.str()
-                  << ' ' << std::setw(11) << format_fixed(s.displacement * 1e3, 6) << ' '
-                  << std::setw(11) << fixed_or_dash(s.stroke * 1e3, 6) << ' ' << std::setw(11)
+                  << ' ' << std::setw(11) << format_fixed(mm(s.displacement), 6) << ' '
+                  << std::setw(11) << fixed_or_dash(mm(s.stroke), 6) << ' ' << std::setw(11)
                   << fixed_or_dash(column(s, summary_column::volume_change), 3) << ' ' << std::setw(11)
                   << format_fixed(s.s2_min / scene.material.shear_modulus, 6) << std::setw(6)
                   << (s.wrinkled ? "yes" : "no") << std::setw(7)
@@ -80,7 +83,7 @@ namespace cdea
       StepSummary last;
 
     private:
-      ResultsFile       &file;
+      RunStream         &stream;
       LoadStepper       &stepper;
       const Scene       &scene;
     };
@@ -95,7 +98,7 @@ namespace cdea
         , method(method)
         , path(results_path(p, method))
         , output(RunOutput::open(path, input.text, scene.n_rings(),
-                                 {{"method", to_string(method)}}))
+                                 {{run_attribute::method.name, to_string(method)}}))
         , stepper(scene, model, stepping_settings(p))
       {
         add_run_postprocessors(stepper, p, scene);
@@ -128,20 +131,19 @@ namespace cdea
       std::unique_ptr<RunOutput>      output;
       LoadStepper                     stepper;
       std::unique_ptr<ParaViewWriter> paraview;
+      std::optional<RunStream>        stream; ///< the file's product stream
       std::optional<StepRecorder>     recorder;
-      std::vector<LimitPoint>         limits;
-
-      ResultsFile &file() { return output->file(); }
 
       /// The writes before the first step: false (the output given up) if one fails.
       bool prepare()
       {
         // Limit points: /summary attributes limit_point_voltage_kV (k x rings)
         // and limit_point_displacement_mm (k), rewritten as each is found.
+        stream.emplace(output->file(), scene.n_rings(),
+                       method == RunMethod::shooting ? shooting_run : quasi_static_run);
         return output->prepare([&] {
-          file().write_onset(OnsetRecord());
-          recorder.emplace(file(), stepper, scene);
-          write_summary_attributes(file(), limit_point_attributes(limits, scene.n_rings()));
+          stream->start();
+          recorder.emplace(*stream, stepper, scene);
           // ParaView output (Output/ParaView): a VTU per step, moved in place at the end.
           if (p.output.paraview)
             paraview = std::make_unique<ParaViewWriter>(path.substr(0, path.size() - 3),
@@ -159,23 +161,22 @@ namespace cdea
           RunOutput::stop_point();
         };
         stepper.on_onset = [this](const OnsetRecord &onset) {
-          file().write_onset(onset);
+          stream->onset(onset);
           std::cout << "      loss of tension (s2 = 0) at " << format_kV(onset.voltages)
-                    << ", radius r = " << std::setprecision(6) << onset.radius * 1e3
+                    << ", radius r = " << std::setprecision(6) << mm(onset.radius)
                     << " mm (r/a = " << onset.radius / scene.disk_radius << ")" << std::endl;
         };
         stepper.on_limit_point = [this](const LimitPoint &limit) {
-          limits.push_back(limit);
-          write_summary_attributes(file(), limit_point_attributes(limits, scene.n_rings()));
+          stream->limit_point(limit);
           std::cout << "      limit point (fold) at " << format_kV(limit.voltages)
-                    << ", displacement " << std::setprecision(7) << limit.displacement * 1e3
+                    << ", displacement " << std::setprecision(7) << mm(limit.displacement)
                     << " mm" << std::endl;
         };
         stepper.on_breakdown = [this](const OnsetRecord &breakdown) {
-          write_summary_attributes(file(), breakdown_attributes(breakdown));
+          stream->breakdown(breakdown);
           std::cout << "      breakdown field " << p.solver.breakdown_field_MV_per_m
                     << " MV/m reached at " << format_kV(breakdown.voltages) << ", r = "
-                    << std::setprecision(6) << breakdown.radius * 1e3 << " mm" << std::endl;
+                    << std::setprecision(6) << mm(breakdown.radius) << " mm" << std::endl;
         };
       }
 
@@ -214,8 +215,8 @@ namespace cdea
       {
         const StepSummary &s = recorder->last;
         std::cout << "\nFinal state: voltages " << format_kV(s.voltages) << ", displacement "
-                  << std::setprecision(7) << s.displacement * 1e3 << " mm, stroke "
-                  << s.stroke * 1e3 << " mm\n";
+                  << std::setprecision(7) << mm(s.displacement) << " mm, stroke "
+                  << mm(s.stroke) << " mm\n";
         const double       volume_mm3 = column(s, summary_column::volume);
         std::ostringstream o;
         o << std::setprecision(7) << "  enclosed volume " << volume_mm3 << " mm^3, change "
@@ -236,12 +237,12 @@ namespace cdea
       {
         if (result.onset.found)
           std::cout << "Wrinkling onset (loss of tension): " << format_kV(result.onset.voltages)
-                    << " at r = " << result.onset.radius * 1e3 << " mm\n";
+                    << " at r = " << mm(result.onset.radius) << " mm\n";
         else
           std::cout << "Wrinkling onset: none along the path (s2 > 0 everywhere)\n";
         for (const LimitPoint &limit : result.limit_points)
           std::cout << "Limit point (fold): " << format_kV(limit.voltages) << ", displacement "
-                    << std::setprecision(7) << limit.displacement * 1e3 << " mm\n";
+                    << std::setprecision(7) << mm(limit.displacement) << " mm\n";
         if (p.solver.breakdown_field_MV_per_m > 0.)
           std::cout << "Breakdown field " << p.solver.breakdown_field_MV_per_m << " MV/m: "
                     << (result.breakdown.found ?

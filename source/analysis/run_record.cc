@@ -22,13 +22,16 @@ namespace cdea
   }
 
 
-  void write_summary_attributes(ResultsFile &file, const std::vector<SummaryAttribute> &attributes)
+  void RunRecord::append(const StepSummary &summary, const StepFields &step_fields)
   {
-    for (const SummaryAttribute &a : attributes)
-      if (a.rows == 0)
-        file.set_summary_attribute(a.name, a.values);
-      else
-        file.set_summary_attribute(a.name, a.values, a.rows, a.columns);
+    steps.push_back(summary);
+    fields.push_back(step_fields);
+  }
+
+  void RunRecord::set_summary_attributes(const ProductGroup &values)
+  {
+    for (const ProductEntry &e : values.attributes)
+      attributes.set(e);
   }
 
   void run_keeping_steps(RunRecord &record, const std::function<RunResult()> &run)
@@ -52,21 +55,13 @@ namespace cdea
   void write_run(const RunRecord &record, const std::string &path)
   {
     std::vector<std::pair<std::string, std::string>> root_attributes = {
-      {"method", to_string(record.method)}};
+      {run_attribute::method.name, to_string(record.method)}};
     root_attributes.insert(root_attributes.end(), record.root_attributes.begin(),
                            record.root_attributes.end());
     ResultsFile file(path, record.parameters, record.n_rings, root_attributes);
     for (std::size_t i = 0; i < record.steps.size(); ++i)
       file.append(record.steps[i], record.fields[i]);
-    file.write_onset(record.result.onset);
-    if (!record.time_run)
-      write_summary_attributes(file,
-                               limit_point_attributes(record.result.limit_points, record.n_rings));
-    write_summary_attributes(file, breakdown_attributes(record.result.breakdown));
-    if (record.time_run && !record.steps.empty() && !std::isnan(record.result.error_estimate))
-      write_summary_attributes(file, time_integration_attributes(record.result.time_steps,
-                                                                 record.result.rejected_steps,
-                                                                 record.result.error_estimate));
+    file.set_summary_attributes(record.attributes);
     const ResultsFile::Finish done = file.finish(run_status(record.result, record.steps.size()));
     if (!done.written || done.steps_written != record.steps.size())
       {

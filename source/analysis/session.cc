@@ -23,10 +23,13 @@ namespace cdea
 
     LoadStepper stepper(input.scene, *model, stepping_settings(p));
     add_run_postprocessors(stepper, p, input.scene);
-    stepper.on_step = [&](const StepSummary &s) {
-      record.steps.push_back(s);
-      record.fields.push_back(stepper.step_fields());
-    };
+    // The run's product stream, as the command's file gets it.
+    RunStream stream(record, record.n_rings, load_path_runs);
+    stream.start();
+    stepper.on_step  = [&](const StepSummary &s) { stream.step(s, stepper.step_fields()); };
+    stepper.on_onset = [&](const OnsetRecord &onset) { stream.onset(onset); };
+    stepper.on_limit_point = [&](const LimitPoint &limit) { stream.limit_point(limit); };
+    stepper.on_breakdown   = [&](const OnsetRecord &breakdown) { stream.breakdown(breakdown); };
     run_keeping_steps(record, [&] { return stepper.run(); });
     return record;
   }

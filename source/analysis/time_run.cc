@@ -12,6 +12,7 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 namespace cdea
@@ -37,7 +38,10 @@ namespace cdea
     }
 
     /// A postprocessor's column of @p s in the file's unit (NaN if absent).
-    double column(const StepSummary &s, const OutputField &c) { return s.columns.in_file_units(c); }
+    double column(const StepSummary &s, const Quantity &c) { return s.columns.in_file_units(c); }
+
+    /// A length (m) in mm, as the file's displacement, stroke and radii.
+    double mm(const double metres) { return units::mm.from_si(metres); }
 
     /// One cell of the progress table: a blank, then the value right-aligned in
     /// @p width - 1 characters ("-" if it is NaN), so that columns never run
@@ -67,7 +71,7 @@ namespace cdea
         , path(p.results_path())
       {
         std::vector<std::pair<std::string, std::string>> root_attributes = {
-          {"method", to_string(RunMethod::finite_elements_in_time)}};
+          {run_attribute::method.name, to_string(RunMethod::finite_elements_in_time)}};
         root_attributes.insert(root_attributes.end(), run.root_attributes.begin(),
                                run.root_attributes.end());
         output = RunOutput::open(path, input.text, scene.n_rings(), root_attributes);
@@ -77,7 +81,10 @@ namespace cdea
       {
         // A first record before the run, so that an unwritable journal stops
         // it here (the attributes are those the file starts with).
-        if (!output || !output->prepare([&] { output->file().write_onset(OnsetRecord()); }))
+        if (!output)
+          return exit_input_error;
+        stream.emplace(output->file(), scene.n_rings(), time_run);
+        if (!output->prepare([&] { stream->start(); }))
           return exit_input_error;
         print_banner();
         connect();
@@ -87,10 +94,7 @@ namespace cdea
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         print_final_state(result, seconds);
         report_a_drive_that_never_rose();
-        if (output->file().n_steps() > 0 && !std::isnan(result.error_estimate))
-          write_summary_attributes(output->file(),
-                                   time_integration_attributes(result.time_steps, result.rejected_steps,
-                                                               result.error_estimate));
+        stream->time_integration(result.time_steps, result.rejected_steps, result.error_estimate);
         return output->finish(result);
       }
 
@@ -101,6 +105,7 @@ namespace cdea
       TimeStepper               &stepper;
       const std::string          path;
       std::unique_ptr<RunOutput> output;
+      std::optional<RunStream>   stream; ///< the file's product stream
       StepSummary                last;
       /// The largest |V| of any ring at any time step (V).
       double highest_voltage = 0.;
@@ -149,10 +154,10 @@ namespace cdea
           step(s);
         };
         stepper.on_onset = [this](const OnsetRecord &onset) {
-          output->file().write_onset(onset);
+          stream->onset(onset);
           std::cout << "      loss of tension (s2 = 0) at t = "
                     << format_number(onset.load_factor, 8) << " s, " << format_kV(onset.voltages)
-                    << ", radius r = " << format_number(onset.radius * 1e3) << " mm"
+                    << ", radius r = " << format_number(mm(onset.radius)) << " mm"
                     << std::endl;
         };
       }
@@ -160,17 +165,16 @@ namespace cdea
       /// A step written, then printed as a row of the table.
       void step(const StepSummary &s)
       {
-        ResultsFile &file = output->file();
-        file.append(s, stepper.fields_wanted() ? stepper.step_fields() : StepFields());
+        stream->step(s, stepper.fields_wanted() ? stepper.step_fields() : StepFields());
         last = s;
         RunOutput::stop_point();
         std::ostringstream v;
         for (const double x : s.voltages)
-          v << cell(x * 1e-3, 3, 7);
-        std::cout << std::setw(6) << file.n_steps() - 1 << std::setw(12)
+          v << cell(summary_column::voltage.in_file_units(x), 3, 7);
+        std::cout << std::setw(6) << stream->n_steps() - 1 << std::setw(12)
                   << (s.stage == Stage::voltage ? "time" : stage_name(s.stage))
                   << cell(column(s, summary_column::waveform_time), 4, 11) << v.str()
-                  << cell(s.displacement * 1e3, 5, 12) << cell(s.stroke * 1e3, 5, 12)
+                  << cell(mm(s.displacement), 5, 12) << cell(mm(s.stroke), 5, 12)
                   << cell(column(s, summary_column::level_drop), 3, 11)
                   << cell(column(s, summary_column::disk_velocity), 2, 11)
                   << cell(s.s2_min / scene.material.shear_modulus, 4, 11) << ' ' << std::setw(4)
@@ -197,8 +201,8 @@ namespace cdea
       {
         std::cout << "\nFinal state: t = " << format_number(stepper.time(), 8) << " s, voltages "
                   << format_kV(last.voltages) << ", displacement "
-                  << format_number(last.displacement * 1e3, 8) << " mm, stroke "
-                  << number_or_dash(last.stroke * 1e3, 8) << " mm, level drop "
+                  << format_number(mm(last.displacement), 8) << " mm, stroke "
+                  << number_or_dash(mm(last.stroke), 8) << " mm, level drop "
                   << number_or_dash(column(last, summary_column::level_drop), 6) << " mm\n"
                   << "  energy since t = 0: electrical work "
                   << number_or_dash(column(last, summary_column::electrical_work), 6) << " mJ, stored "
@@ -226,7 +230,7 @@ namespace cdea
         line << "  time integration: " << result.time_steps << " steps, "
              << result.rejected_steps << " rejected";
         line << ", estimated error of the disk's position "
-               << format_number(result.error_estimate * 1e3, 3) << " mm (sum of the local "
+               << format_number(mm(result.error_estimate), 3) << " mm (sum of the local "
                << "estimates, " << format_number(result.error_estimate / std::max(std::abs(last.displacement), 1e-300), 3)
                << " of the displacement)";
         line << '\n';
@@ -243,12 +247,12 @@ namespace cdea
     run.stepper =
       std::make_unique<TimeStepper>(scene, *run.model, stepping_settings(p), run.settings);
     add_run_postprocessors(*run.stepper, p, scene);
-    run.root_attributes = {{"material_model", p.material_law.model},
-                           {"waveform", to_string(p.time.waveform)},
-                           {"time_scheme", to_string(p.time.scheme)}};
+    run.root_attributes = {{run_attribute::material_model.name, p.material_law.model},
+                           {run_attribute::waveform.name, to_string(p.time.waveform)},
+                           {run_attribute::time_scheme.name, to_string(p.time.scheme)}};
     if (esdirk_tableau(run.settings.method))
       run.root_attributes.push_back(
-        {"time_step_control", to_string(step_control_of(run.settings))});
+        {run_attribute::time_step_control.name, to_string(step_control_of(run.settings))});
     return run;
   }
 
@@ -263,11 +267,16 @@ namespace cdea
     record.n_rings         = input.scene.n_rings();
     record.parameters      = input.text;
     record.results_path    = input.parameters.results_path();
-    stepper.on_step        = [&](const StepSummary &s) {
-      record.steps.push_back(s);
-      record.fields.push_back(stepper.fields_wanted() ? stepper.step_fields() : StepFields());
+    // The run's product stream, as the command's file gets it.
+    RunStream stream(record, record.n_rings, time_run);
+    stream.start();
+    stepper.on_step = [&](const StepSummary &s) {
+      stream.step(s, stepper.fields_wanted() ? stepper.step_fields() : StepFields());
     };
+    stepper.on_onset = [&](const OnsetRecord &onset) { stream.onset(onset); };
     run_keeping_steps(record, [&] { return stepper.run(); });
+    stream.time_integration(record.result.time_steps, record.result.rejected_steps,
+                            record.result.error_estimate);
     return record;
   }
 

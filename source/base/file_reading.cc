@@ -1,4 +1,5 @@
 #include <cdea/base/file_reading.h>
+#include <cdea/base/units.h>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -28,7 +29,7 @@ namespace cdea
     std::string size_text(const std::size_t bytes)
     {
       char text[32];
-      std::snprintf(text, sizeof text, "%.3g MB", double(bytes) / 1e6);
+      std::snprintf(text, sizeof text, "%.3g MB", units::MB.from_si(double(bytes)));
       return text;
     }
   } // namespace

@@ -1,4 +1,5 @@
 #include <cdea/base/format.h>
+#include <cdea/base/units.h>
 
 #include <cstdio>
 #include <cmath>
@@ -12,7 +13,7 @@ namespace cdea
     std::ostringstream o;
     o.precision(digits);
     for (std::size_t i = 0; i < volts.size(); ++i)
-      o << (i ? ", " : "") << volts[i] * 1e-3;
+      o << (i ? ", " : "") << units::kV.from_si(volts[i]);
     return o.str() + " kV";
   }
 

@@ -19,7 +19,8 @@ namespace cdea
     }
 
     /// Round to 12 decimals: generated values equal the typed ones.
-    double round12(const double x) { return std::round(x * 1e12) / 1e12; }
+    constexpr double twelve_decimals = 1e12;
+    double round12(const double x) { return std::round(x * twelve_decimals) / twelve_decimals; }
 
     constexpr std::size_t max_values = 100000;
   } // namespace

@@ -9,6 +9,8 @@
 #include <cdea/base/run_control.h>
 #include <cdea/commands/command.h>
 #include <cdea/input/solver_settings.h>
+#include <cdea/model/product.h>
+#include <cdea/model/quantities_compare.h>
 #include <cdea/shooting/shooting_model.h>
 #include <cdea/solver/load_stepper.h>
 
@@ -16,6 +18,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <tuple>
 
 namespace cdea
 {
@@ -83,12 +86,13 @@ namespace cdea
             std::cerr << "cdea: " << e.what() << " before both runs had ended: no comparison\n";
             return exit_not_complete;
           }
+        const Product product = compare_product(fe, sh, a, b);
         print_header(fe, a, b);
-        print_states(fe, sh, a, b);
-        print_profiles(fe, sh);
-        print_onsets(a, b);
-        std::cout << "\nwall time: FE " << std::setprecision(3) << a.seconds * 1e3
-                  << " ms, shooting " << b.seconds * 1e3 << " ms\n";
+        print_states(product);
+        print_profiles(product);
+        print_onsets(product);
+        std::cout << "\nwall time: FE " << std::setprecision(3) << units::ms.from_si(a.seconds)
+                  << " ms, shooting " << units::ms.from_si(b.seconds) << " ms\n";
         return a.result.completed && b.result.completed ? exit_success : exit_not_complete;
       }
 
@@ -114,22 +118,31 @@ namespace cdea
                   << std::setw(11) << "relative" << '\n';
       }
 
-      void print_states(MembraneModel &fe, shooting::ShootingModel &sh, const QuietRun &a,
-                        const QuietRun &b) const
+      /// The product of the comparison: each model's last state and the
+      /// distance of their meridians (the FE solution at the shooting
+      /// solver's sample radii).
+      Product compare_product(MembraneModel &fe, shooting::ShootingModel &sh, const QuietRun &a,
+                              const QuietRun &b) const
       {
+        using namespace compare_quantity;
         const double mu = input.scene.material.shear_modulus;
-        row("displacement", a.last.displacement * 1e3, b.last.displacement * 1e3, "mm");
-        row("stroke", a.last.stroke * 1e3, b.last.stroke * 1e3, "mm");
-        row("enclosed volume", fe.enclosed_volume() * 1e9, sh.enclosed_volume() * 1e9, "mm^3");
-        for (unsigned int k = 0; k < input.scene.n_rings(); ++k)
-          row("s2/mu, inner edge of ring " + std::to_string(k + 1),
-              a.last.s2_ring_inner[k] / mu, b.last.s2_ring_inner[k] / mu, "-");
-      }
-
-      /// The FE solution at the shooting solver's sample radii.
-      void print_profiles(MembraneModel &fe, shooting::ShootingModel &sh) const
-      {
-        const double        a   = input.scene.disk_radius;
+        Product      product;
+        const std::tuple<const char *, const QuietRun *, double> models[] = {
+          {"/finite_elements", &a, fe.enclosed_volume()}, {"/shooting", &b, sh.enclosed_volume()}};
+        for (const auto &[name, run, enclosed] : models)
+          {
+            std::vector<double> s2;
+            for (const double x : run->last.s2_ring_inner)
+              s2.push_back(x / mu);
+            ProductGroup &g = product.group(name);
+            g.set(displacement, run->last.displacement)
+              .set(stroke, run->last.stroke)
+              .set(volume, enclosed)
+              .set(s2_over_mu, s2);
+            if (run->result.onset.found)
+              g.set(onset_voltage, run->result.onset.voltages)
+                .set(onset_radius, run->result.onset.radius);
+          }
         const StepFields    ref = sh.fields();
         std::vector<double> r, z;
         fe.profile_at(ref.R, r, z);
@@ -139,27 +152,63 @@ namespace cdea
             dr = std::max(dr, std::abs(r[i] - ref.r[i]));
             dz = std::max(dz, std::abs(z[i] - ref.z[i]));
           }
+        const double disk = input.scene.disk_radius;
+        product.root()
+          .set(r_difference, dr)
+          .set(z_difference, dz)
+          .set(r_difference_over_a, dr / disk)
+          .set(z_difference_over_a, dz / disk);
+        return product;
+      }
+
+      /// A line of the table: @p row of both models (the @p k'th value).
+      static void row(const Product &product, const std::string &what, const Quantity &q,
+                      const std::size_t k = 0)
+      {
+        const ProductGroup &fe = product.at("/finite_elements"), &sh = product.at("/shooting");
+        cdea::row(what, fe.at(q).value(k), sh.at(q).value(k),
+                  q.unit.name == std::string("1") ? "-" : q.unit.name);
+      }
+
+      void print_states(const Product &product) const
+      {
+        using namespace compare_quantity;
+        row(product, "displacement", displacement);
+        row(product, "stroke", stroke);
+        row(product, "enclosed volume", volume);
+        for (unsigned int k = 0; k < input.scene.n_rings(); ++k)
+          row(product, "s2/mu, inner edge of ring " + std::to_string(k + 1), s2_over_mu, k);
+      }
+
+      static void print_profiles(const Product &product)
+      {
+        using namespace compare_quantity;
+        const ProductGroup &root  = product.root();
+        const auto          value = [&](const Quantity &q) { return root.at(q).value(0); };
         std::cout << std::left << std::setw(34) << "max |r_FE - r_sh| over the meridian"
                   << std::right << std::setw(16) << std::setprecision(3) << std::scientific
-                  << dr * 1e3 << " mm (" << dr / a << " a)\n"
+                  << value(r_difference) << " mm (" << value(r_difference_over_a) << " a)\n"
                   << std::left << std::setw(34) << "max |z_FE - z_sh| over the meridian"
-                  << std::right << std::setw(16) << dz * 1e3 << " mm (" << dz / a << " a)\n"
+                  << std::right << std::setw(16) << value(z_difference) << " mm ("
+                  << value(z_difference_over_a) << " a)\n"
                   << std::defaultfloat;
       }
 
-      void print_onsets(const QuietRun &a, const QuietRun &b) const
+      void print_onsets(const Product &product) const
       {
-        if (a.result.onset.found && b.result.onset.found)
+        using namespace compare_quantity;
+        const bool fe = product.at("/finite_elements").find(onset_radius) != nullptr;
+        const bool sh = product.at("/shooting").find(onset_radius) != nullptr;
+        if (fe && sh)
           {
             for (unsigned int k = 0; k < input.scene.n_rings(); ++k)
-              row("onset voltage, ring " + std::to_string(k + 1) + " (kV)",
-                  a.result.onset.voltages[k] * 1e-3, b.result.onset.voltages[k] * 1e-3, "kV");
-            row("onset radius r", a.result.onset.radius * 1e3, b.result.onset.radius * 1e3,
-                "mm");
+              row(product, "onset voltage, ring " + std::to_string(k + 1) + " (kV)",
+                  onset_voltage, k);
+            row(product, "onset radius r", onset_radius);
           }
         else
-          std::cout << "onset: FE " << (a.result.onset.found ? "found" : "none")
-                    << ", shooting " << (b.result.onset.found ? "found" : "none") << '\n';
+          std::cout << "onset: FE " << (fe ? "found" : "none") << ", shooting "
+                    << (sh ? "found" : "none") << '\n';
       }
     };
   } // namespace

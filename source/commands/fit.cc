@@ -10,6 +10,9 @@
 #include <cdea/commands/fit_viscous.h>
 #include <cdea/design/fit.h>
 #include <cdea/input/validation.h>
+#include <cdea/model/quantities_fit.h>
+#include <cdea/output/product_file.h>
+#include <cdea/output/product_table.h>
 
 #include <chrono>
 #include <cmath>
@@ -26,11 +29,11 @@ namespace cdea
       switch (p.kind)
         {
           case ParameterKind::shear_modulus:
-            return {value * 1e-3, "kPa"};
+            return {units::kPa.from_si(value), units::kPa.name};
           case ParameterKind::mass:
-            return {value * 1e3, "g"};
+            return {units::g.from_si(value), units::g.name};
           case ParameterKind::permittivity:
-            return {value, "F/m"};
+            return {value, units::F_per_m.name};
           default:
             return {value, ""};
         }
@@ -82,14 +85,15 @@ namespace cdea
           return fit_not_started(invocation, c.result.status,
                                  "change the start values in the parameter file or check that "
                                  "point; ");
+        const Product product = fit_product(invocation.parameter_text, data, settings, c);
         print_values(c.result);
-        print_residuals(c.result);
+        print_residuals(c.result, product);
         for (const auto &w : c.result.warnings)
           std::cout << "WARNING: " << w << '\n';
         std::cout << c.result.iterations << " iterations, " << c.result.evaluations
                   << " evaluations, " << c.solves << " equilibrium solves (" << c.ramps
                   << " ramps), " << std::setprecision(3) << seconds << " s\n";
-        return write_and_report(invocation, c);
+        return write_and_report(invocation, c, product);
       }
 
     private:
@@ -139,34 +143,40 @@ namespace cdea
         print_correlation(settings.free, r, 16);
       }
 
-      void print_residuals(const FitResult &r) const
+      static void print_residuals(const FitResult &r, const Product &product)
       {
+        using namespace fit_quantity;
         if (r.fitted.size() == 0)
           return;
-        std::cout << "residuals (model - measured):\n" << std::setw(6) << "point"
-                  << std::setw(24) << "voltages (kV)" << std::setw(16) << "measured (mm)"
-                  << std::setw(16) << "model (mm)" << std::setw(16) << "residual (mm)" << '\n';
-        for (std::size_t i = 0; i < data.size(); ++i)
-          std::cout << std::setw(6) << i + 1 << std::setw(24) << format_kV(data.voltages[i], 5)
-                    << std::setw(16) << format_fixed(data.displacement[i] * 1e3, 6)
-                    << std::setw(16) << format_fixed(r.fitted[i] * 1e3, 6) << std::setw(16)
-                    << format_number(r.residuals[i] * 1e3, 3) << '\n';
-        std::cout << "weighted rms residual " << format_number(r.rms * 1e3, 4)
+        const ProductGroup &points = product.at("/data");
+        std::vector<std::size_t> rows(points.at(displacement).size());
+        for (std::size_t i = 0; i < rows.size(); ++i)
+          rows[i] = i;
+        std::cout << "residuals (model - measured):\n";
+        print_table(std::cout, points,
+                    {{nullptr, "point", 6, CellStyle::index},
+                     {&voltage, "voltages (kV)", 24, CellStyle::list, 5},
+                     {&displacement, "measured (mm)", 16, CellStyle::fixed, 6},
+                     {&fitted, "model (mm)", 16, CellStyle::fixed, 6},
+                     {&residual, "residual (mm)", 16, CellStyle::number, 3}},
+                    rows);
+        std::cout << "weighted rms residual "
+                  << format_number(product.root().at(rms_residual).value(0), 4)
                   << " mm, condition number of the scaled Jacobian "
                   << format_number(r.condition, 3) << '\n';
       }
 
       /// The fit file and the parameter file with the fitted values, and how
       /// the fit ended.
-      int write_and_report(const Invocation &invocation, const Calibrated &c) const
+      int write_and_report(const Invocation &invocation, const Calibrated &c,
+                           const Product &product) const
       {
         const Parameters  &p        = invocation.parameters;
         const FitResult   &r        = c.result;
         const std::string &h5_path  = invocation.output.path;
         const std::string  prm_path = p.output.directory + "/" + p.output.base_name + "_fit.prm";
         const auto write = [&] {
-          write_fit_file(h5_path, invocation.parameter_text, data, settings, r, c.curve_kV,
-                         c.curve_mm, c.solves);
+          write_product_file(product, h5_path);
           if (r.fitted.size() > 0)
             write_changed_parameters(invocation.input, prm_path,
                                      fitted_entries(base, settings.free, r.values),

@@ -8,6 +8,9 @@
 #include <cdea/commands/fit_viscous.h>
 #include <cdea/design/viscous_fit.h>
 #include <cdea/input/validation.h>
+#include <cdea/model/quantities_fit.h>
+#include <cdea/output/product_file.h>
+#include <cdea/output/product_table.h>
 
 #include <chrono>
 #include <cmath>
@@ -21,7 +24,7 @@ namespace cdea
     /// A parameter in the unit of the table (kPa for network A's modulus).
     double shown(const SceneParameter &p, const double value)
     {
-      return p.kind == ParameterKind::shear_modulus ? value * 1e-3 : value;
+      return p.kind == ParameterKind::shear_modulus ? units::kPa.from_si(value) : value;
     }
 
     std::string shown_label(const SceneParameter &p)
@@ -72,15 +75,18 @@ namespace cdea
                                                        fit_creep(p, creep, settings, progress);
         if (!r.started)
           return fit_not_started(invocation, r.status, "");
+        const Product product =
+          kind == FitDataKind::dma ? dma_fit_product(invocation.parameter_text, dma, settings, r) :
+                                     creep_fit_product(invocation.parameter_text, creep, settings, r);
         print_values(r);
-        print_residuals(r);
+        print_residuals(r, product);
         for (const auto &w : r.warnings)
           std::cout << "WARNING: " << w << '\n';
         std::cout << r.iterations << " iterations, " << r.evaluations << " evaluations, "
                   << std::setprecision(3)
                   << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
                   << " s\n";
-        return write_and_report(invocation, r);
+        return write_and_report(invocation, r, product);
       }
 
     private:
@@ -121,44 +127,46 @@ namespace cdea
         print_correlation(settings.free, r, 28);
       }
 
-      void print_residuals(const FitResult &r) const
+      void print_residuals(const FitResult &r, const Product &product) const
       {
+        using namespace fit_quantity;
         if (r.fitted.size() == 0)
           return;
-        const bool is_dma = kind == FitDataKind::dma;
-        std::cout << "residuals (model - measured):\n"
-                  << (is_dma ? "  frequency (Hz)   storage (kPa)      model   loss (kPa)      model\n" :
-                               "      time (s)   measured (mm)     model (mm)  residual (mm)\n");
-        const std::size_t M = is_dma ? dma.size() : creep.size();
-        for (std::size_t i = 0; i < M; ++i)
-          if (is_dma)
-            std::cout << std::setw(16) << format_number(dma.frequency[i], 4) << std::setw(16)
-                      << format_fixed(dma.storage[i] * 1e-3, 4) << std::setw(11)
-                      << format_fixed(r.fitted[Eigen::Index(2 * i)] * 1e-3, 4) << std::setw(13)
-                      << format_fixed(dma.loss[i] * 1e-3, 4) << std::setw(11)
-                      << format_fixed(r.fitted[Eigen::Index(2 * i + 1)] * 1e-3, 4) << '\n';
-          else
-            std::cout << std::setw(14) << format_number(creep.times[i], 6) << std::setw(16)
-                      << format_fixed(creep.displacement[i] * 1e3, 6) << std::setw(15)
-                      << format_fixed(r.fitted[Eigen::Index(i)] * 1e3, 6) << std::setw(15)
-                      << format_number(r.residuals[Eigen::Index(i)] * 1e3, 3) << '\n';
-        std::cout << "weighted rms residual "
-                  << (is_dma ? format_number(r.rms * 1e-3, 4) + " kPa" :
-                               format_number(r.rms * 1e3, 4) + " mm")
-                  << ", condition number of the scaled Jacobian " << format_number(r.condition, 3)
-                  << '\n';
+        const bool          is_dma = kind == FitDataKind::dma;
+        const ProductGroup &data   = product.at("/data");
+        std::vector<std::size_t> rows(is_dma ? dma.size() : creep.size());
+        for (std::size_t i = 0; i < rows.size(); ++i)
+          rows[i] = i;
+        std::cout << "residuals (model - measured):\n";
+        if (is_dma)
+          print_table(std::cout, data,
+                      {{&dma_frequency, "frequency (Hz)", 16, CellStyle::number, 4},
+                       {&dma_storage, "storage (kPa)", 16, CellStyle::fixed, 4},
+                       {&dma_fitted_storage, "model", 11, CellStyle::fixed, 4},
+                       {&dma_loss, "loss (kPa)", 13, CellStyle::fixed, 4},
+                       {&dma_fitted_loss, "model", 11, CellStyle::fixed, 4}},
+                      rows);
+        else
+          print_table(std::cout, data,
+                      {{&creep_time, "time (s)", 14, CellStyle::number, 6},
+                       {&creep_displacement, "measured (mm)", 16, CellStyle::fixed, 6},
+                       {&creep_fitted, "model (mm)", 15, CellStyle::fixed, 6},
+                       {&creep_residual, "residual (mm)", 15, CellStyle::number, 3}},
+                      rows);
+        const ProductEntry &rms = product.root().at(is_dma ? rms_residual_kPa : rms_residual);
+        std::cout << "weighted rms residual " << format_number(rms.value(0), 4) << " "
+                  << rms.quantity->unit.name << ", condition number of the scaled Jacobian "
+                  << format_number(r.condition, 3) << '\n';
       }
 
-      int write_and_report(const Invocation &invocation, const FitResult &r) const
+      int write_and_report(const Invocation &invocation, const FitResult &r,
+                           const Product &product) const
       {
         const Parameters  &p        = invocation.parameters;
         const std::string &h5_path  = invocation.output.path;
         const std::string  prm_path = p.output.directory + "/" + p.output.base_name + "_fit.prm";
         const auto write = [&] {
-          if (kind == FitDataKind::dma)
-            write_dma_fit_file(h5_path, invocation.parameter_text, dma, settings, r);
-          else
-            write_creep_fit_file(h5_path, invocation.parameter_text, creep, settings, r);
+          write_product_file(product, h5_path);
           if (r.fitted.size() > 0)
             write_changed_parameters(invocation.input, prm_path,
                                      fitted_entries(p.scene(), settings.free, r.values),

@@ -13,6 +13,9 @@
 #include <cdea/base/progress.h>
 #include <cdea/base/run_control.h>
 #include <cdea/commands/command.h>
+#include <cdea/model/quantities_frequency_sweep.h>
+#include <cdea/output/product_file.h>
+#include <cdea/output/product_table.h>
 
 #include <chrono>
 #include <cmath>
@@ -102,7 +105,7 @@ namespace cdea
         try
           {
             ReplaceTogether file({path});
-            write_frequency_sweep_file(path, invocation.parameter_text, r);
+            write_product_file(frequency_sweep_product(invocation.parameter_text, r), path);
             wrote = file.commit(r.not_computed > 0).front();
           }
         catch (const std::exception &e)
@@ -133,6 +136,23 @@ namespace cdea
                   << format_bytes(19.5e3 + 116. * double(n)) << std::endl;
       }
 
+      /// The table's columns: the rows of /sweep.
+      static const std::vector<TableColumn> &columns()
+      {
+        using namespace frequency_sweep_quantity;
+        static const std::vector<TableColumn> all = {
+          {&frequency, "f (Hz)", 10, CellStyle::number, 5},
+          {&stroke_amplitude, "stroke (mm)", 13, CellStyle::fixed, 5},
+          {&mean_displacement, "mean (mm)", 12, CellStyle::fixed, 4},
+          {&swept_volume, "volume (mm^3)", 15, CellStyle::number, 6},
+          {&dissipated, "dissip. (mJ)", 15, CellStyle::number, 5},
+          {&s2_min, "min s2 (kPa)", 13, CellStyle::fixed, 3},
+          {&newton_iterations, "Newton", 8, CellStyle::integer},
+          {&period_maps, "maps", 7, CellStyle::integer},
+          {&frequency_seconds, "time (s)", 9, CellStyle::fixed, 2}};
+        return all;
+      }
+
       void print_header() const
       {
         std::cout << "Periodic steady states of the " << to_string(input.parameters.time.waveform)
@@ -141,25 +161,16 @@ namespace cdea
                   << ")";
         if (mpi::size() > 1)
           std::cout << " on " << mpi::size() << " ranks (frequencies round-robin)";
-        std::cout << '\n'
-                  << std::setw(10) << "f (Hz)" << std::setw(13) << "stroke (mm)" << std::setw(12)
-                  << "mean (mm)" << std::setw(15) << "volume (mm^3)" << std::setw(15)
-                  << "dissip. (mJ)" << std::setw(13) << "min s2 (kPa)" << std::setw(8)
-                  << "Newton" << std::setw(7) << "maps" << std::setw(9) << "time (s)"
-                  << (mpi::size() > 1 ? "\n" : "  progress\n");
+        std::cout << '\n';
+        print_table_cells(std::cout, columns());
+        std::cout << (mpi::size() > 1 ? "\n" : "  progress\n");
       }
 
       /// A row of the table; with the progress column if @p done > 0.
       void print_row(const SteadyPeriod &s, const std::size_t done, const double elapsed) const
       {
         const std::size_t n = settings.frequencies.size();
-        std::cout << std::setw(10) << format_number(s.frequency, 5) << std::setw(13)
-                  << format_fixed(s.stroke_amplitude * 1e3, 5) << std::setw(12)
-                  << format_fixed(s.mean_displacement * 1e3, 4) << std::setw(15)
-                  << format_number(s.volume_swing * 1e9, 6) << std::setw(15)
-                  << format_number(s.dissipated * 1e3, 5) << std::setw(13)
-                  << format_fixed(s.s2_min * 1e-3, 3) << std::setw(8) << s.newton_iterations
-                  << std::setw(7) << s.period_maps << std::setw(9) << format_fixed(s.seconds, 2);
+        print_table_cells(std::cout, periods_product({s}).at("/sweep"), columns(), 0);
         if (done > 0)
           std::cout << "  " << done << "/" << n << ", "
                     << format_duration(elapsed / done * (n - done)) << " left";
@@ -171,7 +182,7 @@ namespace cdea
       void print_summary(const FrequencySweepResult &r) const
       {
         std::cout << "quasi-static stroke amplitude (film relaxed): "
-                  << format_number(r.quasi_static_amplitude * 1e3, 6) << " mm\n"
+                  << format_number(units::mm.from_si(r.quasi_static_amplitude), 6) << " mm\n"
                   << "usable band (taut, stroke within a factor "
                   << format_number(r.usable_factor) << " of the quasi-static one): ";
         if (std::isnan(r.band_low))

@@ -9,6 +9,8 @@
 #include <cdea/base/run_control.h>
 #include <cdea/commands/command.h>
 #include <cdea/design/optimize.h>
+#include <cdea/model/quantities_optimize.h>
+#include <cdea/output/product_file.h>
 
 #include <chrono>
 #include <cmath>
@@ -60,8 +62,10 @@ namespace cdea
         const StartResult &best = run.starts[run.best];
         if (!best.at_best.ok)
           return nothing_reached(invocation, best);
-        print_optimum(run);
-        return write_and_report(invocation, run);
+        const Product product =
+          optimum_product(run, settings, base, invocation.parameter_text);
+        print_optimum(run, product.root());
+        return write_and_report(invocation, run, product);
       }
 
     private:
@@ -82,10 +86,10 @@ namespace cdea
                   << " rank(s)\nfree:";
         for (const auto &f : s.free_parameters())
           std::cout << "  " << f.name();
-        std::cout << "\nconstraints: s2 >= " << s.min_hoop_stress * 1e-3 << " kPa";
+        std::cout << "\nconstraints: s2 >= " << units::kPa.from_si(s.min_hoop_stress) << " kPa";
         if (std::isfinite(s.max_field))
-          std::cout << ", E <= " << s.max_field * 1e-6 << " MV/m";
-        std::cout << ", rings >= " << s.min_ring_width * base.disk_radius * 1e3
+          std::cout << ", E <= " << units::MV_per_m.from_si(s.max_field) << " MV/m";
+        std::cout << ", rings >= " << units::mm.from_si(s.min_ring_width * base.disk_radius)
                   << " mm, stable\n"
                   << std::setw(5) << "start" << std::setw(6) << "eval" << std::setw(14)
                   << objective_header() << std::setw(12) << "worst c"
@@ -117,7 +121,8 @@ namespace cdea
                     << std::setw(12) << format_number(r.worst_constraint, 3) << std::setw(6)
                     << r.evaluations << std::setw(8) << r.solves << "  "
                     << format_fixed_list(r.best.edges, 4) << " | "
-                    << format_fixed_list(r.best.voltages, 4, 1e-3) << " | " << r.status << '\n';
+                    << format_fixed_list(r.best.voltages, 4, units::kV.multiply) << " | "
+                    << r.status << '\n';
       }
 
       /// No start reached a layout: nothing is written.
@@ -134,32 +139,33 @@ namespace cdea
         return exit_not_complete;
       }
 
-      static void print_optimum(const OptimizationRun &run)
+      static void print_optimum(const OptimizationRun &run, const ProductGroup &optimum)
       {
-        const StartResult      &best = run.starts[run.best];
-        const LayoutEvaluation &e    = best.at_best;
-        unsigned int            evaluations = 0, solves = 0, iterations = 0;
+        using namespace optimize_quantity;
+        const StartResult &best        = run.starts[run.best];
+        unsigned int       evaluations = 0, solve_count = 0, iterations = 0;
         for (const auto &r : run.starts)
           {
             evaluations += r.evaluations;
-            solves += r.solves;
+            solve_count += r.solves;
             iterations += r.newton_iterations;
           }
+        const auto value = [&](const Quantity &q) { return optimum.at(q).value(0); };
         std::cout << "\nOptimum (start " << best.start << ", "
                   << (best.converged ? "converged" : "NOT converged")
-                  << "):\n  ring edges (r/a): " << format_fixed_list(best.best.edges, 4)
-                  << "\n  voltages (kV):    " << format_fixed_list(best.best.voltages, 4, 1e-3)
-                  << std::setprecision(7) << "\n  displacement " << e.displacement * 1e3
-                  << " mm, stroke " << e.stroke * 1e3 << " mm, enclosed volume change "
-                  << e.volume_change * 1e9 << " mm^3\n";
-        if (e.ok && e.points.s2.size())
-          std::cout << "  min s2 " << e.points.s2.minCoeff() * 1e-3 << " kPa, max E "
-                    << e.points.field.maxCoeff() * 1e-6 << " MV/m, smallest tangent eigenvalue "
-                    << e.min_eigenvalue << " N/m\n";
+                  << "):\n  ring edges (r/a): " << format_fixed_list(optimum.at(ring_edges).in_unit(), 4)
+                  << "\n  voltages (kV):    " << format_fixed_list(optimum.at(voltages).in_unit(), 4)
+                  << std::setprecision(7) << "\n  displacement " << value(displacement)
+                  << " mm, stroke " << value(stroke) << " mm, enclosed volume change "
+                  << value(volume_change) << " mm^3\n";
+        if (best.at_best.ok && best.at_best.points.s2.size())
+          std::cout << "  min s2 " << value(min_s2) << " kPa, max E " << value(max_field)
+                    << " MV/m, smallest tangent eigenvalue " << value(min_tangent_eigenvalue)
+                    << " N/m\n";
         std::cout << "  active constraints:\n";
         for (const auto &a : best.active)
           std::cout << "    " << a << '\n';
-        std::cout << evaluations << " evaluations, " << solves << " equilibrium solves, "
+        std::cout << evaluations << " evaluations, " << solve_count << " equilibrium solves, "
                   << iterations << " Newton iterations, " << std::setprecision(3) << run.seconds
                   << " s\n";
       }
@@ -172,7 +178,8 @@ namespace cdea
       /// The optimum file and the replay's parameter file (together or not
       /// at all; after a stop beside older ones, to their partial names),
       /// and how the run ended.
-      int write_and_report(Invocation &invocation, const OptimizationRun &run) const
+      int write_and_report(Invocation &invocation, const OptimizationRun &run,
+                           const Product &product) const
       {
         const Parameters  &p       = invocation.parameters;
         const StartResult &best    = run.starts[run.best];
@@ -182,7 +189,7 @@ namespace cdea
         try
           {
             ReplaceTogether pair({h5_path, replay_path(p)});
-            write_optimum_file(h5_path, run, settings, base, invocation.parameter_text);
+            write_product_file(product, h5_path);
             write_replay_parameters(invocation.input, replay_path(p), best.best,
                                     p.output.base_name, settings.max_field);
             wrote = pair.commit(signal != 0);

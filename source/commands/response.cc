@@ -9,6 +9,8 @@
 #include <cdea/base/format.h>
 #include <cdea/base/run_control.h>
 #include <cdea/commands/command.h>
+#include <cdea/model/quantities_response.h>
+#include <cdea/output/product_file.h>
 
 #include <chrono>
 #include <cmath>
@@ -59,10 +61,11 @@ namespace cdea
           }
         const double seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        print(r);
+        const Product product = response_product(invocation.parameter_text, r);
+        print(r, product);
         try
           {
-            write_response_file(invocation.output.path, invocation.parameter_text, r);
+            write_product_file(product, invocation.output.path);
           }
         catch (const std::exception &e)
           {
@@ -71,7 +74,7 @@ namespace cdea
             return exit_not_complete;
           }
         std::cout << r.frequency.size() << " frequencies in " << std::setprecision(3)
-                  << r.seconds * 1e3 << " ms, " << seconds << " s in all\nwrote "
+                  << units::ms.from_si(r.seconds) << " ms, " << seconds << " s in all\nwrote "
                   << invocation.output.path << '\n';
         return exit_success;
       }
@@ -79,20 +82,25 @@ namespace cdea
     private:
       RunInput input;
 
-      void print(const FrequencyResponse &r) const
+      static void print(const FrequencyResponse &r, const Product &product)
       {
+        using namespace response_quantity;
+        const ProductGroup &root  = product.root();
+        const ProductGroup &modes = product.at("/modes");
         std::cout << "Equilibrium at " << format_kV(r.bias) << ": displacement "
-                  << format_number(r.displacement * 1e3, 8) << " mm, enclosed volume "
-                  << format_number(r.volume * 1e9, 8) << " mm^3\nMass: disk "
-                  << format_number(r.disk_mass * 1e3) << " g, membrane density "
+                  << format_number(root.at(displacement).value(0), 8) << " mm, enclosed volume "
+                  << format_number(root.at(volume).value(0), 8) << " mm^3\nMass: disk "
+                  << format_number(root.at(disk_mass).value(0)) << " g, membrane density "
                   << format_number(r.density) << " kg/m^3, water column "
                   << format_number(r.water_mass) << " kg/m^4\n";
-        if (r.mode_frequency.empty())
+        const std::size_t n_modes = modes.at(mode_frequency).size();
+        if (n_modes == 0)
           std::cout << "no natural frequencies (no mass)\n";
-        for (std::size_t k = 0; k < r.mode_frequency.size(); ++k)
+        for (std::size_t k = 0; k < n_modes; ++k)
           std::cout << "mode " << k + 1 << ": natural frequency "
-                    << format_number(r.mode_frequency[k], 8) << " Hz, damping ratio "
-                    << format_number(r.mode_damping[k], 4) << '\n';
+                    << format_number(modes.at(mode_frequency).value(k), 8) << " Hz, damping ratio "
+                    << format_number(modes.at(mode_damping).value(k), 4) << '\n';
+        const ProductGroup &transfer = product.at("/transfer");
         std::cout << std::setw(14) << "f (Hz)" << std::setw(18) << "disk (mm/kV)"
                   << std::setw(14) << "phase (deg)" << std::setw(20) << "volume (mm^3/kV)"
                   << '\n';
@@ -100,10 +108,11 @@ namespace cdea
         for (std::size_t j = 0; j < rows; ++j)
           {
             const std::size_t i = rows > 1 ? j * (n - 1) / (rows - 1) : 0;
-            std::cout << std::setw(14) << format_number(r.frequency[i], 5) << std::setw(18)
-                      << format_number(1e6 * std::abs(r.disk_drive[i]), 6) << std::setw(14)
-                      << format_fixed(std::arg(r.disk_drive[i]) * 180. / M_PI, 2)
-                      << std::setw(20) << format_number(1e12 * std::abs(r.volume_drive[i]), 6)
+            std::cout << std::setw(14) << format_number(transfer.at(frequency).value(i), 5)
+                      << std::setw(18) << format_number(transfer.at(amplitude).value(i), 6)
+                      << std::setw(14) << format_fixed(transfer.at(phase).value(i), 2)
+                      << std::setw(20)
+                      << format_number(units::mm3_per_kV.from_si(std::abs(r.volume_drive[i])), 6)
                       << '\n';
           }
       }

@@ -8,27 +8,28 @@
 #include <cdea/base/run_control.h>
 #include <cdea/commands/command.h>
 #include <cdea/design/sweep.h>
+#include <cdea/model/quantities_sweep.h>
+#include <cdea/output/product_file.h>
+#include <cdea/output/product_table.h>
 
 #include <chrono>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <tuple>
 
 namespace cdea
 {
   namespace
   {
-    /// The row with the largest stroke increase on @p line (rows.size() if none).
-    std::size_t line_maximum(const SweepMap &map, SweepLine SweepRow::*line)
+    /// The row with the largest value of @p increase (size if none is a number).
+    std::size_t line_maximum(const ProductGroup &map, const Quantity &increase)
     {
-      std::size_t best = map.rows.size();
-      for (std::size_t i = 0; i < map.rows.size(); ++i)
-        {
-          const double x = (map.rows[i].*line).stroke_increase;
-          if (!std::isnan(x) &&
-              (best == map.rows.size() || x > (map.rows[best].*line).stroke_increase))
-            best = i;
-        }
+      const std::vector<double> &x    = map.at(increase).values;
+      std::size_t                best = x.size();
+      for (std::size_t i = 0; i < x.size(); ++i)
+        if (!std::isnan(x[i]) && (best == x.size() || x[i] > x[best]))
+          best = i;
       return best;
     }
 
@@ -84,15 +85,18 @@ namespace cdea
       SweepMap      map;
       double        seconds = 0.;
 
+      /// A voltage of the map in kV, as the map file holds it.
+      static double kV(const double volts) { return units::kV_divided.from_si(volts); }
+
       void print_banner(const Parameters &p, const std::string &path) const
       {
         const auto &s = settings;
         std::cout << "cdea " << CDEA_VERSION << " sweep: " << s.ring_edge_values.size()
                   << " layouts r_v/a = " << s.ring_edge_values.front() << " .. "
                   << s.ring_edge_values.back() << " x " << s.outer_voltages.size()
-                  << " outer voltages " << s.outer_from / 1e3 << " .. "
-                  << s.outer_voltages.back() / 1e3 << " kV (step " << s.outer_step / 1e3
-                  << " kV), inner ring at " << s.inner_voltage / 1e3 << " kV\n"
+                  << " outer voltages " << kV(s.outer_from) << " .. "
+                  << kV(s.outer_voltages.back()) << " kV (step " << kV(s.outer_step)
+                  << " kV), inner ring at " << kV(s.inner_voltage) << " kV\n"
                   << "FE model: degree " << p.discretization.polynomial_degree << ", "
                   << p.discretization.elements_per_ring << " elements per ring; "
                   << ranks_text() << " (rows round-robin); writing " << path << '\n';
@@ -121,10 +125,11 @@ namespace cdea
           }
         // A map cut short goes beside an older one (<stem>.partial.h5).
         std::string wrote;
+        const Product product = sweep_product(map, invocation.parameter_text);
         try
           {
             ReplaceTogether file({path});
-            write_sweep_file(path, map, invocation.parameter_text);
+            write_product_file(product, path);
             wrote = file.commit(skipped > 0).front();
           }
         catch (const std::exception &e)
@@ -132,7 +137,7 @@ namespace cdea
             std::cerr << "cdea: " << e.what() << " (the map is lost; an older map stays)\n";
             return exit_not_complete;
           }
-        print_table();
+        print_layouts(product.root());
         std::cout << "wrote " << wrote << '\n';
         if (skipped > 0)
           {
@@ -145,7 +150,7 @@ namespace cdea
         if (!some_row_reached(map))
           {
             std::cerr << "cdea: no layout reached the inner voltage of "
-                      << settings.inner_voltage / 1e3 << " kV (first row: "
+                      << kV(settings.inner_voltage) << " kV (first row: "
                       << (map.rows.empty() ? std::string("none") : map.rows.front().message)
                       << "): the map is empty\n";
             return exit_not_complete;
@@ -154,43 +159,47 @@ namespace cdea
       }
 
       /// One line per layout, the maxima of both lines, the counts.
-      void print_table() const
+      void print_layouts(const ProductGroup &map) const
       {
+        using namespace sweep_quantity;
         std::cout << "\nzero-voltage displacement under the dead load: " << std::setprecision(7)
-                  << map.zero_voltage_displacement * 1e3 << " mm\n"
-                  << std::setw(7) << "r_v/a" << std::setw(11) << "base (mm)" << std::setw(12)
-                  << "reached kV" << std::setw(10) << "red kV" << std::setw(10) << "red %"
-                  << std::setw(10) << "blue kV" << std::setw(10) << "blue %" << "  stop\n";
-        unsigned long solves = 0, iterations = 0;
-        for (const SweepRow &r : map.rows)
+                  << map.at(sweep_quantity::zero_voltage_displacement).value(0) << " mm\n";
+        const std::size_t n = map.at(rv_over_a).size();
+        std::vector<std::size_t> rows(n);
+        for (std::size_t i = 0; i < n; ++i)
+          rows[i] = i;
+        print_table(std::cout, map,
+                    {{&rv_over_a, "r_v/a", 7, CellStyle::plain},
+                     {&base_displacement, "base (mm)", 11, CellStyle::fixed_or_dash, 4},
+                     {&highest_outer, "reached kV", 12, CellStyle::fixed_or_dash, 3},
+                     {&red_outer, "red kV", 10, CellStyle::fixed_or_dash, 4},
+                     {&red_increase, "red %", 10, CellStyle::fixed_or_dash, 2},
+                     {&blue_outer, "blue kV", 10, CellStyle::fixed_or_dash, 4},
+                     {&blue_increase, "blue %", 10, CellStyle::fixed_or_dash, 2},
+                     {&stop_message, "stop", 0, CellStyle::text, 60, "  "}},
+                    rows);
+        for (const auto &[name, outer, increase] :
+             {std::tuple<const char *, const Quantity *, const Quantity *>{"red", &red_outer,
+                                                                           &red_increase},
+              {"blue", &blue_outer, &blue_increase}})
           {
-            solves += r.solves;
-            iterations += r.newton_iterations;
-            std::cout << std::setw(7) << r.rv_over_a << std::setw(11)
-                      << format_fixed_or_dash(r.base_displacement * 1e3, 4) << std::setw(12)
-                      << format_fixed_or_dash(r.highest_voltage / 1e3, 3) << std::setw(10)
-                      << format_fixed_or_dash(r.red.outer_voltage / 1e3, 4) << std::setw(10)
-                      << format_fixed_or_dash(r.red.stroke_increase, 2) << std::setw(10)
-                      << format_fixed_or_dash(r.blue.outer_voltage / 1e3, 4) << std::setw(10)
-                      << format_fixed_or_dash(r.blue.stroke_increase, 2) << "  "
-                      << (r.message.empty() ? "-" : shorten_at_word(r.message, 60)) << '\n';
-          }
-        for (const auto &[name, line] :
-             {std::pair<const char *, SweepLine SweepRow::*>{"red", &SweepRow::red},
-              std::pair<const char *, SweepLine SweepRow::*>{"blue", &SweepRow::blue}})
-          {
-            const std::size_t i = line_maximum(map, line);
+            const std::size_t i = line_maximum(map, *increase);
             std::cout << "largest stroke increase on the " << name << " line: ";
-            if (i == map.rows.size())
+            if (i == n)
               std::cout << "none in the range\n";
             else
-              std::cout << format_fixed_or_dash((map.rows[i].*line).stroke_increase, 2)
-                        << " % at r_v/a = " << map.rows[i].rv_over_a << " (outer "
-                        << format_fixed_or_dash((map.rows[i].*line).outer_voltage / 1e3, 4)
-                        << " kV)\n";
+              std::cout << format_fixed_or_dash(map.at(*increase).value(i), 2)
+                        << " % at r_v/a = " << map.at(rv_over_a).value(i) << " (outer "
+                        << format_fixed_or_dash(map.at(*outer).value(i), 4) << " kV)\n";
           }
-        std::cout << map.rows.size() * settings.outer_voltages.size() << " map points, "
-                  << solves << " equilibrium solves, " << iterations << " Newton iterations, "
+        unsigned long solve_count = 0, iterations = 0;
+        for (std::size_t i = 0; i < n; ++i)
+          {
+            solve_count += static_cast<unsigned long>(map.at(solves).values[i]);
+            iterations += static_cast<unsigned long>(map.at(newton_iterations).values[i]);
+          }
+        std::cout << n * settings.outer_voltages.size() << " map points, " << solve_count
+                  << " equilibrium solves, " << iterations << " Newton iterations, "
                   << std::setprecision(3) << seconds << " s on " << ranks_text() << '\n';
       }
     };

@@ -4,6 +4,7 @@
 
 #include <cdea/analysis/creep_sensitivity.h>
 #include <cdea/base/format.h>
+#include <cdea/base/units.h>
 #include <cdea/design/viscous_fit.h>
 #include <cdea/input/solver_settings.h>
 
@@ -61,8 +62,9 @@ namespace cdea
           if (std::abs(v[r] - data.voltages[i][r]) > 1e-3)
             throw InputError(file + ", row " + std::to_string(i + 1) + ", column V" +
                              std::to_string(r + 1) + "_kV: " +
-                             format_number(data.voltages[i][r] * 1e-3) + " kV, but the waveform "
-                             "of subsection Time drives " + format_number(v[r] * 1e-3) +
+                             format_number(units::kV.from_si(data.voltages[i][r])) +
+                             " kV, but the waveform of subsection Time drives " +
+                             format_number(units::kV.from_si(v[r])) +
                              " kV at " + format_number(data.times[i]) + " s");
       }
   }
@@ -81,7 +83,8 @@ namespace cdea
     CreepModel      model(p, data, settings.free);
     FitObservations observations{
       Eigen::Map<const Eigen::VectorXd>(data.displacement.data(), Eigen::Index(data.size())),
-      Eigen::Map<const Eigen::VectorXd>(data.weight.data(), Eigen::Index(data.size())), 1e-3};
+      Eigen::Map<const Eigen::VectorXd>(data.weight.data(), Eigen::Index(data.size())),
+      units::mm.to_si}; // residuals in mm
     return fit_observations(p.scene(), observations, bounded,
                             [&model](const std::vector<double> &v, Eigen::VectorXd &d,
                                      Eigen::MatrixXd *J, std::string *message) {

@@ -2,6 +2,7 @@
 // the small-strain Prony moduli in closed form with exact derivatives.
 
 #include <cdea/base/format.h>
+#include <cdea/base/units.h>
 #include <cdea/design/viscous_fit.h>
 #include <cdea/input/parameters.h>
 #include <cdea/material/material_chart.h>
@@ -100,7 +101,7 @@ namespace cdea
     switch (q)
       {
         case LawParameter::shear_modulus:
-          return p.material.shear_modulus_kPa * 1e3;
+          return units::kPa.in_si(p.material.shear_modulus_kPa);
         case LawParameter::jlim:
           return p.material.jlim;
         case LawParameter::permittivity:
@@ -121,7 +122,7 @@ namespace cdea
     switch (q)
       {
         case LawParameter::shear_modulus:
-          p.material.shear_modulus_kPa = value * 1e-3;
+          p.material.shear_modulus_kPa = units::kPa.from_si(value);
           return;
         case LawParameter::jlim:
           p.material.jlim = value;
@@ -236,7 +237,7 @@ namespace cdea
                                                        1e2 / (2. * M_PI * *f_min));
     const DmaModel  model(base, data.frequency, settings.free);
     FitObservations observations;
-    observations.unit = 1e3; // kPa
+    observations.unit = units::kPa.to_si; // residuals in kPa
     observations.measured.resize(Eigen::Index(2 * data.size()));
     observations.weight.resize(Eigen::Index(2 * data.size()));
     for (std::size_t i = 0; i < data.size(); ++i)

@@ -4,6 +4,7 @@
 #include <cdea/design/fit.h>
 #include <cdea/base/run_control.h>
 #include <cdea/base/format.h>
+#include <cdea/base/units.h>
 
 #include <Eigen/SVD>
 #include <ceres/ceres.h>
@@ -255,7 +256,8 @@ namespace cdea
     // Residuals in mm.
     FitObservations observations{
       Eigen::Map<const Eigen::VectorXd>(data.displacement.data(), Eigen::Index(data.size())),
-      Eigen::Map<const Eigen::VectorXd>(data.weight.data(), Eigen::Index(data.size())), 1e-3};
+      Eigen::Map<const Eigen::VectorXd>(data.weight.data(), Eigen::Index(data.size())),
+      units::mm.to_si};
     const FitFunction function = [&model](const std::vector<double> &values, Eigen::VectorXd &d,
                                           Eigen::MatrixXd *J, std::string *message) {
       return model.evaluate(values, d, J, message);

@@ -4,6 +4,7 @@
 #include <cdea/base/file_reading.h>
 #include <cdea/base/format.h>
 #include <cdea/base/text.h>
+#include <cdea/base/units.h>
 #include <cdea/design/fit_data.h>
 
 #include <algorithm>
@@ -189,10 +190,10 @@ namespace cdea
       {
         d.frequency.push_back(
           checked(t, i, file, "frequency_Hz", positive, "a frequency must be positive"));
-        d.storage.push_back(
-          1e3 * checked(t, i, file, "storage_kPa", positive, "a storage modulus must be positive"));
-        d.loss.push_back(1e3 * checked(t, i, file, "loss_kPa", not_negative,
-                                       "a loss modulus must not be negative"));
+        d.storage.push_back(units::kPa.in_si(
+          checked(t, i, file, "storage_kPa", positive, "a storage modulus must be positive")));
+        d.loss.push_back(units::kPa.in_si(
+          checked(t, i, file, "loss_kPa", not_negative, "a loss modulus must not be negative")));
         d.weight.push_back(checked(t, i, file, "weight", positive, "weights must be positive"));
       }
     return d;
@@ -227,14 +228,15 @@ namespace cdea
                                   "times must be >= 0 and increase strictly"));
         std::vector<double> volts;
         for (unsigned int r = 1; r <= n_rings; ++r)
-          volts.push_back(1e3 * checked(t, i, file, "V" + std::to_string(r) + "_kV",
-                                        [&](double v) { return v >= 0. && v * 1e3 <= ceiling; },
-                                        "a voltage must be from 0 to the film's ceiling of " +
-                                          format_number(ceiling * 1e-3) + " kV"));
+          volts.push_back(units::kV.in_si(checked(
+            t, i, file, "V" + std::to_string(r) + "_kV",
+            [&](double v) { return v >= 0. && units::kV.in_si(v) <= ceiling; },
+            "a voltage must be from 0 to the film's ceiling of " +
+              format_number(units::kV.from_si(ceiling)) + " kV")));
         d.voltages.push_back(volts);
-        d.displacement.push_back(
-          1e-3 * checked(t, i, file, "displacement_mm", not_negative,
-                         "a displacement is the distance |z(A) - z(B)| and must not be negative"));
+        d.displacement.push_back(units::mm.in_si(
+          checked(t, i, file, "displacement_mm", not_negative,
+                  "a displacement is the distance |z(A) - z(B)| and must not be negative")));
         d.weight.push_back(checked(t, i, file, "weight", positive, "weights must be positive"));
       }
     return d;

@@ -3,6 +3,7 @@
 
 #include <cdea/base/file_reading.h>
 #include <cdea/base/format.h>
+#include <cdea/base/units.h>
 #include <cdea/design/fit.h>
 #include <cdea/design/fit_data.h>
 #include <cdea/fe/load_term.h>
@@ -104,12 +105,13 @@ namespace cdea
           if (v < 0.)
             throw InputError(place(name) + ": a voltage must not be negative, got " +
                              format_number(v));
-          if (v * 1e3 > ceiling)
+          if (units::kV.in_si(v) > ceiling)
             throw InputError(place(name) + ": " + format_number(v) +
-                             " kV is above the ceiling of " + format_number(ceiling * 1e-3) +
+                             " kV is above the ceiling of " +
+                             format_number(units::kV.from_si(ceiling)) +
                              " kV for this film (the field V lam_pre^2 / H in the flat "
                              "pre-stretched film must stay below 10 GV/m)");
-          volts.push_back(v * 1e3);
+          volts.push_back(units::kV.in_si(v));
         }
       const double d = value("displacement_mm");
       if (d < 0.)
@@ -121,7 +123,7 @@ namespace cdea
         throw InputError(place("weight") + ": weights must be positive, got " +
                          format_number(w));
       data.voltages.push_back(volts);
-      data.displacement.push_back(d * 1e-3);
+      data.displacement.push_back(units::mm.in_si(d));
       data.weight.push_back(w);
     }
 
@@ -273,9 +275,9 @@ namespace cdea
     switch (p.kind)
       {
         case ParameterKind::shear_modulus:
-          return format_number(value * 1e-3) + " kPa";
+          return format_number(units::kPa.from_si(value)) + " kPa";
         case ParameterKind::mass:
-          return format_number(value * 1e3) + " g";
+          return format_number(units::g.from_si(value)) + " g";
         case ParameterKind::permittivity:
           return format_number(value) + " F/m";
         default:
@@ -316,14 +318,8 @@ namespace cdea
         std::vector<std::vector<double>> v;
         std::vector<double>              d;
         model.curve(c.result.values, 8, v, d);
-        for (std::size_t k = 0; k < v.size(); ++k)
-          {
-            std::vector<double> kV;
-            for (const double x : v[k])
-              kV.push_back(x * 1e-3);
-            c.curve_kV.push_back(kV);
-            c.curve_mm.push_back(d[k] * 1e3);
-          }
+        c.curve_voltages     = std::move(v);
+        c.curve_displacement = std::move(d);
       }
     c.solves = model.solves();
     c.ramps  = model.ramps();

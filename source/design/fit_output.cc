@@ -1,10 +1,12 @@
-// What `cdea fit` writes: <Base name>_fit.h5 and <Base name>_fit.prm.
+// What `cdea fit` returns and writes: the product of each kind of data
+// (<Base name>_fit.h5) and the fitted entries of <Base name>_fit.prm.
 
 #include <cdea/base/format.h>
 #include <cdea/design/fit.h>
 #include <cdea/design/viscous_fit.h>
 #include <cdea/material/two_network_gent.h>
-#include <cdea/output/hdf5_writer.h>
+#include <cdea/model/quantities_common.h>
+#include <cdea/model/quantities_fit.h>
 
 #ifndef CDEA_VERSION
 #  define CDEA_VERSION "unknown"
@@ -17,13 +19,13 @@ namespace cdea
     switch (p.kind)
       {
         case ParameterKind::shear_modulus:
-          return {"Material", "Shear modulus (kPa)", exact_number(value * 1e-3)};
+          return {"Material", "Shear modulus (kPa)", exact_number(units::kPa.from_si(value))};
         case ParameterKind::jlim:
           return {"Material", "Jlim", exact_number(value)};
         case ParameterKind::permittivity:
           return {"Material", "Permittivity (F/m)", exact_number(value)};
         case ParameterKind::mass:
-          return {"Loading", "Mass (g)", exact_number(value * 1e3)};
+          return {"Loading", "Mass (g)", exact_number(units::g.from_si(value))};
         case ParameterKind::prestretch:
           return {"Geometry", "Prestretch", exact_number(value)};
         case ParameterKind::law_constant:
@@ -57,7 +59,7 @@ namespace cdea
     std::string moduli, times;
     for (const ViscousNetwork &b : film->branches())
       {
-        moduli += (moduli.empty() ? "" : ", ") + exact_number(b.shear_modulus * 1e-3);
+        moduli += (moduli.empty() ? "" : ", ") + exact_number(units::kPa.from_si(b.shear_modulus));
         times += (times.empty() ? "" : ", ") + exact_number(b.relaxation_time);
       }
     changes.push_back({"Material", "Branch shear moduli (kPa)", moduli});
@@ -67,136 +69,129 @@ namespace cdea
 
   namespace
   {
-    /// The root attributes and /correlation of every fit file.
-    void write_fit_attributes(Hdf5Writer &w, const std::string &parameter_text,
-                              const FitSettings &settings, const FitResult &r,
-                              const unsigned int solves)
+    using namespace fit_quantity;
+
+    /// The root attributes and /correlation of every fit.
+    Product fit_attributes(const std::string &parameter_text, const FitSettings &settings,
+                           const FitResult &r, const unsigned int solve_count)
     {
-      const std::size_t K = settings.free.size();
-      std::string       names, warnings;
+      const std::size_t        K = settings.free.size();
+      std::vector<std::string> names;
+      std::string              warning_lines;
       for (const auto &p : settings.free)
-        names += (names.empty() ? "" : "; ") + p.name();
+        names.push_back(p.name());
       for (const auto &x : r.warnings)
-        warnings += (warnings.empty() ? "" : "\n") + x;
-      w.attribute("/", "parameters", parameter_text);
-      w.attribute("/", "code_version", std::string(CDEA_VERSION));
-      w.attribute("/", "free_parameters", names);
-      w.attribute("/", "initial_values", r.initial);
-      w.attribute("/", "fitted_values", r.values);
-      w.attribute("/", "standard_errors", r.standard_errors);
-      w.attribute("/", "rms_residual_mm", r.rms * 1e3);
-      w.attribute("/", "condition_number", r.condition);
-      w.attribute("/", "converged", int(r.converged));
-      w.attribute("/", "status", r.status);
-      w.attribute("/", "warnings", warnings);
-      w.attribute("/", "iterations", int(r.iterations));
-      w.attribute("/", "evaluations", int(r.evaluations));
-      w.attribute("/", "solves", int(solves));
+        warning_lines += (warning_lines.empty() ? "" : "\n") + x;
       std::vector<double> c(K * K);
       for (std::size_t i = 0; i < K; ++i)
         for (std::size_t j = 0; j < K; ++j)
           c[i * K + j] = r.correlation.size() ? r.correlation(i, j) : NAN;
-      w.dataset("/correlation", {K, K}, c, "1",
-                "correlation matrix of the fitted parameters (order of free_parameters)");
+      Product product;
+      product.root()
+        .set(common_quantity::parameters, parameter_text)
+        .set(common_quantity::code_version, CDEA_VERSION)
+        .set(free_parameters, names)
+        .set(initial_values, r.initial)
+        .set(fitted_values, r.values)
+        .set(standard_errors, r.standard_errors)
+        .set(rms_residual, r.rms)
+        .set(condition_number, r.condition)
+        .set(converged, r.converged)
+        .set(status, r.status)
+        .set(warnings, warning_lines)
+        .set(iterations, r.iterations)
+        .set(evaluations, r.evaluations)
+        .set(solves, solve_count)
+        .set(correlation, c, {K, K});
+      return product;
     }
 
-    /// Element @p i of @p v times @p factor (NaN if @p v is empty: not fitted).
-    double at(const Eigen::VectorXd &v, const std::size_t i, const double factor)
+    /// Element @p i of @p v (NaN if @p v is empty: not fitted).
+    double at(const Eigen::VectorXd &v, const std::size_t i)
     {
-      return v.size() ? v[Eigen::Index(i)] * factor : NAN;
+      return v.size() ? v[Eigen::Index(i)] : NAN;
+    }
+
+    /// The voltages of data points row by row.
+    std::vector<double> rows_of(const std::vector<std::vector<double>> &voltages)
+    {
+      std::vector<double> all;
+      for (const auto &v : voltages)
+        all.insert(all.end(), v.begin(), v.end());
+      return all;
     }
   } // namespace
 
-  void write_fit_file(const std::string &path, const std::string &parameter_text,
-                      const CalibrationData &data, const FitSettings &settings,
-                      const FitResult &r, const std::vector<std::vector<double>> &curve_kV,
-                      const std::vector<double> &curve_mm, const unsigned int solves)
+  Product fit_product(const std::string &parameter_text, const CalibrationData &data,
+                      const FitSettings &settings, const Calibrated &c)
   {
-    const std::size_t M = data.size();
-    const std::size_t N = M ? data.voltages[0].size() : 0;
-    Hdf5Writer        w(path);
-    write_fit_attributes(w, parameter_text, settings, r, solves);
-    w.group("/data");
-    std::vector<double> volts, measured, fitted, residual;
+    const FitResult  &r = c.result;
+    const std::size_t M = data.size(), N = M ? data.voltages[0].size() : 0;
+    Product           product = fit_attributes(parameter_text, settings, r, c.solves);
+    std::vector<double> fitted_values, residuals;
     for (std::size_t i = 0; i < M; ++i)
       {
-        for (const double v : data.voltages[i])
-          volts.push_back(v * 1e-3);
-        measured.push_back(data.displacement[i] * 1e3);
-        fitted.push_back(r.fitted.size() ? r.fitted[i] * 1e3 : NAN);
-        residual.push_back(r.residuals.size() ? r.residuals[i] * 1e3 : NAN);
+        fitted_values.push_back(at(r.fitted, i));
+        residuals.push_back(at(r.residuals, i));
       }
-    w.dataset("/data/voltage_kV", {M, N}, volts, "kV", "ring voltages of each data point");
-    w.dataset("/data/displacement_mm", {M}, measured, "mm", "measured displacement");
-    w.dataset("/data/weight", {M}, data.weight, "1", "weight of each point");
-    w.dataset("/data/fitted_mm", {M}, fitted, "mm",
-              "model displacement at the fitted parameters, each point ramped from zero");
-    w.dataset("/data/residual_mm", {M}, residual, "mm", "model minus measured");
-    w.group("/curve");
-    std::vector<double> curve_volts;
-    for (const auto &v : curve_kV)
-      curve_volts.insert(curve_volts.end(), v.begin(), v.end());
-    w.dataset("/curve/voltage_kV", {curve_kV.size(), N}, curve_volts, "kV",
-              "ring voltages along the data in file order (8 steps between points)");
-    w.dataset("/curve/displacement_mm", {curve_mm.size()}, curve_mm, "mm",
-              "model displacement along the data at the fitted parameters, by continuation");
-    w.commit();
+    product.group("/data")
+      .set(voltage, rows_of(data.voltages), {M, N})
+      .set(displacement, data.displacement)
+      .set(weight, data.weight)
+      .set(fitted, fitted_values)
+      .set(residual, residuals);
+    product.group("/curve")
+      .set(curve_voltage, rows_of(c.curve_voltages), {c.curve_voltages.size(), N})
+      .set(curve_displacement, c.curve_displacement);
+    return product;
   }
 
-  void write_dma_fit_file(const std::string &path, const std::string &parameter_text,
-                          const DmaData &data, const FitSettings &settings, const FitResult &r)
+  Product dma_fit_product(const std::string &parameter_text, const DmaData &data,
+                          const FitSettings &settings, const FitResult &r)
   {
-    const std::size_t M = data.size();
-    Hdf5Writer        w(path);
+    const std::size_t   M = data.size();
+    std::vector<double> fs, fl, rs, rl;
+    for (std::size_t i = 0; i < M; ++i)
+      {
+        fs.push_back(at(r.fitted, 2 * i));
+        fl.push_back(at(r.fitted, 2 * i + 1));
+        rs.push_back(at(r.residuals, 2 * i));
+        rl.push_back(at(r.residuals, 2 * i + 1));
+      }
     // rms_residual_mm of a DMA fit is in MPa (moduli in kPa over 1e3): the
     // rms in kPa is its own attribute.
-    write_fit_attributes(w, parameter_text, settings, r, 0);
-    w.attribute("/", "rms_residual_kPa", r.rms * 1e-3);
-    w.group("/data");
-    std::vector<double> storage, loss, fs, fl, rs, rl;
-    for (std::size_t i = 0; i < M; ++i)
-      {
-        storage.push_back(data.storage[i] * 1e-3);
-        loss.push_back(data.loss[i] * 1e-3);
-        fs.push_back(at(r.fitted, 2 * i, 1e-3));
-        fl.push_back(at(r.fitted, 2 * i + 1, 1e-3));
-        rs.push_back(at(r.residuals, 2 * i, 1e-3));
-        rl.push_back(at(r.residuals, 2 * i + 1, 1e-3));
-      }
-    w.dataset("/data/frequency_Hz", {M}, data.frequency, "Hz", "frequency of each row");
-    w.dataset("/data/storage_kPa", {M}, storage, "kPa", "measured storage modulus E'");
-    w.dataset("/data/loss_kPa", {M}, loss, "kPa", "measured loss modulus E''");
-    w.dataset("/data/weight", {M}, data.weight, "1", "weight of each row (both moduli)");
-    w.dataset("/data/fitted_storage_kPa", {M}, fs, "kPa", "model E' at the fitted parameters");
-    w.dataset("/data/fitted_loss_kPa", {M}, fl, "kPa", "model E'' at the fitted parameters");
-    w.dataset("/data/residual_storage_kPa", {M}, rs, "kPa", "model minus measured E'");
-    w.dataset("/data/residual_loss_kPa", {M}, rl, "kPa", "model minus measured E''");
-    w.commit();
+    Product product = fit_attributes(parameter_text, settings, r, 0);
+    product.root().set(rms_residual_kPa, r.rms);
+    product.group("/data")
+      .set(dma_frequency, data.frequency)
+      .set(dma_storage, data.storage)
+      .set(dma_loss, data.loss)
+      .set(dma_weight, data.weight)
+      .set(dma_fitted_storage, fs)
+      .set(dma_fitted_loss, fl)
+      .set(dma_residual_storage, rs)
+      .set(dma_residual_loss, rl);
+    return product;
   }
 
-  void write_creep_fit_file(const std::string &path, const std::string &parameter_text,
-                            const CreepData &data, const FitSettings &settings, const FitResult &r)
+  Product creep_fit_product(const std::string &parameter_text, const CreepData &data,
+                            const FitSettings &settings, const FitResult &r)
   {
-    const std::size_t M = data.size(), N = M ? data.voltages[0].size() : 0;
-    Hdf5Writer        w(path);
-    write_fit_attributes(w, parameter_text, settings, r, 0);
-    w.group("/data");
-    std::vector<double> volts, measured, fitted, residual;
+    const std::size_t   M = data.size(), N = M ? data.voltages[0].size() : 0;
+    std::vector<double> fitted_values, residuals;
     for (std::size_t i = 0; i < M; ++i)
       {
-        for (const double v : data.voltages[i])
-          volts.push_back(v * 1e-3);
-        measured.push_back(data.displacement[i] * 1e3);
-        fitted.push_back(at(r.fitted, i, 1e3));
-        residual.push_back(at(r.residuals, i, 1e3));
+        fitted_values.push_back(at(r.fitted, i));
+        residuals.push_back(at(r.residuals, i));
       }
-    w.dataset("/data/time_s", {M}, data.times, "s", "sample time of each row");
-    w.dataset("/data/voltage_kV", {M, N}, volts, "kV", "ring voltages at each sample time");
-    w.dataset("/data/displacement_mm", {M}, measured, "mm", "measured displacement");
-    w.dataset("/data/weight", {M}, data.weight, "1", "weight of each row");
-    w.dataset("/data/fitted_mm", {M}, fitted, "mm",
-              "displacement of the quasi-static time run at the fitted parameters");
-    w.dataset("/data/residual_mm", {M}, residual, "mm", "model minus measured");
-    w.commit();
+    Product product = fit_attributes(parameter_text, settings, r, 0);
+    product.group("/data")
+      .set(creep_time, data.times)
+      .set(creep_voltage, rows_of(data.voltages), {M, N})
+      .set(creep_displacement, data.displacement)
+      .set(creep_weight, data.weight)
+      .set(creep_fitted, fitted_values)
+      .set(creep_residual, residuals);
+    return product;
   }
 } // namespace cdea

@@ -1,10 +1,10 @@
-// What `cdea optimize` writes: <Base name>_optimum.h5 and the parameter file
-// <Base name>_optimum.prm that `cdea run` replays.
+// What `cdea optimize` returns and writes: its product (<Base name>_optimum.h5)
+// and the parameter file <Base name>_optimum.prm that `cdea run` replays.
 
 #include <cdea/base/format.h>
 #include <cdea/design/optimize.h>
-#include <cdea/output/hdf5_writer.h>
-#include <cdea/model/output_fields.h>
+#include <cdea/model/quantities_common.h>
+#include <cdea/model/quantities_optimize.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,11 +18,12 @@ namespace cdea
 {
   namespace
   {
-    std::string joined(const std::vector<double> &values, const double factor)
+    /// @p values (SI) in @p unit, exactly, as a prm list.
+    std::string joined(const std::vector<double> &values, const Unit &unit)
     {
       std::string s;
       for (std::size_t i = 0; i < values.size(); ++i)
-        s += (i ? ", " : "") + exact_number(values[i] * factor);
+        s += (i ? ", " : "") + exact_number(unit.from_si(values[i]));
       return s;
     }
 
@@ -85,59 +86,53 @@ namespace cdea
 
   namespace
   {
+    using namespace optimize_quantity;
+
     /// The root attributes: the best layout, its state and how the run went.
-    void write_optimum_attributes(Hdf5Writer &w, const OptimizationRun &run,
-                                  const OptimizationSettings &s,
-                                  const std::string          &parameter_text)
+    void add_optimum(ProductGroup &root, const OptimizationRun &run, const OptimizationSettings &s,
+                     const std::string &parameter_text)
     {
-      const StartResult      &best = run.starts.at(run.best);
-      const LayoutEvaluation &e    = best.at_best;
-      w.attribute("/", "parameters", parameter_text);
-      w.attribute("/", "code_version", std::string(CDEA_VERSION));
-      w.attribute("/", "objective", to_string(s.objective));
-      w.attribute("/", "algorithm", to_string(s.algorithm));
-      w.attribute("/", "ring_edges_over_a", best.best.edges);
-      w.attribute("/", "voltages_kV", scaled(best.best.voltages, 1e-3));
-      w.attribute("/", "displacement_mm", e.displacement * 1e3);
-      w.attribute("/", "stroke_mm", e.stroke * 1e3);
-      w.attribute("/", "volume_change_mm3", e.volume_change * 1e9);
-      const bool has_points = e.ok && e.points.s2.size() > 0;
-      w.attribute("/", "min_s2_kPa", has_points ? e.points.s2.minCoeff() * 1e-3 : NAN);
-      w.attribute("/", "max_field_MV_per_m", has_points ? e.points.field.maxCoeff() * 1e-6 : NAN);
-      std::string active;
+      const StartResult      &best       = run.starts.at(run.best);
+      const LayoutEvaluation &e          = best.at_best;
+      const bool              has_points = e.ok && e.points.s2.size() > 0;
+      std::string             active;
       for (const auto &a : best.active)
         active += (active.empty() ? "" : "; ") + a;
-      w.attribute("/", "active_constraints", active);
-      unsigned int evaluations = 0, solves = 0;
+      unsigned int evaluations = 0, solve_count = 0;
       for (const auto &r : run.starts)
         {
           evaluations += r.evaluations;
-          solves += r.solves;
+          solve_count += r.solves;
         }
-      w.attribute("/", "iterations", int(evaluations));
-      w.attribute("/", "solves", int(solves));
-      w.attribute("/", "converged", int(best.converged));
-      w.attribute("/", "status", best.status);
-      w.attribute("/", "first_order_residual", best.optimality);
-      w.attribute("/", "best_start", int(best.start));
-      w.attribute("/", "starts", int(run.starts.size()));
-      w.attribute("/", "min_tangent_eigenvalue_N_per_m", e.min_eigenvalue);
+      root.set(common_quantity::parameters, parameter_text)
+        .set(common_quantity::code_version, CDEA_VERSION)
+        .set(objective, to_string(s.objective))
+        .set(algorithm, to_string(s.algorithm))
+        .set(ring_edges, best.best.edges)
+        .set(voltages, best.best.voltages)
+        .set(displacement, e.displacement)
+        .set(stroke, e.stroke)
+        .set(volume_change, e.volume_change)
+        .set(min_s2, has_points ? e.points.s2.minCoeff() : NAN)
+        .set(max_field, has_points ? e.points.field.maxCoeff() : NAN)
+        .set(active_constraints, active)
+        .set(iterations, evaluations)
+        .set(solves, solve_count)
+        .set(converged, best.converged)
+        .set(status, best.status)
+        .set(first_order_residual, best.optimality)
+        .set(optimum_start, best.start)
+        .set(starts, run.starts.size())
+        .set(min_tangent_eigenvalue, e.min_eigenvalue);
     }
 
-    /// "stroke (mm)" or "enclosed volume change (1000 mm^3)".
-    std::string objective_name(const OptimizationSettings &s)
+    bool stroke_objective(const OptimizationSettings &s)
     {
-      return s.objective == DesignObjective::stroke ? "stroke (mm)" :
-                                                      "enclosed volume change (1000 mm^3)";
-    }
-
-    std::string objective_unit(const OptimizationSettings &s)
-    {
-      return s.objective == DesignObjective::stroke ? "mm" : "1000 mm^3";
+      return s.objective == DesignObjective::stroke;
     }
 
     /// /history: every evaluation of every start.
-    void write_history(Hdf5Writer &w, const OptimizationRun &run, const OptimizationSettings &s)
+    void add_history(Product &product, const OptimizationRun &run, const OptimizationSettings &s)
     {
       const auto  free = s.free_parameters();
       std::string names;
@@ -146,80 +141,65 @@ namespace cdea
                  (p.kind == ParameterKind::voltage ?
                     "voltage of ring " + std::to_string(p.index + 1) + " (kV)" :
                     p.name());
-      w.group("/history");
-      std::vector<int>    start, evaluation;
-      std::vector<double> objective, worst, values;
+      std::vector<double> start, evaluation, objective_values, worst, values;
       for (const auto &r : run.starts)
         for (const auto &h : r.history)
           {
-            start.push_back(int(h.start));
-            evaluation.push_back(int(h.evaluation));
-            objective.push_back(h.objective);
+            start.push_back(h.start);
+            evaluation.push_back(h.evaluation);
+            objective_values.push_back(h.objective);
             worst.push_back(h.worst_constraint);
             values.insert(values.end(), h.free_values.begin(), h.free_values.end());
           }
-      w.dataset("/history/start", start, "start of the multistart (from 0)");
-      w.dataset("/history/evaluation", evaluation, "evaluation within the start (from 1)");
-      w.dataset("/history/objective", {objective.size()}, objective, objective_unit(s),
-                objective_name(s) + " of the layout evaluated; NaN where it could not be reached");
-      w.dataset("/history/worst_constraint", {worst.size()}, worst, "1",
-                "largest scaled constraint value (s2: (limit - s2)/mu, E: E/E_max - 1, width: "
-                "(w_min - width)/(b/a - 1)); <= 0 is feasible");
-      w.dataset("/history/free_values", {objective.size(), free.size()}, values, "kV, r/a",
-                "the free variables of each evaluation: " + names);
-      w.attribute("/history", "free_variables", names);
+      const std::size_t n = objective_values.size();
+      product.group("/history")
+        .set(free_variables, names)
+        .set(history_start, start)
+        .set(history_evaluation, evaluation)
+        .set(stroke_objective(s) ? history_stroke : history_volume, objective_values)
+        .set(history_worst_constraint, worst)
+        .set_detailed(history_free_values, values, {n, free.size()}, names);
     }
 
     /// /starts: every start's outcome.
-    void write_starts(Hdf5Writer &w, const OptimizationRun &run, const OptimizationSettings &s)
+    void add_starts(Product &product, const OptimizationRun &run, const OptimizationSettings &s)
     {
-      w.group("/starts");
       std::vector<double> initial_edges, initial_volts, best_edges, best_volts, objectives,
-        worsts, optimality;
-      std::vector<int>         converged, counts, solve_counts;
-      std::vector<std::string> status;
+        worsts, optimality, converged_flags, counts, solve_counts;
+      std::vector<std::string> status_texts;
       for (const auto &r : run.starts)
         {
           initial_edges.insert(initial_edges.end(), r.initial.edges.begin(), r.initial.edges.end());
           best_edges.insert(best_edges.end(), r.best.edges.begin(), r.best.edges.end());
-          for (const double v : r.initial.voltages)
-            initial_volts.push_back(v * 1e-3);
-          for (const double v : r.best.voltages)
-            best_volts.push_back(v * 1e-3);
+          initial_volts.insert(initial_volts.end(), r.initial.voltages.begin(),
+                               r.initial.voltages.end());
+          best_volts.insert(best_volts.end(), r.best.voltages.begin(), r.best.voltages.end());
           objectives.push_back(r.objective);
           worsts.push_back(r.worst_constraint);
           optimality.push_back(r.optimality);
-          converged.push_back(int(r.converged));
-          counts.push_back(int(r.evaluations));
-          solve_counts.push_back(int(r.solves));
-          status.push_back(r.status);
+          converged_flags.push_back(r.converged);
+          counts.push_back(r.evaluations);
+          solve_counts.push_back(r.solves);
+          status_texts.push_back(r.status);
         }
       const std::size_t S = run.starts.size(), N = s.n_rings;
-      w.dataset("/starts/initial_ring_edges_over_a", {S, N + 1}, initial_edges, "1",
-                "ring edges of each starting layout");
-      w.dataset("/starts/initial_voltages_kV", {S, N}, initial_volts, "kV",
-                "ring voltages of each starting layout (lowered until a ramp reaches them)");
-      w.dataset("/starts/ring_edges_over_a", {S, N + 1}, best_edges, "1",
-                "ring edges of the best layout of each start");
-      w.dataset("/starts/voltages_kV", {S, N}, best_volts, "kV",
-                "ring voltages of the best layout of each start");
-      w.dataset("/starts/objective", {S}, objectives, objective_unit(s),
-                objective_name(s) + " of the best layout of each start, confirmed by a ramp "
-                                    "from zero");
-      w.dataset("/starts/worst_constraint", {S}, worsts, "1",
-                "largest scaled constraint value there (<= 1e-6: feasible)");
-      w.dataset("/starts/first_order_residual", {S}, optimality, "1",
-                "|grad f + A lambda| / |grad f| over the active constraints and bounds (KKT)");
-      w.dataset("/starts/converged", converged, "1 if the optimizer converged to a feasible layout");
-      w.dataset("/starts/evaluations", counts, "evaluations of the start");
-      w.dataset("/starts/solves", solve_counts, "equilibrium solves of the start");
-      w.dataset("/starts/status", status, "how the optimizer ended");
+      product.group("/starts")
+        .set(start_initial_edges, initial_edges, {S, N + 1})
+        .set(start_initial_voltages, initial_volts, {S, N})
+        .set(start_edges, best_edges, {S, N + 1})
+        .set(start_voltages, best_volts, {S, N})
+        .set(stroke_objective(s) ? start_stroke : start_volume, objectives)
+        .set(start_worst_constraint, worsts)
+        .set(start_first_order_residual, optimality)
+        .set(start_converged, converged_flags)
+        .set(start_evaluations, counts)
+        .set(start_solves, solve_counts)
+        .set(start_status, status_texts);
     }
 
     /// /optimum: the optimum's hoop stress and field at every point.
-    void write_optimum_points(Hdf5Writer &w, const LayoutEvaluation &e, const Scene &base)
+    void add_points(Product &product, const LayoutEvaluation &e, const Scene &base)
     {
-      w.group("/optimum");
       std::vector<double> r_over_a, ring;
       for (std::size_t k = 0; k < e.points.R.size(); ++k)
         {
@@ -227,32 +207,26 @@ namespace cdea
           ring.push_back(e.points.ring[k] + 1.);
         }
       const std::size_t P = r_over_a.size();
-      w.dataset("/optimum/r_over_a", {P}, r_over_a, "1",
-                "pre-stretched flat radius of each point: the quadrature points cell by "
-                "cell, then the inner edge of each ring");
-      w.dataset("/optimum/ring", {P}, ring, "1", "ring of each point (from 1)");
-      w.dataset("/optimum/s2_kPa", {P},
-                scaled({e.points.s2.data(), e.points.s2.data() + P}, 1e-3), "kPa",
-                "nominal hoop stress at each point");
-      w.dataset("/optimum/field_MV_per_m", {P},
-                scaled({e.points.field.data(), e.points.field.data() + P}, 1e-6), "MV/m",
-                "true electric field at each point");
-      w.attribute("/optimum", "n_quadrature_points", int(e.points.n_quadrature_points));
+      product.group("/optimum")
+        .set(point_r_over_a, r_over_a)
+        .set(point_ring, ring)
+        .set(point_s2, std::vector<double>(e.points.s2.data(), e.points.s2.data() + P))
+        .set(point_field, std::vector<double>(e.points.field.data(), e.points.field.data() + P))
+        .set(n_quadrature_points, e.points.n_quadrature_points);
     }
   } // namespace
 
-  void write_optimum_file(const std::string &path, const OptimizationRun &run,
-                          const OptimizationSettings &s, const Scene &base,
-                          const std::string &parameter_text)
+  Product optimum_product(const OptimizationRun &run, const OptimizationSettings &s,
+                          const Scene &base, const std::string &parameter_text)
   {
     const LayoutEvaluation &e = run.starts.at(run.best).at_best;
-    Hdf5Writer              w(path);
-    write_optimum_attributes(w, run, s, parameter_text);
-    write_history(w, run, s);
-    write_starts(w, run, s);
+    Product                 product;
+    add_optimum(product.root(), run, s, parameter_text);
+    add_history(product, run, s);
+    add_starts(product, run, s);
     if (e.ok && e.points.s2.size() > 0)
-      write_optimum_points(w, e, base);
-    w.commit();
+      add_points(product, e, base);
+    return product;
   }
 
   void write_replay_parameters(const ParameterInput &input, const std::string &path,
@@ -260,13 +234,13 @@ namespace cdea
                                const double max_field)
   {
     std::vector<ParameterChange> changes = {
-      {"Electrodes", "Ring edges (r/a)", joined(layout.edges, 1.)},
-      {"Electrodes", "Voltage path (kV)", joined(layout.voltages, 1e-3)},
+      {"Electrodes", "Ring edges (r/a)", joined(layout.edges, units::one)},
+      {"Electrodes", "Voltage path (kV)", joined(layout.voltages, units::kV)},
       {"Solver", "Continuation", "load stepping"},
       {"Output", "Base name", base_name + "_optimum_run"}};
     // The replay then reports the largest field of every step.
     if (std::isfinite(max_field))
-      changes.push_back({"Solver", "Breakdown field (MV/m)", exact_number(max_field * 1e-6)});
+      changes.push_back({"Solver", "Breakdown field (MV/m)", exact_number(units::MV_per_m.from_si(max_field))});
     write_changed_parameters(
       input, path, changes,
       "# Written by cdea optimize: `cdea run` on this file ramps the voltages of the\n"

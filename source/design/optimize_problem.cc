@@ -5,6 +5,7 @@
 // limit, the least ring width). One start's optimization is optimize.cc.
 
 #include <cdea/base/format.h>
+#include <cdea/base/units.h>
 #include <cdea/design/optimize.h>
 
 #include <algorithm>
@@ -126,7 +127,8 @@ namespace cdea
         c[row]      = (s.min_hoop_stress - e.points.s2[k]) / mu;
         dc.row(row) = -e.points.d_s2.row(k) / mu;
         if (names)
-          names->push_back("s2 >= " + format_number(s.min_hoop_stress * 1e-3) + " kPa at " +
+          names->push_back("s2 >= " + format_number(units::kPa.from_si(s.min_hoop_stress)) +
+                           " kPa at " +
                            position(base, e.points, k));
       }
     if (field)
@@ -135,7 +137,8 @@ namespace cdea
           c[row]      = (e.points.field[k] - s.max_field) / s.max_field;
           dc.row(row) = e.points.d_field.row(k) / s.max_field;
           if (names)
-            names->push_back("E <= " + format_number(s.max_field * 1e-6) + " MV/m at " +
+            names->push_back("E <= " + format_number(units::MV_per_m.from_si(s.max_field)) +
+                             " MV/m at " +
                              position(base, e.points, k));
         }
     for (const unsigned int j : rings)
@@ -146,7 +149,7 @@ namespace cdea
             dc(row, v) = free[v].index == j + 1 ? -1. / span : free[v].index == j ? 1. / span : 0.;
         if (names)
           names->push_back("ring " + std::to_string(j + 1) + " at least " +
-                           format_number(s.min_ring_width * base.disk_radius * 1e3) +
+                           format_number(units::mm.from_si(s.min_ring_width * base.disk_radius)) +
                            " mm wide");
         ++row;
       }

@@ -2,6 +2,8 @@
 // stresses (with the relaxed law's wrinkled zone and validity), the fields
 // along the meridian and profiles at given radii.
 
+#include <cdea/base/units.h>
+
 #include "membrane_model_impl.h"
 
 #include <algorithm>
@@ -235,7 +237,7 @@ namespace cdea
             << (e.tension == TensionState::failed ?
                   "has no natural width below the Gent limit" :
                   "loses ellipticity, ds1/dlambda1 <= 0 (pull-in)")
-            << " at r = " << m.scene.prestretch * p.R * 1e3
+            << " at r = " << units::mm.from_si(m.scene.prestretch * p.R)
             << " mm (r/a = " << m.scene.prestretch * p.R / m.scene.disk_radius
             << ", lambda1 = " << p.l1 << ", lambda2 = " << p.l2 << ", natural width "
             << e.natural_width << ")";

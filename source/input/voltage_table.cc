@@ -2,6 +2,7 @@
 #include <cdea/base/format.h>
 #include <cdea/base/text.h>
 #include <cdea/input/voltage_table.h>
+#include <cdea/base/units.h>
 
 #include <filesystem>
 #include <sstream>
@@ -61,9 +62,9 @@ namespace cdea
         {
           if (x < 0.)
             throw InputError(where + ": voltages must not be negative, got " + format_number(x));
-          if (!(x <= ceiling * 1e-3))
+          if (!(x <= units::kV.from_si(ceiling)))
             throw InputError(where + ": " + format_number(x) + " kV is above the voltage "
-                             "ceiling of " + format_number(ceiling * 1e-3) + " kV for this "
+                             "ceiling of " + format_number(units::kV.from_si(ceiling)) + " kV for this "
                              "film (as for Electrodes/Voltage path (kV))");
           x *= 1e3;
         }

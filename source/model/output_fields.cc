@@ -20,15 +20,15 @@ namespace cdea
     }
   } // namespace
 
-  std::vector<double> scaled(const std::vector<double> &values, const double factor)
+  std::vector<double> in_unit(const std::vector<double> &values, const Unit &unit)
   {
     std::vector<double> result(values.size());
     for (std::size_t i = 0; i < values.size(); ++i)
-      result[i] = values[i] * factor;
+      result[i] = unit.from_si(values[i]);
     return result;
   }
 
-  double ColumnValues::in_file_units(const OutputField &column) const
+  double ColumnValues::in_file_units(const Quantity &column) const
   {
     return column.in_file_units(get(column));
   }
@@ -41,134 +41,128 @@ namespace cdea
     throw std::out_of_range("StepFields: no internal variable '" + name + "'");
   }
 
-  const std::vector<const OutputField *> &standard_summary_columns()
+  const std::vector<const Quantity *> &standard_summary_columns()
   {
     using namespace summary_column;
-    static const std::vector<const OutputField *> columns = {
+    static const std::vector<const Quantity *> columns = {
       &stage,  &load_factor, &voltage,       &mass,     &displacement,
       &stroke, &s2_min,      &s2_ring_inner, &wrinkled, &newton_iterations};
     return columns;
   }
 
-  const std::vector<const OutputField *> &step_attributes()
+  const std::vector<const Quantity *> &step_attributes()
   {
     using namespace summary_column;
-    static const std::vector<const OutputField *> attributes = {&stage, &load_factor, &voltage,
+    static const std::vector<const Quantity *> attributes = {&stage, &load_factor, &voltage,
                                                                 &displacement};
     return attributes;
   }
 
-  std::vector<SummaryAttribute> onset_attributes(const OnsetRecord &onset,
-                                                 const unsigned int n_rings)
+  ProductGroup onset_attributes(const OnsetRecord &onset, const unsigned int n_rings)
   {
     using namespace summary_attribute;
-    std::vector<SummaryAttribute> a(4);
-    a[0] = {onset_found.name, {onset.found ? 1. : 0.}, 0, 0, true, true};
-    a[1] = {onset_voltage.name, onset.found ? scaled(onset.voltages, onset_voltage.factor) :
-                                              std::vector<double>(n_rings, nan)};
-    a[2] = {onset_radius.name,
-            {onset.found ? onset_radius.in_file_units(onset.radius) : nan},
-            0,
-            0,
-            true};
-    a[3] = {onset_load_factor.name, {onset.found ? onset.load_factor : nan}, 0, 0, true};
-    return a;
+    ProductGroup g("/summary");
+    g.set(onset_found, onset.found)
+      .set(onset_voltage, onset.found ? onset.voltages : std::vector<double>(n_rings, nan))
+      .set(onset_radius, onset.found ? onset.radius : nan)
+      .set(onset_load_factor, onset.found ? onset.load_factor : nan);
+    return g;
   }
 
-  std::vector<SummaryAttribute> limit_point_attributes(const std::vector<LimitPoint> &limits,
-                                                       const unsigned int n_rings)
+  ProductGroup limit_point_attributes(const std::vector<LimitPoint> &limits,
+                                      const unsigned int n_rings)
   {
     using namespace summary_attribute;
-    SummaryAttribute voltages{limit_point_voltage.name, {}, unsigned(limits.size()), n_rings};
-    SummaryAttribute displacements{limit_point_displacement.name, {}};
+    std::vector<double> voltages, displacements;
     for (const LimitPoint &limit : limits)
       {
-        for (const double v : limit.voltages)
-          voltages.values.push_back(limit_point_voltage.in_file_units(v));
-        displacements.values.push_back(limit_point_displacement.in_file_units(limit.displacement));
+        voltages.insert(voltages.end(), limit.voltages.begin(), limit.voltages.end());
+        displacements.push_back(limit.displacement);
       }
-    return {voltages, displacements};
+    ProductGroup g("/summary");
+    g.set(limit_point_voltage, voltages, {limits.size(), n_rings})
+      .set(limit_point_displacement, displacements, {limits.size()});
+    return g;
   }
 
-  std::vector<SummaryAttribute> breakdown_attributes(const OnsetRecord &breakdown)
+  ProductGroup breakdown_attributes(const OnsetRecord &breakdown)
   {
     using namespace summary_attribute;
-    if (!breakdown.found)
-      return {};
-    return {{breakdown_voltage.name, scaled(breakdown.voltages, breakdown_voltage.factor)},
-            {breakdown_radius.name, {breakdown_radius.in_file_units(breakdown.radius)}}};
+    ProductGroup g("/summary");
+    if (breakdown.found)
+      g.set(breakdown_voltage, breakdown.voltages)
+        .set(breakdown_radius, std::vector<double>{breakdown.radius});
+    return g;
   }
 
-  std::vector<SummaryAttribute> time_integration_attributes(const unsigned int steps,
-                                                            const unsigned int rejected,
-                                                            const double       error_estimate)
+  ProductGroup time_integration_attributes(const unsigned int steps, const unsigned int rejected,
+                                           const double error_estimate)
   {
     using namespace summary_attribute;
-    return {{time_steps.name, {double(steps)}},
-            {time_steps_rejected.name, {double(rejected)}},
-            {time_error_estimate.name, {time_error_estimate.in_file_units(error_estimate)}}};
+    ProductGroup g("/summary");
+    g.set(time_steps, std::vector<double>{double(steps)})
+      .set(time_steps_rejected, std::vector<double>{double(rejected)})
+      .set(time_error_estimate, std::vector<double>{error_estimate});
+    return g;
   }
 
-  std::vector<SummaryAttribute> run_attributes(const unsigned int run, const OnsetRecord &onset,
-                                               const std::vector<LimitPoint> &limits,
-                                               const OnsetRecord             &breakdown,
-                                               const unsigned int             n_rings)
+  namespace
   {
-    std::vector<SummaryAttribute> all = onset_attributes(onset, n_rings);
-    const auto                    add = [&](const std::vector<SummaryAttribute> &more) {
-      all.insert(all.end(), more.begin(), more.end());
-    };
-    add(breakdown_attributes(breakdown));
-    if (run & summary_attribute::limit_point_voltage.runs)
-      add(limit_point_attributes(limits, n_rings));
-    return all;
-  }
+    /// A /steps dataset: a value per point along the meridian.
+    constexpr Quantity field_row(const char *name, const Unit &unit, const Storage storage,
+                                 const char *description)
+    {
+      Quantity q{name, unit, description, shape::point, storage};
+      q.runs = every_run;
+      return q;
+    }
+  } // namespace
 
   const std::vector<StepField> &step_fields()
   {
     // clang-format off
-    // Each row: name, unit, SI -> file factor, storage, shape, runs,
-    // description; the member of StepFields (or the derivation); whether the
-    // results file and the ParaView output have it.
+    // Each row: name, unit, storage, description; the member of StepFields
+    // (or the derivation); whether the results file and the ParaView output
+    // have it.
     static const std::vector<StepField> fields = {
-      {{"R", "mm", file_units::mm, Storage::real, Shape::scalar, every_run,
-        "undeformed (reference) radius of the material point"},
+      {field_row("R", units::mm, Storage::real,
+        "undeformed (reference) radius of the material point"),
        &StepFields::R, nullptr, true, true},
-      {{"r", "mm", file_units::mm, Storage::real, Shape::scalar, every_run,
-        "deformed radius"},
+      {field_row("r", units::mm, Storage::real,
+        "deformed radius"),
        &StepFields::r, nullptr, true, true},
-      {{"z", "mm", file_units::mm, Storage::real, Shape::scalar, every_run,
-        "deformed height (same sign convention as the solver)"},
+      {field_row("z", units::mm, Storage::real,
+        "deformed height (same sign convention as the solver)"),
        &StepFields::z, nullptr, true, true},
-      {{"theta", "rad", 1., Storage::real, Shape::scalar, every_run,
-        "meridian slope angle"},
+      {field_row("theta", units::rad, Storage::real,
+        "meridian slope angle"),
        &StepFields::theta, nullptr, true, false},
-      {{"lambda1", "1", 1., Storage::real, Shape::scalar, every_run,
-        "meridian stretch"},
+      {field_row("lambda1", units::one, Storage::real,
+        "meridian stretch"),
        &StepFields::lambda1, nullptr, true, true},
-      {{"lambda2", "1", 1., Storage::real, Shape::scalar, every_run,
-        "hoop stretch r/R"},
+      {field_row("lambda2", units::one, Storage::real,
+        "hoop stretch r/R"),
        &StepFields::lambda2, nullptr, true, true},
-      {{"s1", "kPa", file_units::kPa, Storage::real, Shape::scalar, every_run,
-        "nominal meridian stress"},
+      {field_row("s1", units::kPa, Storage::real,
+        "nominal meridian stress"),
        &StepFields::s1, nullptr, true, true},
-      {{"s2", "kPa", file_units::kPa, Storage::real, Shape::scalar, every_run,
-        "nominal hoop stress"},
+      {field_row("s2", units::kPa, Storage::real,
+        "nominal hoop stress"),
        &StepFields::s2, nullptr, true, true},
-      {{"sigma1", "kPa", file_units::kPa, Storage::real, Shape::scalar, every_run,
-        "true meridian stress lambda1 s1"},
+      {field_row("sigma1", units::kPa, Storage::real,
+        "true meridian stress lambda1 s1"),
        nullptr, [](const StepFields &f) { return true_stress(f.lambda1, f.s1); }, false, true},
-      {{"sigma2", "kPa", file_units::kPa, Storage::real, Shape::scalar, every_run,
-        "true hoop stress lambda2 s2"},
+      {field_row("sigma2", units::kPa, Storage::real,
+        "true hoop stress lambda2 s2"),
        nullptr, [](const StepFields &f) { return true_stress(f.lambda2, f.s2); }, false, true},
-      {{"E", "MV/m", file_units::MV_per_m, Storage::real, Shape::scalar, every_run,
-        "true electric field in the thickness direction"},
+      {field_row("E", units::MV_per_m, Storage::real,
+        "true electric field in the thickness direction"),
        &StepFields::E, nullptr, true, true},
-      {{"Phi", "kV", file_units::kV, Storage::real, Shape::scalar, every_run,
-        "voltage across the film"},
+      {field_row("Phi", units::kV, Storage::real,
+        "voltage across the film"),
        &StepFields::Phi, nullptr, true, true},
-      {{"ring", "1", 1., Storage::integer, Shape::scalar, every_run,
-        "index of the electrode ring (0 = innermost)"},
+      {field_row("ring", units::one, Storage::integer,
+        "index of the electrode ring (0 = innermost)"),
        nullptr, nullptr, true, true}};
     // clang-format on
     return fields;

@@ -63,6 +63,14 @@ namespace cdea
     impl->writer.double_array_attribute(impl->object(object), name, values);
   }
 
+  void Hdf5Writer::attribute(const std::string &object, const std::string &name,
+                             const std::vector<double> &values, const std::size_t rows,
+                             const std::size_t columns)
+  {
+    impl->writer.double_array_attribute(impl->object(object), name, values, unsigned(rows),
+                                        unsigned(columns));
+  }
+
   void Hdf5Writer::group(const std::string &path) { impl->writer.group(impl->file, path); }
 
   void Hdf5Writer::dataset(const std::string &path, const std::vector<std::size_t> &dims,

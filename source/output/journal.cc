@@ -13,8 +13,6 @@
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 
 namespace cdea
 {
@@ -29,8 +27,9 @@ namespace cdea
       start_record             = 1,
       describe_column_record   = 2,
       append_record            = 3,
-      onset_record             = 4,
-      summary_attribute_record = 5
+      onset_record             = 4, ///< read only: journals of earlier versions
+      summary_attribute_record = 5, ///< read only: journals of earlier versions
+      attribute_record         = 6  ///< a /summary attribute as the file holds it
     };
 
     // CRC-32 (IEEE 802.3, reflected polynomial 0xEDB88320).
@@ -186,7 +185,7 @@ namespace cdea
       std::uint32_t length = 0;
       std::memcpy(&length, data.data() + at + 1, 4);
       const unsigned char type = static_cast<unsigned char>(data[at]);
-      if (type < start_record || type > summary_attribute_record)
+      if (type < start_record || type > attribute_record)
         return false;
       constexpr std::size_t megabyte = std::size_t(1) << 20;
       if (left - frame < length)
@@ -427,7 +426,7 @@ namespace cdea
     for (const auto &entry : summary.columns)
       if (std::find(described.begin(), described.end(), entry.first) == described.end())
         {
-          describe_column(entry.first->name, entry.first->unit, entry.first->description);
+          describe_column(entry.first->name, entry.first->unit.name, entry.first->description);
           described.push_back(entry.first);
         }
     Encoder out;
@@ -448,25 +447,17 @@ namespace cdea
     write_record(append_record, out.bytes);
   }
 
-  void JournalWriter::onset(const OnsetRecord &onset)
+  void JournalWriter::summary_attribute(const FileAttribute &attribute)
   {
     Encoder out;
-    out.raw(static_cast<std::uint8_t>(onset.found));
-    out.doubles(onset.voltages);
-    out.f64(onset.radius);
-    out.f64(onset.load_factor);
-    write_record(onset_record, out.bytes);
-  }
-
-  void JournalWriter::summary_attribute(const std::string &name, const std::vector<double> &values,
-                                        const unsigned int rows, const unsigned int columns)
-  {
-    Encoder out;
-    out.str(name);
-    out.doubles(values);
-    out.u32(rows);
-    out.u32(columns);
-    write_record(summary_attribute_record, out.bytes);
+    out.str(attribute.name);
+    out.raw(static_cast<std::uint8_t>(attribute.kind));
+    out.u64(attribute.dims.size());
+    for (const std::size_t d : attribute.dims)
+      out.u64(d);
+    out.doubles(attribute.values);
+    out.str(attribute.text);
+    write_record(attribute_record, out.bytes);
   }
 
   namespace
@@ -534,6 +525,24 @@ namespace cdea
           case onset_record:
             replay_onset(in, document);
             return true;
+          case attribute_record:
+            {
+              FileAttribute a;
+              a.name          = in.str();
+              const auto kind = in.raw<std::uint8_t>();
+              if (kind > static_cast<std::uint8_t>(FileAttribute::Kind::text))
+                throw OutputError("an attribute of an unknown kind");
+              a.kind                   = static_cast<FileAttribute::Kind>(kind);
+              const std::uint64_t rank = in.u64();
+              if (rank > 3)
+                throw OutputError("an attribute of more than three dimensions");
+              for (std::uint64_t k = 0; k < rank; ++k)
+                a.dims.push_back(in.u64());
+              a.values = in.doubles();
+              a.text   = in.str();
+              document.set_summary_attribute(a);
+              return true;
+            }
           case summary_attribute_record:
             {
               const std::string         attribute = in.str();

@@ -4,6 +4,7 @@
 // and a Collection (PVD) listing one file per time.
 #include <cdea/model/output_fields.h>
 #include <cdea/output/paraview_writer.h>
+#include <cdea/base/units.h>
 #include <cdea/output/safe_files.h>
 
 #include <sys/stat.h>
@@ -102,7 +103,7 @@ namespace cdea
       std::vector<std::pair<std::string, std::vector<double>>> d;
       for (const StepField &row : step_fields())
         if (row.in_paraview && row.field.storage == Storage::real)
-          d.emplace_back(row.field.name, scaled(step_field_values(row, f), row.field.factor));
+          d.emplace_back(row.field.name, in_unit(step_field_values(row, f), row.field.unit));
       return d;
     }
 
@@ -130,8 +131,9 @@ namespace cdea
           for (unsigned int j = 0; j < n; ++j)
             {
               const double phi = 2. * M_PI * j / n;
-              p.points.insert(p.points.end(), {f.r[i] * 1e3 * std::cos(phi),
-                                               f.r[i] * 1e3 * std::sin(phi), f.z[i] * 1e3});
+              const double r = units::mm.from_si(f.r[i]);
+              p.points.insert(p.points.end(),
+                              {r * std::cos(phi), r * std::sin(phi), units::mm.from_si(f.z[i])});
               for (std::size_t a = 0; a < data.size(); ++a)
                 p.reals[a].second.push_back(data[a].second[i]);
               p.ring.push_back(f.ring[i]);
@@ -156,7 +158,7 @@ namespace cdea
     Piece disk(const StepFields &f, const unsigned int n, const Piece &film_piece)
     {
       Piece        p;
-      const double a = f.r.front() * 1e3, z = f.z.front() * 1e3;
+      const double a = units::mm.from_si(f.r.front()), z = units::mm.from_si(f.z.front());
       p.points.insert(p.points.end(), {0., 0., z});
       for (unsigned int j = 0; j < n; ++j)
         {
@@ -205,9 +207,9 @@ namespace cdea
         xml << " </DataArray>\n";
       };
       field("TimeValue", "Float64", {time});
-      for (const OutputField *row : step_attributes())
+      for (const Quantity *row : step_attributes())
         field(row->name, row->storage == Storage::integer ? "Int32" : "Float64",
-              scaled(row->summary_values(s), row->factor));
+              in_unit(row->summary_values(s), row->unit));
       xml << "    </FieldData>\n";
       for (const Piece &p : pieces)
         {
@@ -320,8 +322,8 @@ namespace cdea
     if (const double bytes = step_file_bytes(fields.R.size(), segments); bytes > max_step_file_bytes)
       throw std::runtime_error(
         "a ParaView file of " + std::to_string(fields.R.size()) + " samples x " +
-        std::to_string(segments) + " segments would take " + std::to_string(long(bytes * 1e-6)) +
-        " MB, more than the " + std::to_string(long(max_step_file_bytes * 1e-6)) +
+        std::to_string(segments) + " segments would take " + std::to_string(long(units::MB.from_si(bytes))) +
+        " MB, more than the " + std::to_string(long(units::MB.from_si(max_step_file_bytes))) +
         " MB allowed per step: lower Output/ParaView segments");
     if (struct stat st = {}; ::lstat(folder(true).c_str(), &st) != 0 || !S_ISDIR(st.st_mode) ||
                              st.st_dev != folder_device || st.st_ino != folder_inode)

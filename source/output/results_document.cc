@@ -1,4 +1,6 @@
 #include <cdea/model/output_fields.h>
+#include <cdea/model/quantities_common.h>
+#include <cdea/output/file_attribute.h>
 #include <cdea/output/hdf5_support.h>
 #include <cdea/output/results_document.h>
 
@@ -31,9 +33,9 @@ namespace cdea
     }
 
     /// The values of a row of the table in the file's unit.
-    std::vector<double> file_values(const OutputField &row, const StepSummary &summary)
+    std::vector<double> file_values(const Quantity &row, const StepSummary &summary)
     {
-      return scaled(row.summary_values(summary), row.factor);
+      return in_unit(row.summary_values(summary), row.unit);
     }
   } // namespace
 
@@ -109,16 +111,16 @@ namespace cdea
                     H5Dclose);
     }
 
-    void add_standard_column(const OutputField &row)
+    void add_standard_column(const Quantity &row)
     {
       const bool is_int   = row.storage == Storage::integer;
-      const bool per_ring = row.shape == Shape::per_ring;
+      const bool per_ring = row.shape == shape::step_ring;
       Column     column;
       column.width       = per_ring ? rings : 1;
       column.memory_type = is_int ? H5T_NATIVE_INT : H5T_NATIVE_DOUBLE;
       column.dataset     = create_summary_dataset(row.name, is_int ? H5T_STD_I32LE : H5T_IEEE_F64LE,
                                                   per_ring ? rings : 0, 0);
-      w.describe(column.dataset, row.unit, row.description);
+      w.describe(column.dataset, row.unit.name, row.description);
       standard_columns.push_back(std::move(column));
       standard_names.insert(row.name);
     }
@@ -185,15 +187,21 @@ namespace cdea
                    "extra summary column (the unit is part of the name); NaN where not written");
     }
 
-    /// The summary attribute @p a, as a scalar, a 1D or a 2D attribute.
-    void write_summary_attribute(const SummaryAttribute &a) const
+    /// The summary attribute @p a: a scalar, a whole number, a list or
+    /// rows x columns.
+    void write_summary_attribute(const FileAttribute &a) const
     {
-      if (a.scalar && a.integer)
-        w.int_attribute(summary, a.name, static_cast<int>(a.values[0]));
-      else if (a.scalar)
-        w.double_attribute(summary, a.name, a.values[0]);
+      if (a.kind == FileAttribute::Kind::text)
+        w.string_attribute(summary, a.name, a.text);
+      else if (a.kind == FileAttribute::Kind::integer)
+        w.int_attribute(summary, a.name, static_cast<int>(a.values.at(0)));
+      else if (a.dims.empty())
+        w.double_attribute(summary, a.name, a.values.at(0));
+      else if (a.dims.size() == 2 && !a.values.empty())
+        w.double_array_attribute(summary, a.name, a.values, unsigned(a.dims[0]),
+                                 unsigned(a.dims[1]));
       else
-        w.double_array_attribute(summary, a.name, a.values, a.rows, a.columns);
+        w.double_array_attribute(summary, a.name, a.values);
     }
 
     void write_standard_row(const StepSummary &s);
@@ -204,10 +212,10 @@ namespace cdea
   /// The standard /summary columns of row `rows`, from the table.
   void ResultsDocument::Impl::write_standard_row(const StepSummary &s)
   {
-    const std::vector<const OutputField *> &rows_of_table = standard_summary_columns();
+    const std::vector<const Quantity *> &rows_of_table = standard_summary_columns();
     for (std::size_t c = 0; c < rows_of_table.size(); ++c)
       {
-        const OutputField  &row    = *rows_of_table[c];
+        const Quantity  &row    = *rows_of_table[c];
         const Column       &column = standard_columns[c];
         const std::vector<double> values = file_values(row, s);
         extend(row.name, column, rows + 1);
@@ -247,12 +255,12 @@ namespace cdea
     Handle group(w.check(H5Gcreate2(steps, group_name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                          std::string("H5Gcreate2(/steps/") + group_name + ")"),
                  H5Gclose);
-    for (const OutputField *row : step_attributes())
+    for (const Quantity *row : step_attributes())
       {
         const std::vector<double> values = file_values(*row, s);
         if (row->storage == Storage::integer)
           w.int_attribute(group, row->name, static_cast<int>(values[0]));
-        else if (row->shape == Shape::per_ring)
+        else if (row->shape == shape::step_ring)
           w.double_array_attribute(group, row->name, values);
         else
           w.double_attribute(group, row->name, values[0]);
@@ -262,11 +270,11 @@ namespace cdea
         {
           const std::vector<int> values = as_integers(step_field_values(row, fields));
           write_field(group, row.field.name, H5T_STD_I32LE, H5T_NATIVE_INT, values.data(),
-                      values.size(), row.field.unit, row.field.description);
+                      values.size(), row.field.unit.name, row.field.description);
         }
       else if (row.in_file)
         write_real_field(group, row.field.name,
-                         scaled(step_field_values(row, fields), row.field.factor), row.field.unit,
+                         in_unit(step_field_values(row, fields), row.field.unit), row.field.unit.name,
                          row.field.description);
     for (const InternalField &f : fields.internal)
       write_real_field(group, f.name, f.values, f.unit, f.description);
@@ -283,17 +291,18 @@ namespace cdea
     if (n_rings == 0)
       throw std::invalid_argument(d.w.name() + ": n_rings must be at least 1");
     for (const auto &attribute : extra_root_attributes)
-      if (attribute.first.empty() || attribute.first == "parameters" ||
-          attribute.first == "code_version" || attribute.first == "n_rings" ||
-          attribute.first == "run_status")
+      if (attribute.first.empty() || attribute.first == common_quantity::parameters.name ||
+          attribute.first == common_quantity::code_version.name ||
+          attribute.first == run_attribute::n_rings.name ||
+          attribute.first == run_attribute::run_status.name)
         throw std::invalid_argument(d.w.name() + ": extra root attribute name '" +
                                     attribute.first + "' is empty or reserved");
 
     ErrorPrintingOff quiet;
     d.file = hdf5::create_memory_file(name);
-    d.w.string_attribute(d.file, "parameters", parameters_text);
-    d.w.string_attribute(d.file, "code_version", CDEA_VERSION);
-    d.w.int_attribute(d.file, "n_rings", static_cast<int>(n_rings));
+    d.w.string_attribute(d.file, common_quantity::parameters.name, parameters_text);
+    d.w.string_attribute(d.file, common_quantity::code_version.name, CDEA_VERSION);
+    d.w.int_attribute(d.file, run_attribute::n_rings.name, static_cast<int>(n_rings));
     for (const auto &attribute : extra_root_attributes)
       d.w.string_attribute(d.file, attribute.first, attribute.second);
 
@@ -306,7 +315,7 @@ namespace cdea
                                  "H5Gcreate2(/steps)"),
                        H5Gclose);
 
-    for (const OutputField *row : standard_summary_columns())
+    for (const Quantity *row : standard_summary_columns())
       d.add_standard_column(*row);
 
     write_onset(OnsetRecord{});
@@ -360,7 +369,7 @@ namespace cdea
     Impl            &d = *impl;
     ErrorPrintingOff quiet;
     for (const auto &entry : summary.columns)
-      d.extra_descriptions[entry.first->name] = {entry.first->unit, entry.first->description};
+      d.extra_descriptions[entry.first->name] = {entry.first->unit.name, entry.first->description};
     d.write_standard_row(summary);
     d.write_extra_row(named_columns(summary, extra_columns));
     // A /summary row alone has no /steps group (time-dependent runs, doc/time.md).
@@ -389,8 +398,8 @@ namespace cdea
   {
     check_onset(onset);
     ErrorPrintingOff quiet;
-    for (const SummaryAttribute &a : onset_attributes(onset, impl->rings))
-      impl->write_summary_attribute(a);
+    for (const ProductEntry &a : onset_attributes(onset, impl->rings).attributes)
+      impl->write_summary_attribute(file_attribute(a));
   }
 
   void ResultsDocument::set_summary_attribute(const std::string         &name,
@@ -401,8 +410,27 @@ namespace cdea
     if (name.empty() || (rows > 0 && std::size_t(rows) * columns != values.size()))
       throw std::invalid_argument(impl->w.name() + ": summary attribute '" + name +
                                   "' needs a name and rows x columns values");
+    set_summary_attribute(real_attribute(name, values, rows, columns));
+  }
+
+  void ResultsDocument::set_summary_attribute(const FileAttribute &a)
+  {
+    check_summary_attribute(a);
     ErrorPrintingOff quiet;
-    impl->w.double_array_attribute(impl->summary, name, values, rows, columns);
+    impl->write_summary_attribute(a);
+  }
+
+  void ResultsDocument::check_summary_attribute(const FileAttribute &a) const
+  {
+    std::size_t size = 1;
+    for (const std::size_t d : a.dims)
+      size *= d;
+    const bool numbers = a.kind != FileAttribute::Kind::text;
+    if (a.name.empty() || (numbers && a.dims.empty() && a.values.size() != 1) ||
+        (numbers && a.dims.size() == 2 && !a.values.empty() && size != a.values.size()) ||
+        (a.kind == FileAttribute::Kind::integer && !a.dims.empty()))
+      throw std::invalid_argument(impl->w.name() + ": summary attribute '" + a.name +
+                                  "' needs a name and values of its dimensions");
   }
 
   void ResultsDocument::set_root_attribute(const std::string &name, const std::string &value)

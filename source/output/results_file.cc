@@ -1,3 +1,4 @@
+#include <cdea/model/output_fields.h>
 #include <cdea/output/journal.h>
 #include <cdea/output/results_document.h>
 #include <cdea/output/results_file.h>
@@ -101,7 +102,7 @@ namespace cdea
       if (since < minimum_interval || since < checkpoint_cost_ratio * last_duration)
         return;
       record([&] {
-        document->set_root_attribute("run_status",
+        document->set_root_attribute(run_attribute::run_status.name,
                                      "running: checkpoint after step " +
                                        std::to_string(document->n_steps() - 1) +
                                        " (the run had not ended)");
@@ -210,13 +211,30 @@ namespace cdea
     d.document->describe_column(name, unit, description);
   }
 
+  void ResultsFile::append(const StepSummary &summary, const StepFields &fields)
+  {
+    append(summary, fields, {});
+  }
+
   void ResultsFile::write_onset(const OnsetRecord &onset)
+  {
+    impl->document->check_onset(onset);
+    set_summary_attributes(onset_attributes(onset, n_rings()));
+  }
+
+  void ResultsFile::set_summary_attributes(const ProductGroup &attributes)
+  {
+    for (const ProductEntry &e : attributes.attributes)
+      set_summary_attribute(file_attribute(e));
+  }
+
+  void ResultsFile::set_summary_attribute(const FileAttribute &attribute)
   {
     Impl &d = *impl;
     d.before_change();
-    d.document->check_onset(onset);
-    d.record([&] { d.journal.onset(onset); });
-    d.document->write_onset(onset);
+    d.document->check_summary_attribute(attribute);
+    d.record([&] { d.journal.summary_attribute(attribute); });
+    d.document->set_summary_attribute(attribute);
   }
 
   void ResultsFile::set_summary_attribute(const std::string         &name,
@@ -236,8 +254,7 @@ namespace cdea
         (rows == 0 && columns != 0 && !values.empty()))
       throw std::invalid_argument("ResultsFile '" + d.file_path + "': summary attribute '" +
                                   name + "' needs a name and rows x columns values");
-    d.record([&] { d.journal.summary_attribute(name, values, rows, columns); });
-    d.document->set_summary_attribute(name, values, rows, columns);
+    set_summary_attribute(real_attribute(name, values, rows, columns));
   }
 
   ResultsFile::Finish ResultsFile::finish(const std::string &status, const bool keep_older)
@@ -256,7 +273,7 @@ namespace cdea
     journal.close();
     try
       {
-        document->set_root_attribute("run_status", status);
+        document->set_root_attribute(run_attribute::run_status.name, status);
         const bool  vanished = !(DirectoryIdentity::of(directory) == directory_id);
         bool        owner    = true; // the journal and lock at file_path are ours
         std::string target   = vanished ? reclaim_directory(owner, f) : file_path;
@@ -340,7 +357,7 @@ namespace cdea
     for (int attempt = 0; k > 0 && attempt < 8; ++attempt)
       {
         JournalReplay part = replay_journal(journal_path, file_path, k);
-        part.document->set_root_attribute("run_status",
+        part.document->set_root_attribute(run_attribute::run_status.name,
                                           status + " (only the first " + std::to_string(k) +
                                             " of " + std::to_string(n) +
                                             " steps fit: " + out.message + ")");

@@ -10,6 +10,7 @@
 // natural frequencies with their damping and mode shapes.
 
 #include <cdea/analysis/run_input.h>
+#include <cdea/model/product.h>
 
 #include <Eigen/Core>
 
@@ -44,7 +45,8 @@ namespace cdea
   /// The response for @p input (its parameters and scene, Response subsection).
   FrequencyResponse frequency_response(const RunInput &input);
 
-  /// <Base name>_response.h5 of @p r.
-  void write_response_file(const std::string &path, const std::string &parameter_text,
-                           const FrequencyResponse &r);
+  /// The product of @p r (model/quantities_response.h): the equilibrium,
+  /// /transfer and /modes, in SI; written to <Base name>_response.h5 and
+  /// returned by cdea.response().
+  Product response_product(const std::string &parameter_text, const FrequencyResponse &r);
 } // namespace cdea

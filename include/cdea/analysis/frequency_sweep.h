@@ -8,6 +8,7 @@
 // sweep").
 
 #include <cdea/analysis/periodic_steady_state.h>
+#include <cdea/model/product.h>
 #include <cdea/analysis/run_input.h>
 
 #include <functional>
@@ -59,7 +60,13 @@ namespace cdea
   frequency_sweep(const RunInput &input, const FrequencySweepSettings &s,
                   const std::function<void(const SteadyPeriod *)> &on_frequency);
 
-  /// <Base name>_frequency_sweep.h5 of @p r.
-  void write_frequency_sweep_file(const std::string &path, const std::string &parameter_text,
+  /// The group /sweep of @p periods: a value per frequency
+  /// (model/quantities_frequency_sweep.h), in SI.
+  Product periods_product(const std::vector<SteadyPeriod> &periods);
+
+  /// The product of @p r: the quasi-static amplitude, the usable band and
+  /// /sweep, in SI; written to <Base name>_frequency_sweep.h5 and returned by
+  /// cdea.frequency_sweep().
+  Product frequency_sweep_product(const std::string          &parameter_text,
                                   const FrequencySweepResult &r);
 } // namespace cdea

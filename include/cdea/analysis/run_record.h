@@ -6,6 +6,7 @@
 #include <cdea/analysis/run_input.h>
 #include <cdea/model/records.h>
 #include <cdea/model/output_fields.h>
+#include <cdea/model/run_stream.h>
 #include <cdea/solver/load_stepper.h>
 
 #include <cstddef>
@@ -34,8 +35,8 @@ namespace cdea
   std::string run_status(const RunResult &result, std::size_t n_steps);
 
 
-  /// A run kept in memory.
-  struct RunRecord
+  /// A run kept in memory: a sink of its product stream (model/run_stream.h).
+  struct RunRecord : RunSink
   {
     RunMethod method = RunMethod::finite_elements; ///< the root attribute `method`
     /// Root attributes of the results file besides method and parameters.
@@ -48,11 +49,15 @@ namespace cdea
     std::string  results_path; ///< where the command would write the results
     std::vector<StepSummary>   steps;  ///< one per converged step
     std::vector<StepFields>    fields; ///< the fields of each step
+    ProductGroup attributes{"/summary"}; ///< the /summary attributes as streamed
     /// Completed or why not, onset, limit points, breakdown, counts. A run
     /// that stopped on an error says so here ("error: ...").
     RunResult                result;
     std::vector<std::string> notes;       ///< what the command prints besides (e.g. load stepping)
     double                   seconds = 0.; ///< wall time of the load stages
+
+    void append(const StepSummary &summary, const StepFields &step_fields) override;
+    void set_summary_attributes(const ProductGroup &values) override;
   };
 
   /// Runs @p run (a stepper whose on_step fills @p record) into
@@ -61,10 +66,8 @@ namespace cdea
   void run_keeping_steps(RunRecord &record, const std::function<RunResult()> &run);
 
   /// Writes @p record through ResultsFile as the command writes it: root
-  /// attributes, /summary with every column and attribute, /steps. Throws
-  /// std::runtime_error naming the path if the file cannot be written.
+  /// attributes, /summary with every column and attribute, /steps (the
+  /// record's stream again, into the file). Throws std::runtime_error naming
+  /// the path if the file cannot be written.
   void write_run(const RunRecord &record, const std::string &path);
-
-  /// Writes the /summary attributes @p attributes (doubles; rows == 0: 1D).
-  void write_summary_attributes(ResultsFile &file, const std::vector<SummaryAttribute> &attributes);
 } // namespace cdea

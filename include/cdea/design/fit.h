@@ -20,6 +20,7 @@
 #include <cdea/input/parameter_input.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/fe/sensitivities.h>
+#include <cdea/model/product.h>
 #include <cdea/solver/load_stepper.h>
 
 #include <cmath>
@@ -207,20 +208,13 @@ namespace cdea
                                               const std::vector<SceneParameter> &free,
                                               const std::vector<double>         &values);
 
-  /// <Base name>_fit.h5 (layout in doc/optimization.md), replaced only once
-  /// complete; @p curve_kV, @p curve_mm: the model along the data.
-  void write_fit_file(const std::string &path, const std::string &parameter_text,
-                      const CalibrationData &data, const FitSettings &settings,
-                      const FitResult &result, const std::vector<std::vector<double>> &curve_kV,
-                      const std::vector<double> &curve_mm, unsigned int solves);
-
   /// A whole calibration as `cdea fit` and cdea.fit() run it: the fit, and
   /// the model along the data at the fitted values (if it got there).
   struct Calibrated
   {
     FitResult                        result;
-    std::vector<std::vector<double>> curve_kV; ///< ring voltages along the data
-    std::vector<double>              curve_mm; ///< the model's displacement there
+    std::vector<std::vector<double>> curve_voltages;     ///< ring voltages along the data (V)
+    std::vector<double>              curve_displacement; ///< the model's displacement there (m)
     unsigned int                     solves = 0, ramps = 0;
   };
 
@@ -231,4 +225,10 @@ namespace cdea
                        const FitSettings &settings,
                        const std::function<void(unsigned int, double, const std::vector<double> &)>
                          &progress = {});
+
+  /// The product of a calibration (model/quantities_fit.h): the root
+  /// attributes, /correlation, /data and /curve of doc/optimization.md, in
+  /// SI; written to <Base name>_fit.h5 and returned by cdea.fit().
+  Product fit_product(const std::string &parameter_text, const CalibrationData &data,
+                      const FitSettings &settings, const Calibrated &calibrated);
 } // namespace cdea

@@ -23,6 +23,7 @@
 #include <cdea/input/parameters.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/fe/sensitivities.h>
+#include <cdea/model/product.h>
 #include <cdea/solver/load_stepper.h>
 
 #include <functional>
@@ -201,11 +202,10 @@ namespace cdea
                                    const std::function<void(const HistoryRow &)>  &on_evaluation = {},
                                    const std::function<void(const StartResult &)> &on_start = {});
 
-  /// <Base name>_optimum.h5 (layout in doc/optimization.md), replaced only
-  /// once complete. Throws std::runtime_error naming the file.
-  void write_optimum_file(const std::string &path, const OptimizationRun &run,
-                          const OptimizationSettings &settings, const Scene &base,
-                          const std::string &parameter_text);
+  /// The product of the run (model/quantities_optimize.h): the optimum,
+  /// /history, /starts and /optimum of doc/optimization.md, in SI.
+  Product optimum_product(const OptimizationRun &run, const OptimizationSettings &settings,
+                          const Scene &base, const std::string &parameter_text);
 
   /// <Base name>_optimum.prm: the parameters of @p input (its overrides
   /// included) with the layout as electrodes and a one-waypoint voltage path

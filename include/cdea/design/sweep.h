@@ -19,6 +19,7 @@
 #include <cdea/fe/membrane_model.h>
 #include <cdea/model/scene.h>
 #include <cdea/model/equilibrium_model.h>
+#include <cdea/model/product.h>
 #include <cdea/solver/load_stepper.h>
 
 #include <cstddef>
@@ -140,45 +141,11 @@ namespace cdea
                              const SweepSettings &settings,
                              const std::function<void(std::size_t)> &on_points = {});
 
-  /// What the map file holds, in its units (kV, mm, kPa, %): its root
-  /// attributes and its datasets, row-major with dimensions @p dims. The one
-  /// description of the map's names, units and conversions, shared by the
-  /// file and the Python module.
-  struct MapFileContent
-  {
-    enum class Kind
-    {
-      real,
-      integer, ///< values hold whole numbers
-      text
-    };
-    struct Attribute
-    {
-      std::string name;
-      Kind        kind;
-      double      real; ///< real and integer attributes
-      std::string text;
-    };
-    struct Dataset
-    {
-      std::string              name, unit, description;
-      std::vector<std::size_t> dims;
-      Kind                     kind;
-      std::vector<double>      values; ///< real and integer datasets
-      std::vector<std::string> texts;  ///< text datasets
-    };
-    std::vector<Attribute> attributes;
-    std::vector<Dataset>   datasets;
-  };
-
-  MapFileContent sweep_map_content(const SweepMap &map, const std::string &parameter_text);
-
-  /// Write <path> (rank 0 only): the layout of doc/design-maps.md, with the
-  /// root attribute run_status (sweep_run_status()). The file is written whole beside the path and
-  /// renamed onto it: an older map stays intact until then. Throws
-  /// std::runtime_error naming the file if it cannot be written.
-  void write_sweep_file(const std::string &path, const SweepMap &map,
-                        const std::string &parameter_text);
+  /// The map as a product (model/quantities_sweep.h): the root attributes
+  /// (with run_status, sweep_run_status()) and the datasets of
+  /// doc/design-maps.md, in SI; written to <Base name>_map.h5 by rank 0 and
+  /// returned by the Python module.
+  Product sweep_product(const SweepMap &map, const std::string &parameter_text);
 
   /// Whether some layout of the map reached the inner voltage (else the map
   /// is empty).

@@ -89,12 +89,12 @@ namespace cdea
                       const std::function<void(unsigned int, double, const std::vector<double> &)>
                         &progress = {});
 
-  /// <Base name>_fit.h5 of a DMA or creep fit: the root attributes of
-  /// write_fit_file() and /data with the table's columns (frequency_Hz and
-  /// storage_kPa, loss_kPa, fitted and residual ones; or time_s, voltage_kV,
-  /// displacement_mm, fitted_mm, residual_mm) and weight.
-  void write_dma_fit_file(const std::string &path, const std::string &parameter_text,
-                          const DmaData &data, const FitSettings &settings, const FitResult &r);
-  void write_creep_fit_file(const std::string &path, const std::string &parameter_text,
-                            const CreepData &data, const FitSettings &settings, const FitResult &r);
+  /// The product of a DMA or creep fit (model/quantities_fit.h): the root
+  /// attributes of fit_product() and /data with the table's columns
+  /// (frequency_Hz and storage_kPa, loss_kPa, fitted and residual ones; or
+  /// time_s, voltage_kV, displacement_mm, fitted_mm, residual_mm) and weight.
+  Product dma_fit_product(const std::string &parameter_text, const DmaData &data,
+                          const FitSettings &settings, const FitResult &r);
+  Product creep_fit_product(const std::string &parameter_text, const CreepData &data,
+                            const FitSettings &settings, const FitResult &r);
 } // namespace cdea

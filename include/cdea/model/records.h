@@ -10,7 +10,7 @@
 
 namespace cdea
 {
-  struct OutputField;
+  struct Quantity;
 
   /// The values of the /summary columns the postprocessors add, each by its
   /// row of the table (the handles in namespace summary_column of
@@ -18,10 +18,10 @@ namespace cdea
   class ColumnValues
   {
   public:
-    using Entry = std::pair<const OutputField *, double>;
+    using Entry = std::pair<const Quantity *, double>;
 
     /// Sets (or overwrites) the value of @p column.
-    void set(const OutputField &column, double value)
+    void set(const Quantity &column, double value)
     {
       for (Entry &e : entries)
         if (e.first == &column)
@@ -32,7 +32,7 @@ namespace cdea
       entries.emplace_back(&column, value);
     }
 
-    bool has(const OutputField &column) const
+    bool has(const Quantity &column) const
     {
       for (const Entry &e : entries)
         if (e.first == &column)
@@ -41,7 +41,7 @@ namespace cdea
     }
 
     /// The SI value of @p column; NaN if it was not set.
-    double get(const OutputField &column) const
+    double get(const Quantity &column) const
     {
       for (const Entry &e : entries)
         if (e.first == &column)
@@ -50,7 +50,7 @@ namespace cdea
     }
 
     /// The value of @p column in the file's unit (get() times its factor).
-    double in_file_units(const OutputField &column) const;
+    double in_file_units(const Quantity &column) const;
 
     std::vector<Entry>::const_iterator begin() const { return entries.begin(); }
     std::vector<Entry>::const_iterator end() const { return entries.end(); }

@@ -29,6 +29,9 @@ namespace cdea
     void attribute(const std::string &object, const std::string &name, int value);
     void attribute(const std::string &object, const std::string &name,
                    const std::vector<double> &values);
+    /// A rows x columns attribute (@p values row by row).
+    void attribute(const std::string &object, const std::string &name,
+                   const std::vector<double> &values, std::size_t rows, std::size_t columns);
 
     /// A group (its parents must exist).
     void group(const std::string &path);

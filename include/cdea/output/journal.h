@@ -44,9 +44,8 @@ namespace cdea
     /// summary.columns not yet recorded.
     void append(const StepSummary &summary, const StepFields &fields,
                 const std::vector<NamedColumn> &extra_columns);
-    void onset(const OnsetRecord &onset);
-    void summary_attribute(const std::string &name, const std::vector<double> &values,
-                           unsigned int rows, unsigned int columns);
+    /// A /summary attribute as the file holds it.
+    void summary_attribute(const FileAttribute &attribute);
 
     void        close() noexcept;
     bool        is_open() const { return fd >= 0; }
@@ -57,7 +56,7 @@ namespace cdea
     std::size_t bytes = 0;
     std::string file;
     /// The columns of the table whose description is recorded.
-    std::vector<const OutputField *> described;
+    std::vector<const Quantity *> described;
     void        write_record(unsigned char type, const std::string &payload);
   };
 

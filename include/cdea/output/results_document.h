@@ -4,6 +4,7 @@
 // output fields (model/output_fields.h). Plain HDF5 C API, no deal.II.
 
 #include <cdea/model/records.h>
+#include <cdea/output/file_attribute.h>
 
 #include <memory>
 #include <string>
@@ -52,6 +53,10 @@ namespace cdea
     /// A double attribute of /summary: 1D if rows == 0, else rows x columns.
     void set_summary_attribute(const std::string &name, const std::vector<double> &values,
                                unsigned int rows, unsigned int columns);
+    /// An attribute of /summary as the file holds it; check_...() throws
+    /// std::invalid_argument (changing nothing) if set_...() would reject it.
+    void set_summary_attribute(const FileAttribute &attribute);
+    void check_summary_attribute(const FileAttribute &attribute) const;
     /// A string attribute of the root group (e.g. run_status).
     void set_root_attribute(const std::string &name, const std::string &value);
 

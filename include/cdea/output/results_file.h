@@ -38,6 +38,8 @@
 // run leaves the journal, which recover_results() turns into a file.
 
 #include <cdea/model/records.h>
+#include <cdea/model/run_stream.h>
+#include <cdea/output/file_attribute.h>
 #include <cdea/output/safe_files.h>
 
 #include <memory>
@@ -47,7 +49,8 @@
 
 namespace cdea
 {
-  class ResultsFile
+  /// A sink of a run's product stream (model/run_stream.h).
+  class ResultsFile : public RunSink
   {
   public:
     /// Starts the results of a run for @p path: creates the parent directory
@@ -66,7 +69,7 @@ namespace cdea
 
     /// finish("ended without finishing") if finish() was not called; never
     /// throws.
-    ~ResultsFile();
+    ~ResultsFile() override;
 
     ResultsFile(const ResultsFile &)            = delete;
     ResultsFile &operator=(const ResultsFile &) = delete;
@@ -89,7 +92,14 @@ namespace cdea
     /// the run should stop and finish().
     void append(const StepSummary &summary,
                 const StepFields  &fields,
-                const std::vector<std::pair<std::string, double>> &extra_columns = {});
+                const std::vector<std::pair<std::string, double>> &extra_columns);
+    /// append() without extra columns: a step of the run's stream.
+    void append(const StepSummary &summary, const StepFields &fields) override;
+
+    /// The /summary attributes of the stream (each converted by its row;
+    /// file_attribute()), recorded in the journal and set in the file.
+    void set_summary_attributes(const ProductGroup &attributes) override;
+    void set_summary_attribute(const FileAttribute &attribute);
 
     /// Sets the unit and description attributes of an extra /summary column
     /// (by default unit "" and a generic description). May be called before
@@ -98,9 +108,10 @@ namespace cdea
                          const std::string &unit,
                          const std::string &description);
 
-    /// (Over)writes the /summary attributes onset_found, onset_voltage_kV and
-    /// onset_radius_mm (NaN when not found). Throws std::invalid_argument if
-    /// onset.found and onset.voltages does not have n_rings entries.
+    /// (Over)writes the /summary attributes onset_found, onset_voltage_kV,
+    /// onset_radius_mm and onset_load_factor (onset_attributes(); NaN when
+    /// not found). Throws std::invalid_argument if onset.found and
+    /// onset.voltages does not have n_rings entries.
     void write_onset(const OnsetRecord &onset);
 
     /// (Over)writes a 1D double attribute of /summary (written as given, no
