@@ -265,7 +265,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   check_charts();
   check_sweep();

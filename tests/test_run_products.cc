@@ -222,7 +222,7 @@ namespace
   }
 } // namespace
 
-int main()
+CDEA_TEST_MAIN()
 {
   const RunRecord record = made_up_run();
   check(record.attributes.find(summary_attribute::limit_point_voltage) &&
