@@ -104,8 +104,8 @@ def draw(points, cells, arrays, field, name, out):
     bar = fig.colorbar(matplotlib.cm.ScalarMappable(norm=norm, cmap=cmap), ax=ax,
                        shrink=0.7, pad=0.02)
     bar.set_label(f"{name} ({UNITS[name]})")
-    volts = ", ".join(f"{v:g}" for v in np.atleast_1d(field.get("voltage_kV", [])))
-    displacement = float(np.atleast_1d(field.get("displacement_mm", [np.nan]))[0])
+    volts = ", ".join(f"{v:g}" for v in np.ravel(field.get("voltage_kV", [])))
+    displacement = float(np.ravel(field.get("displacement_mm", [np.nan]))[0])
     ax.set_title(f"{volts} kV, displacement {displacement:.2f} mm")
     fig.savefig(out, dpi=110, bbox_inches="tight")
     plt.close(fig)
