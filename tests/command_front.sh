@@ -61,8 +61,29 @@ for name, key, value in [("no-slash", "Mass", 300), ("no-entry", "Loading/Mass (
 PY
 
 "$exe" recover out/x.h5 --set 'Loading/Mass (g)=300' > recover.out 2> recover.err
-[ $? -eq 1 ] && grep -q "unknown command or wrong number of arguments: 'recover'" recover.err \
+[ $? -eq 1 ] && grep -q "cdea recover: wrong arguments (got 'out/x.h5' '--set' 'Loading/Mass (g)=300')" recover.err \
   && ok "--set only for the commands that read a parameter file" || fail "recover --set: $(head -1 recover.err)"
+
+# --- a command without its file, a command's --help, an unknown command ------
+"$exe" run > none.out 2> none.err
+if [ $? -eq 1 ] && [ ! -s none.out ] && grep -q "^cdea run: wrong arguments (got no arguments); usage:" none.err &&
+   grep -q "^  cdea run FILE.prm" none.err && ! grep -q "cdea sweep" none.err; then
+  ok "cdea run without its file: $(head -1 none.err)"
+else
+  fail "cdea run without its file: exit $?, $(head -2 none.err)"
+fi
+for flag in --help -h; do
+  "$exe" fit $flag > help.out 2> help.err
+  if [ $? -eq 0 ] && [ ! -s help.err ] && grep -q "^  cdea fit FILE.prm DATA.csv" help.out &&
+     ! grep -q "cdea run" help.out; then
+    ok "cdea fit $flag: the command's usage, exit 0"
+  else
+    fail "cdea fit $flag: $(head -2 help.err) $(head -2 help.out)"
+  fi
+done
+"$exe" runn prm.prm > unknown.out 2> unknown.err
+[ $? -eq 1 ] && grep -q "^cdea: unknown command 'runn'" unknown.err && grep -q "cdea sweep FILE.prm" unknown.err \
+  && ok "an unknown command: its name and the whole usage" || fail "unknown command: $(head -1 unknown.err)"
 
 # --- the warnings of run, printed by every command that reads FILE.prm --------
 twice='subsection Loading\n  set Mass (g) = 280\n  set Mass (g) = 280\nend\n'

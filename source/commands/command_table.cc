@@ -54,7 +54,7 @@ namespace cdea
         "frequencies of subsection Frequency sweep: stroke,\n"
         "dissipation, loss of tension, the usable band,\n"
         "<Base name>_frequency_sweep.h5"},
-       reads_parameters | stops_on_signals | time_runs, Ranks::all, Output::claimed_first,
+       reads_parameters | stops_on_signals | time_runs | in_python, Ranks::all, Output::claimed_first,
        frequency_sweep_job},
       {"recover", {"FILE.h5"},
        {"rebuild the results of a killed run from its\n"

@@ -69,11 +69,30 @@ namespace cdea
       return false;
     }
 
-    int usage_error(const std::string &word)
+    int unknown_command(const std::string &word)
     {
       if (mpi::rank() == 0)
-        std::cerr << "cdea: unknown command or wrong number of arguments: '" << word << "'\n\n"
-                  << usage_text();
+        std::cerr << "cdea: unknown command '" << word << "'\n\n" << usage_text();
+      return exit_input_error;
+    }
+
+    /// `cdea CMD --help` or `cdea CMD -h`: the command's lines of the usage.
+    bool asks_for_help(const std::vector<std::string> &arguments)
+    {
+      return arguments.size() == 1 && (arguments[0] == "--help" || arguments[0] == "-h");
+    }
+
+    /// A known command with arguments that fit none of its forms: what it
+    /// takes and what it got.
+    int wrong_arguments(const Command &command, const std::vector<std::string> &arguments)
+    {
+      if (mpi::rank() != 0)
+        return exit_input_error;
+      std::string got = arguments.empty() ? "no arguments" : "";
+      for (const std::string &a : arguments)
+        got += (got.empty() ? "'" : " '") + a + "'";
+      std::cerr << "cdea " << command.name << ": wrong arguments (got " << got << "); usage:\n"
+                << command_usage(command) << "('cdea --help' lists every command)\n";
       return exit_input_error;
     }
 
@@ -192,7 +211,7 @@ namespace cdea
           }
         const Command *command = find_command(words[0]);
         if (!command)
-          return usage_error(words[0]);
+          return unknown_command(words[0]);
         Invocation invocation{*command, {}, mpi::rank() == 0, {}, {}, {}, {}};
         try
           {
@@ -204,8 +223,14 @@ namespace cdea
               std::cerr << "cdea: " << e.what() << '\n';
             return exit_input_error;
           }
+        if (asks_for_help(invocation.arguments) && command->name != "--help")
+          {
+            if (invocation.root)
+              std::cout << command_usage(*command);
+            return exit_success;
+          }
         if (!fits_a_form(*command, invocation.arguments))
-          return usage_error(words[0]);
+          return wrong_arguments(*command, invocation.arguments);
         return run_command(invocation);
       }
     catch (const std::exception &e)

@@ -3,6 +3,7 @@
 #include <cdea/base/run_control.h>
 #include <cdea/commands/command.h>
 
+#include <algorithm>
 #include <functional>
 #include <iostream>
 #include <sstream>
@@ -42,6 +43,14 @@ namespace cdea
       return list;
     }
 
+    /// The functions of the Python module are the commands' names with '_'
+    /// for '-' (frequency-sweep: cdea.frequency_sweep()).
+    std::string python_names(std::string list)
+    {
+      std::replace(list.begin(), list.end(), '-', '_');
+      return list;
+    }
+
     /// What the rows' flags say, for the commands that read a parameter file.
     std::string flag_notes()
     {
@@ -54,12 +63,13 @@ namespace cdea
           << names([](const Command &c) { return c.ranks == Ranks::all; })
           << " (the ranks share the work);\nserial jobs, refused on more than one rank: "
           << names([](const Command &c) { return c.ranks == Ranks::one; }) << ".\n"
-          << "Stopped cleanly by SIGINT, SIGTERM, SIGHUP (exit 2, results so far written):\n  "
+          << "Stopped cleanly by SIGINT, SIGTERM, SIGHUP (exit 2; the steps, map rows or\n"
+          << "frequencies done are written, beside an older result as <stem>.partial.h5):\n  "
           << names([](const Command &c) { return c.has(stops_on_signals); }) << ".\n"
           << "Time runs (Time/Enabled = true): "
           << names([](const Command &c) { return c.has(time_runs); }) << ".\n"
           << "In Python (import cdea, doc/python.md): "
-          << names([](const Command &c) { return c.has(in_python); }) << ".\n";
+          << python_names(names([](const Command &c) { return c.has(in_python); })) << ".\n";
       return out.str();
     }
 
@@ -88,9 +98,19 @@ namespace cdea
         << flag_notes() << '\n'
         << "Exit codes: 0 success; 1 bad input or output not writable (nothing written);\n"
            "2 the run stopped before the end of its voltage path, was interrupted\n"
-           "(SIGINT, SIGTERM) or could not write all its steps (the messages say where\n"
-           "the converged steps are).\n"
+           "(SIGINT, SIGTERM, SIGHUP) or could not write all its steps (the messages\n"
+           "say where the converged steps are).\n"
            "See doc/usage.md for every parameter and the output layout.\n";
+    return out.str();
+  }
+
+  std::string command_usage(const Command &command)
+  {
+    std::ostringstream out;
+    for (std::size_t i = 0; i < command.forms.size(); ++i)
+      add_form(out, command.name, command.forms[i], command.help.at(i));
+    if (command.has(reads_parameters))
+      out << "--set 'Subsection/Entry=value' after FILE.prm sets that entry (repeatable).\n";
     return out.str();
   }
 

@@ -119,6 +119,9 @@ namespace cdea
   /// The text of `cdea --help`, made from the table.
   std::string usage_text();
 
+  /// The lines of `cdea --help` about @p command (`cdea run --help`).
+  std::string command_usage(const Command &command);
+
   /// The whole command line after the program's name: the command, its
   /// arguments and --set overrides. Returns the exit code.
   int run_command_line(const std::vector<std::string> &words);
