@@ -87,7 +87,7 @@ expect "'#' in an included name" 1 "in parameter file 'named.prm' (included from
   "$exe" run main.prm
 printf 'subsection Loading\n  set Masss (g) = 2\nend\n' > typo.prm
 printf '# one\n# two\ninclude typo.prm\n' > outer.prm
-expect "an error in an included file" 1 "in parameter file 'typo.prm' (included from outer.prm line 3): Line <2> of file <typo.prm>: No entry with name <Masss (g)>" \
+expect "an error in an included file" 1 "in parameter file 'typo.prm' (included from outer.prm line 3): line 2: subsection Loading has no entry 'Masss (g)' (cdea print-parameters lists every parameter)" \
   "$exe" run outer.prm
 printf 'subsection Loading\n  include mass.prm\nend\n' > sub.prm
 printf 'set Mass (g) = 300\r\n' > mass.prm

@@ -392,10 +392,60 @@ namespace cdea
     }
   } // namespace
 
+  namespace
+  {
+    /// "Loading/" (or "" at the top): the subsections open before @p line.
+    std::string subsection_path_at(const std::string &text, const unsigned int line)
+    {
+      std::vector<Open> open;
+      for (const Line &l : lines_of(text))
+        {
+          if (l.number >= line)
+            break;
+          if (const std::string sub = opened(l); !sub.empty())
+            open.push_back({sub, l.number});
+          else if (is_end(l) && !open.empty())
+            open.pop_back();
+        }
+      return open.empty() ? "" : path_of(open) + "/";
+    }
+
+    /// The bound of a deal.II number pattern, or "" where there is none
+    /// (MAX_DOUBLE, or an int's extreme).
+    std::string bound(const std::string &text)
+    {
+      if (text.find("MAX_DOUBLE") != std::string::npos)
+        return "";
+      const std::string digits = text.substr(text[0] == '-' ? 1 : 0);
+      return digits == "2147483647" || digits == "2147483648" ? "" : text;
+    }
+
+    /// What a value of the pattern [Double 0...1 (inclusive)] or [Integer
+    /// range 1...64 (inclusive)] must be, in words: "a number from 0 to 1".
+    std::string pattern_in_words(const std::string &pattern)
+    {
+      const bool  integer = pattern.rfind("Integer", 0) == 0;
+      std::string what    = integer ? "a whole number" : "a number";
+      const auto  dots    = pattern.find("...");
+      if (dots == std::string::npos)
+        return what;
+      const auto        low_begin = pattern.rfind(' ', dots) + 1;
+      const auto        high_end  = pattern.find_first_of(" ]", dots);
+      const std::string low  = bound(pattern.substr(low_begin, dots - low_begin));
+      const std::string high = bound(pattern.substr(dots + 3, high_end - dots - 3));
+      if (!low.empty() && !high.empty())
+        return what + " from " + low + " to " + high;
+      if (!low.empty())
+        return what + " >= " + low;
+      return high.empty() ? what : what + " <= " + high;
+    }
+  } // namespace
+
   std::string explain_parse_error(const PrmText &t, const std::string &message)
   {
     // deal.II: "Line <N> of file <F>: The entry value V for the entry named E
-    // does not match the given pattern: [Double ...]", N a line of t.text.
+    // does not match the given pattern: [Double ...]", or "... No entry with
+    // name <E> was declared in the current subsection.", N a line of t.text.
     std::string number, file, value, entry;
     std::size_t at = 0;
     if (message.rfind("Line <", 0) != 0 || !between(message, at, "Line <", ">", number) ||
@@ -406,36 +456,37 @@ namespace cdea
     const PrmText::Origin origin = line >= 1 && line <= t.origins.size() ?
                                      t.origins[line - 1] :
                                      PrmText::Origin{0, line};
-    const std::string     where  = t.files[origin.file];
-    const std::string     rest   = message.substr(at);
+    const std::string where = t.files[origin.file] + "line " + std::to_string(origin.line) + ": ";
+    const std::string rest  = message.substr(at);
+    const std::string path  = subsection_path_at(t.text, line);
+    if (std::size_t k = at; between(message, k, "No entry with name <", "> was declared", entry))
+      return where + (path.empty() ? "there is no entry '" + entry + "' outside a subsection" :
+                                     "subsection " + path.substr(0, path.size() - 1) +
+                                       " has no entry '" + entry + "'") +
+             " (cdea print-parameters lists every parameter)";
     if (!between(message, at, "The entry value ", " for the entry named ", value) ||
         !between(message, at, "", " does not match the given pattern: [", entry) ||
-        (message.compare(at, 6, "Double") != 0 && message.compare(at, 7, "Integer") != 0) ||
-        !not_finite(value))
-      return where + "Line <" + std::to_string(origin.line) + "> of file <" +
+        (message.compare(at, 6, "Double") != 0 && message.compare(at, 7, "Integer") != 0))
+      return t.files[origin.file] + "Line <" + std::to_string(origin.line) + "> of file <" +
              t.names[origin.file] + ">: " + rest;
-    std::vector<Open> open;
-    for (const Line &l : lines_of(t.text))
-      {
-        if (l.number >= line)
-          break;
-        if (const std::string sub = opened(l); !sub.empty())
-          open.push_back({sub, l.number});
-        else if (is_end(l) && !open.empty())
-          open.pop_back();
-      }
-    return where + "line " + std::to_string(origin.line) + ": " + path_of(open) +
-           (open.empty() ? "" : "/") + entry + " must be a finite number, got '" + value + "'";
+    if (not_finite(value))
+      return where + path + entry + " must be a finite number, got '" + value + "'";
+    return where + path + entry + " must be " + pattern_in_words(message.substr(at)) +
+           ", got '" + value + "'";
   }
 
   std::string explain_override_error(const std::string &key, const std::string &value,
                                      const std::string &message)
   {
-    const bool number = message.find("given pattern <[Double") != std::string::npos ||
-                        message.find("given pattern <[Integer") != std::string::npos;
-    if (!number || !not_finite(value))
+    const auto pattern = message.find("given pattern <[");
+    if (pattern == std::string::npos ||
+        (message.compare(pattern + 16, 6, "Double") != 0 &&
+         message.compare(pattern + 16, 7, "Integer") != 0))
       return "";
-    return key + " must be a finite number, got '" + value + "'";
+    if (not_finite(value))
+      return key + " must be a finite number, got '" + value + "'";
+    return key + " must be " + pattern_in_words(message.substr(pattern + 16)) + ", got '" +
+           value + "'";
   }
 
   void check_override_value(const std::string &key, const std::string &value)
