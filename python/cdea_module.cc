@@ -2,7 +2,7 @@
 // shoot` and `cdea sweep` in-process (analysis/session.h), their results as numpy
 // arrays with the names and units of the results files
 // (model/output_fields.h for /summary and /steps, the map's product for
-// the map), written to HDF5 only when asked. Bad input raises ValueError with the command line's message. MPI is
+// the map), written to HDF5 only when asked. Bad input raises ValueError with the command line's message (a missing file FileNotFoundError). MPI is
 // not started (only the Trilinos KLU solver starts it, when it needs it).
 // Documented in doc/python.md.
 
@@ -519,6 +519,10 @@ PYBIND11_MODULE(cdea, m)
       {
         if (p)
           std::rethrow_exception(p);
+      }
+    catch (const MissingFileError &e)
+      {
+        PyErr_SetString(PyExc_FileNotFoundError, e.what());
       }
     catch (const InputError &e)
       {

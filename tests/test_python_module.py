@@ -241,7 +241,7 @@ def test_bad_overrides_name_the_key():
         assert str(raised.value).startswith(start), str(raised.value)
     with pytest.raises(TypeError, match="override 'Loading/Mass \\(g\\)'"):
         cdea.run(default, overrides={"Loading/Mass (g)": {"not": "a value"}})
-    with pytest.raises(ValueError) as raised:
+    with pytest.raises(FileNotFoundError) as raised:
         cdea.run("no-such-file.prm")
     assert str(raised.value) == ("cannot read parameter file 'no-such-file.prm': it does not "
                                  "exist, is not a regular file or is not readable")

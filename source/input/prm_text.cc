@@ -135,7 +135,7 @@ namespace cdea
     if (read.ok)
       return read.bytes;
     if (read.error == "it does not exist")
-      throw InputError("cannot read parameter file '" + path +
+      throw MissingFileError("cannot read parameter file '" + path +
                        "': it does not exist, is not a regular file or is not readable");
     throw InputError("cannot read parameter file '" + path + "': " + read.error);
   }

@@ -18,6 +18,14 @@ namespace cdea
     explicit InputError(const std::string &message);
   };
 
+  /// An input file that does not exist (Python: FileNotFoundError, a
+  /// command: the same message and exit code as any InputError).
+  class MissingFileError : public InputError
+  {
+  public:
+    using InputError::InputError;
+  };
+
   /// @p message with every word longer than 80 characters cut to its first
   /// 60 and a count, and the whole kept below about 1500 characters: a
   /// 1 MB value in the input is not echoed back whole.
