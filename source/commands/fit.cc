@@ -1,12 +1,15 @@
 // `cdea fit FILE.prm DATA.csv`: the calibration of subsection Calibration to
-// the measured displacements (design/fit.h), each iteration printed, the
-// fitted values with their errors and correlations, the residuals, and the
-// files <Base name>_fit.h5 and <Base name>_fit.prm. 0 converged, 2 not
-// converged or interrupted (the values reached are written), 1 bad input.
+// the measured displacements (design/fit.h; DMA tables and creep curves in
+// commands/fit_viscous.cc, material tests in commands/fit_material.cc),
+// each iteration printed, the fitted values with their errors and
+// correlations, the residuals, and the files <Base name>_fit.h5 and
+// <Base name>_fit.prm. 0 converged, 2 not converged or interrupted (the
+// values reached are written), 1 bad input.
 
 #include <cdea/base/format.h>
 #include <cdea/base/run_control.h>
 #include <cdea/commands/command.h>
+#include <cdea/commands/fit_material.h>
 #include <cdea/commands/fit_viscous.h>
 #include <cdea/design/fit.h>
 #include <cdea/input/validation.h>
@@ -49,6 +52,13 @@ namespace cdea
         const std::string  prm_path = p.output.directory + "/" + p.output.base_name + "_fit.prm";
         if (const std::string why = refused_names(prm_path); !why.empty())
           throw InputError("cannot write '" + prm_path + "': " + why);
+        if (material_test_files(invocation.arguments))
+          {
+            // Homogeneous material tests, one or several, fitted jointly.
+            viscous = material_fit_job();
+            viscous->check(invocation);
+            return;
+          }
         if (const FitDataKind kind = fit_data_kind(data_file);
             kind != FitDataKind::displacement_voltage)
           {
@@ -100,7 +110,7 @@ namespace cdea
       Scene           base;
       FitSettings     settings;
       CalibrationData data;
-      std::unique_ptr<ViscousFitJob> viscous; ///< a DMA or creep fit
+      std::unique_ptr<ViscousFitJob> viscous; ///< a DMA, creep or material-test fit
 
       void print_banner(const std::string &data_file) const
       {

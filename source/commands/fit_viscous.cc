@@ -107,25 +107,7 @@ namespace cdea
                   << (kind == FitDataKind::dma ? "cost (kPa^2)" : "cost (mm^2)") << "  parameters\n";
       }
 
-      void print_values(const FitResult &r) const
-      {
-        std::cout << "\n" << (r.converged ? "Converged" : "NOT converged") << ": " << r.status
-                  << "\n" << std::left << std::setw(30) << "parameter" << std::right
-                  << std::setw(16) << "start" << std::setw(16) << "fitted" << std::setw(16)
-                  << "std. error" << std::setw(10) << "rel." << '\n';
-        const std::size_t K = settings.free.size();
-        for (std::size_t j = 0; j < K; ++j)
-          {
-            const SceneParameter &f = settings.free[j];
-            const double          e = shown(f, r.standard_errors[j]), v = shown(f, r.values[j]);
-            std::cout << std::left << std::setw(30) << shown_label(f) << std::right
-                      << std::setw(16) << format_number(shown(f, r.initial[j]), 8)
-                      << std::setw(16) << format_number(v, 8) << std::setw(16)
-                      << format_number(e, 3) << std::setw(10) << format_number(e / std::abs(v), 2)
-                      << '\n';
-          }
-        print_correlation(settings.free, r, 28);
-      }
+      void print_values(const FitResult &r) const { print_fitted_values(settings.free, r); }
 
       void print_residuals(const FitResult &r, const Product &product) const
       {
@@ -229,6 +211,24 @@ namespace cdea
       }
     std::cerr << "cdea: " << status << " (" << hint << "nothing was written)\n";
     return exit_input_error;
+  }
+
+  void print_fitted_values(const std::vector<SceneParameter> &free, const FitResult &r)
+  {
+    std::cout << "\n" << (r.converged ? "Converged" : "NOT converged") << ": " << r.status
+              << "\n" << std::left << std::setw(30) << "parameter" << std::right << std::setw(16)
+              << "start" << std::setw(16) << "fitted" << std::setw(16) << "std. error"
+              << std::setw(10) << "rel." << '\n';
+    for (std::size_t j = 0; j < free.size(); ++j)
+      {
+        const SceneParameter &f = free[j];
+        const double          e = shown(f, r.standard_errors[j]), v = shown(f, r.values[j]);
+        std::cout << std::left << std::setw(30) << shown_label(f) << std::right << std::setw(16)
+                  << format_number(shown(f, r.initial[j]), 8) << std::setw(16)
+                  << format_number(v, 8) << std::setw(16) << format_number(e, 3) << std::setw(10)
+                  << format_number(e / std::abs(v), 2) << '\n';
+      }
+    print_correlation(free, r, 28);
   }
 
   void print_correlation(const std::vector<SceneParameter> &free, const FitResult &r,

@@ -9,6 +9,7 @@
 #include <cdea/design/material_test_data.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <sstream>
 
@@ -124,6 +125,52 @@ namespace cdea
   {
     std::istringstream in(read_data_file(file));
     return is_material_test(in);
+  }
+
+  double material_test_weight(std::istream &in, const std::string &file)
+  {
+    double       weight = 1.;
+    unsigned int given  = 0; // the line of the weight
+    std::string  line;
+    for (unsigned int number = 1; std::getline(in, line); ++number)
+      {
+        if (csv_content(line, number).find_first_not_of(" \t") != std::string::npos)
+          break; // the header line: the top of the file ends
+        const std::size_t hash = line.find('#');
+        if (hash == std::string::npos)
+          continue;
+        std::istringstream words(line.substr(hash + 1));
+        std::string        key, rest;
+        if (!(words >> key) || key != "weight")
+          continue;
+        const std::string where = file + ", line " + std::to_string(number) + ": '# weight'";
+        if (given != 0)
+          throw InputError(where + " given twice (also on line " + std::to_string(given) + ")");
+        given = number;
+        std::getline(words, rest);
+        rest = trim_blanks(rest);
+        if (!rest.empty() && rest.back() == '\r')
+          rest = trim_blanks(rest.substr(0, rest.size() - 1));
+        std::size_t used = 0;
+        try
+          {
+            weight = std::stod(rest, &used);
+          }
+        catch (const std::exception &)
+          {
+            used = 0;
+          }
+        if (rest.empty() || used != rest.size() || !(weight > 0.) || !std::isfinite(weight))
+          throw InputError(where + " must be followed by one number above 0 (the file's weight "
+                                   "in a joint fit), got '" + rest + "'");
+      }
+    return weight;
+  }
+
+  double material_test_weight(const std::string &file)
+  {
+    std::istringstream in(read_data_file(file));
+    return material_test_weight(in, file);
   }
 
   MaterialTestData read_material_test(const std::string &file, const TestSpecimen &specimen)

@@ -28,6 +28,11 @@ namespace cdea
   struct FitResult;
   struct SceneParameter;
 
+  /// How the fit ended, and per free parameter its start, fitted value,
+  /// standard error and relative error (network A's modulus in kPa, the
+  /// others in SI), then the correlations.
+  void print_fitted_values(const std::vector<SceneParameter> &free, const FitResult &r);
+
   /// The fit's correlation matrix, a row per free parameter labelled in a
   /// column @p label_width wide (nothing for fewer than two parameters).
   void print_correlation(const std::vector<SceneParameter> &free, const FitResult &r,

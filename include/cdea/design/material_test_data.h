@@ -62,6 +62,12 @@ namespace cdea
   /// The same for file @p file (InputError if it cannot be read).
   bool is_material_test(const std::string &file);
 
+  /// The file's weight in a joint fit: a comment line "# weight W" (W a
+  /// number above 0) above the header line; 1 without. InputError naming
+  /// the file and line for a bad or second weight line.
+  double material_test_weight(std::istream &in, const std::string &file);
+  double material_test_weight(const std::string &file);
+
   /// Reads one test (a regular file of at most 64 MB, at most 1e5 rows):
   /// times from 0, increasing strictly; stretches at least 1 (tension;
   /// raw: displacements from 0); stresses any number; weights above 0.
