@@ -133,27 +133,27 @@ namespace cdea
                   << "  parameters (SI)\n";
       }
 
-      /// Per file: fitted or predicted, kind, weight, samples, rms (kPa),
-      /// largest |stress| (kPa) and rms relative to it.
+      /// Per file: fitted or predicted, weight, samples, rms (kPa), largest
+      /// |stress| (kPa), rms relative to it, and the kind.
       static void print_files(const std::vector<MaterialTestOutcome> &outcomes)
       {
         std::size_t width = 4;
         for (const MaterialTestOutcome &o : outcomes)
           width = std::max(width, o.data->name.size());
-        std::cout << std::left << std::setw(int(width) + 2) << "file" << std::setw(11) << "role"
-                  << std::setw(13) << "kind" << std::right << std::setw(8) << "weight"
-                  << std::setw(9) << "samples" << std::setw(14) << "rms (kPa)" << std::setw(16)
-                  << "largest (kPa)" << std::setw(11) << "relative" << '\n';
+        std::cout << std::left << std::setw(int(width) + 2) << "file" << std::setw(9) << "role"
+                  << std::right << std::setw(8) << "weight" << std::setw(9) << "samples"
+                  << std::setw(14) << "rms (kPa)" << std::setw(16) << "largest (kPa)"
+                  << std::setw(11) << "relative" << "  kind\n";
         for (const MaterialTestOutcome &o : outcomes)
           {
             const TestMeasures &m = o.measures;
-            std::cout << std::left << std::setw(int(width) + 2) << o.data->name << std::setw(11)
-                      << (o.fitted ? "fitted" : "predicted") << std::setw(13)
-                      << test_kind_name(o.data->history.kind) << std::right << std::setw(8)
+            std::cout << std::left << std::setw(int(width) + 2) << o.data->name << std::setw(9)
+                      << (o.fitted ? "fitted" : "predicted") << std::right << std::setw(8)
                       << format_number(o.weight, 4) << std::setw(9) << m.samples << std::setw(14)
                       << format_number(units::kPa.from_si(m.rms), 4) << std::setw(16)
                       << format_number(units::kPa.from_si(m.largest), 5) << std::setw(11)
-                      << format_number(m.relative, 3) << '\n';
+                      << format_number(m.relative, 3) << "  "
+                      << test_kind_name(o.data->history.kind) << '\n';
           }
       }
 
