@@ -12,6 +12,7 @@
 #    the file's largest |stress|, the h5 rows per file and per sample;
 #    a '# weight 4' line read as the file's weight, which fits as the file
 #    given four times;
+#    SIGINT during a long fit: exit 2, both files written;
 # 3. bad input (a stretch below 1, a bad weight line, a mix with a creep
 #    curve, --predict with other data): exit 1, the file, line and column,
 #    nothing written.
@@ -94,6 +95,22 @@ a, b = (h5py.File(x, "r").attrs["fitted_values"] for x in sys.argv[1:])
 print("   weight 4:", a, " 4 copies:", b)
 assert np.allclose(a, b, rtol=1e-6, atol=0)
 PY
+
+# SIGINT during a long fit (two 60000-sample files): exit 2, the values
+# reached written to the fit file and the parameter file together.
+make uniaxial 3 0.02 100 0.005 0.1 1 > long1.csv && cp long1.csv long2.csv
+sed 's/Base name = noisy/Base name = interrupted/' noisy.prm > interrupted.prm
+set -m # a background job of a script ignores SIGINT without job control
+"$exe" fit interrupted.prm long1.csv long2.csv > interrupted.txt 2> interrupted_err.txt &
+pid=$!
+for _ in $(seq 600); do grep -qE "^ +0 " interrupted.txt && break; sleep 0.1; done
+kill -INT $pid
+wait $pid
+rc=$?
+set +m
+[ $rc -eq 2 ] && grep -q "interrupted by SIGINT" interrupted_err.txt && [ -s out/interrupted_fit.h5 ] \
+  && [ -s out/interrupted_fit.prm ] && ok "SIGINT: exit 2, $(head -c 100 interrupted_err.txt)" \
+  || fail "SIGINT: exit $rc, $(cat interrupted_err.txt), $(ls out)"
 
 # 3. Bad input: exit 1, the place named, nothing written.
 refused() { # WHAT MESSAGE FILES...
