@@ -83,8 +83,10 @@ namespace
     std::mt19937                     random(seed);
     std::normal_distribution<double> gaussian(0., noise);
     std::cout << "# Made by material_history (tests/material_history.cc):";
-    for (int i = 1; i < argc; ++i)
-      std::cout << ' ' << argv[i];
+    for (int i = 1; i < argc; ++i) // quoted where the shell needs it
+      std::cout << ' ' << (std::string(argv[i]).find(' ') != std::string::npos ?
+                             "'" + std::string(argv[i]) + "'" :
+                             std::string(argv[i]));
     std::cout << "\n# the material point of the file's film, noise " << format_number(noise)
               << " kPa (seed " << seed << ")\ntime_s, " << kind_text << "_stretch, "
               << "nominal_stress_kPa\n";
