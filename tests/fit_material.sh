@@ -6,7 +6,8 @@
 # from prm/fit-material.prm's start (15 kPa, 10 kPa, 1 s), a pure-shear one
 # predicted:
 # 1. exact data: the constants recovered to 1e-6, every file's printed rms
-#    (fitted and predicted) below 1e-6 kPa, the files written;
+#    (fitted and predicted) below 1e-6 kPa, the files written; the uniaxial
+#    test as raw machine columns through the specimen entries fits the same;
 # 2. 0.1 kPa of noise: the constants within 3 standard errors, each fitted
 #    file's printed rms 0.1 kPa within 15 %, its relative rms the rms over
 #    the file's largest |stress|, the h5 rows per file and per sample;
@@ -53,6 +54,20 @@ PY
 grep -qE "set Branch relaxation times \(s\) *= (5|4\.99999|5\.00000)" out/fit-material_fit.prm \
   && ok "the parameter file holds the fitted relaxation time" \
   || fail "fit.prm: $(grep 'Branch relaxation' out/fit-material_fit.prm)"
+
+# The uniaxial test as a machine's raw columns through the specimen
+# (gauge 20 mm, width 10 mm, thickness 1 mm: displacement 20 (L - 1) mm,
+# force 0.01 s1/kPa N): the same constants.
+awk -F', ' '/^[0-9]/ { printf "%s, %.12g, %.12g\n", $1, 20 * ($2 - 1), 0.01 * $3; next }
+  /^time_s/ { print "time_s, displacement_mm, force_N"; next } { print }' u.csv > raw.csv
+specimen=(--set "Calibration/Specimen gauge length (mm)=20" --set "Calibration/Specimen width (mm)=10"
+          --set "Calibration/Specimen thickness (mm)=1" --set "Output/Base name=raw")
+"$exe" fit fit.prm raw.csv e.csv "${specimen[@]}" > raw.txt 2>&1 \
+  && "$PYTHON" - out/fit-material_fit.h5 out/raw_fit.h5 <<'PY' && ok "raw columns through the specimen: the same constants" || fail "raw columns: $(tail -3 raw.txt)"
+import sys, h5py, numpy as np
+a, b = (h5py.File(x, "r").attrs["fitted_values"] for x in sys.argv[1:])
+assert np.allclose(a, b, rtol=1e-7, atol=0), (a, b)
+PY
 
 # 2. Noisy data, the equibiaxial file weighted 4.
 make uniaxial 3 0.05 20 0.25 0.1 1 > un.csv && { echo "# weight 4"; make equibiaxial 2 0.02 20 0.25 0.1 2; } > en.csv
@@ -130,4 +145,5 @@ printf 'time_s, V1_kV, displacement_mm\n0, 0, 0\n1, 1, 0.5\n' > creep.csv
 refused "a mix with a creep curve" "creep.csv holds a creep curve, the other files material tests" u.csv creep.csv
 refused "--predict with other data" "creep.csv holds a creep curve: several data files and --predict are for material tests" creep.csv --predict creep.csv
 refused "--predict without files" "--predict needs at least one data file after it" u.csv --predict
+refused "raw columns without the specimen" "raw.csv: raw machine columns (time_s, displacement_mm, force_N) need the specimen" raw.csv e.csv
 finish

@@ -14,7 +14,6 @@
 #include <cdea/design/fit.h>
 #include <cdea/input/validation.h>
 #include <cdea/model/quantities_fit.h>
-#include <cdea/output/product_file.h>
 #include <cdea/output/product_table.h>
 
 #include <chrono>
@@ -103,7 +102,7 @@ namespace cdea
         std::cout << c.result.iterations << " iterations, " << c.result.evaluations
                   << " evaluations, " << c.solves << " equilibrium solves (" << c.ramps
                   << " ramps), " << std::setprecision(3) << seconds << " s\n";
-        return write_and_report(invocation, c, product);
+        return write_fit_files(invocation, base, settings.free, c.result, product);
       }
 
     private:
@@ -174,26 +173,6 @@ namespace cdea
                   << format_number(product.root().at(rms_residual).value(0), 4)
                   << " mm, condition number of the scaled Jacobian "
                   << format_number(r.condition, 3) << '\n';
-      }
-
-      /// The fit file and the parameter file with the fitted values, and how
-      /// the fit ended.
-      int write_and_report(const Invocation &invocation, const Calibrated &c,
-                           const Product &product) const
-      {
-        const Parameters  &p        = invocation.parameters;
-        const FitResult   &r        = c.result;
-        const std::string &h5_path  = invocation.output.path;
-        const std::string  prm_path = p.output.directory + "/" + p.output.base_name + "_fit.prm";
-        const auto write = [&] {
-          write_product_file(product, h5_path);
-          if (r.fitted.size() > 0)
-            write_changed_parameters(invocation.input, prm_path,
-                                     fitted_entries(base, settings.free, r.values),
-                                     "# Written by cdea fit: the parameter file with the "
-                                     "fitted values.\n");
-        };
-        return finish_fit(write, h5_path, prm_path, r);
       }
     };
   } // namespace

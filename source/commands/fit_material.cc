@@ -12,7 +12,6 @@
 #include <cdea/design/fit_data.h>
 #include <cdea/design/material_fit.h>
 #include <cdea/input/validation.h>
-#include <cdea/output/product_file.h>
 
 #include <algorithm>
 #include <chrono>
@@ -60,13 +59,14 @@ namespace cdea
         const auto [fit, predict] = fit_and_predict_files(invocation.arguments);
         base                      = p.scene();
         settings.fit              = free_parameter_settings(p);
+        const TestSpecimen specimen = test_specimen(p);
         for (const std::string &file : fit)
           {
-            fitted.push_back(read_material_test(file));
+            fitted.push_back(read_material_test(file, specimen));
             settings.test_weights.push_back(material_test_weight(file));
           }
         for (const std::string &file : predict)
-          predicted.push_back(read_material_test(file));
+          predicted.push_back(read_material_test(file, specimen));
         std::size_t samples = 0;
         for (const MaterialTestData &t : fitted)
           samples += t.size();
@@ -109,7 +109,7 @@ namespace cdea
                   << " s\n";
         const Product product =
           material_fit_product(invocation.parameter_text, settings.fit, r, outcomes);
-        return write_and_report(invocation, r.fit, product);
+        return write_fit_files(invocation, base, settings.fit.free, r.fit, product);
       }
 
     private:
@@ -155,22 +155,6 @@ namespace cdea
                       << format_number(m.relative, 3) << "  "
                       << test_kind_name(o.data->history.kind) << '\n';
           }
-      }
-
-      int write_and_report(const Invocation &invocation, const FitResult &r,
-                           const Product &product) const
-      {
-        const Parameters  &p        = invocation.parameters;
-        const std::string &h5_path  = invocation.output.path;
-        const std::string  prm_path = p.output.directory + "/" + p.output.base_name + "_fit.prm";
-        const auto write = [&] {
-          write_product_file(product, h5_path);
-          write_changed_parameters(invocation.input, prm_path,
-                                   fitted_entries(base, settings.fit.free, r.values),
-                                   "# Written by cdea fit: the parameter file with the "
-                                   "fitted values.\n");
-        };
-        return finish_fit(write, h5_path, prm_path, r);
       }
     };
 

@@ -144,18 +144,8 @@ namespace cdea
       int write_and_report(const Invocation &invocation, const FitResult &r,
                            const Product &product) const
       {
-        const Parameters  &p        = invocation.parameters;
-        const std::string &h5_path  = invocation.output.path;
-        const std::string  prm_path = p.output.directory + "/" + p.output.base_name + "_fit.prm";
-        const auto write = [&] {
-          write_product_file(product, h5_path);
-          if (r.fitted.size() > 0)
-            write_changed_parameters(invocation.input, prm_path,
-                                     fitted_entries(p.scene(), settings.free, r.values),
-                                     "# Written by cdea fit: the parameter file with the "
-                                     "fitted values.\n");
-        };
-        return finish_fit(write, h5_path, prm_path, r);
+        return write_fit_files(invocation, invocation.parameters.scene(), settings.free, r,
+                               product);
       }
     };
   } // namespace
@@ -163,6 +153,23 @@ namespace cdea
   std::unique_ptr<ViscousFitJob> viscous_fit_job(const FitDataKind kind)
   {
     return std::make_unique<ViscousFit>(kind);
+  }
+
+  int write_fit_files(const Invocation &invocation, const Scene &base,
+                      const std::vector<SceneParameter> &free, const FitResult &r,
+                      const Product &product)
+  {
+    const Parameters  &p        = invocation.parameters;
+    const std::string &h5_path  = invocation.output.path;
+    const std::string  prm_path = p.output.directory + "/" + p.output.base_name + "_fit.prm";
+    const auto write = [&] {
+      write_product_file(product, h5_path);
+      if (r.fitted.size() > 0)
+        write_changed_parameters(invocation.input, prm_path, fitted_entries(base, free, r.values),
+                                 "# Written by cdea fit: the parameter file with the "
+                                 "fitted values.\n");
+    };
+    return finish_fit(write, h5_path, prm_path, r);
   }
 
   int finish_fit(const std::function<void()> &write_results, const std::string &h5_path,

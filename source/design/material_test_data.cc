@@ -7,6 +7,7 @@
 #include <cdea/base/text.h>
 #include <cdea/design/fit_data.h>
 #include <cdea/design/material_test_data.h>
+#include <cdea/input/parameters.h>
 
 #include <algorithm>
 #include <cmath>
@@ -245,6 +246,31 @@ namespace cdea
     for (const auto &[entry, meaning] : specimen_sizes)
       prm.add_number(entry, "0", std::string(meaning) + " of raw machine data (0: not given).");
     prm.leave_subsection();
+  }
+
+  namespace
+  {
+    /// The specimen's entries as a subsection of the parameter file of its
+    /// own (after the Frequency sweep's 190), read by test_specimen().
+    struct SpecimenEntries
+    {
+      static constexpr const char *name = "Calibration/Specimen";
+      ParameterValues              values;
+      void                         declare(ParameterDeclarations &prm)
+      {
+        ParameterDeclarations entries;
+        declare_specimen_parameters(entries);
+        prm.append(entries, values);
+      }
+      void check() const { parse_specimen(values); }
+    };
+  } // namespace
+
+  CDEA_REGISTER_OWN_SUBSECTION(specimen, SpecimenEntries, 200)
+
+  TestSpecimen test_specimen(const Parameters &p)
+  {
+    return parse_specimen(p.subsection<SpecimenEntries>().values);
   }
 
   TestSpecimen parse_specimen(const ParameterValues &values)

@@ -24,6 +24,7 @@ namespace cdea
 {
   class ParameterDeclarations;
   class ParameterValues;
+  struct Parameters;
 
   /// The specimen of raw machine columns (SI); sizes 0: not given.
   struct TestSpecimen
@@ -42,6 +43,9 @@ namespace cdea
   /// The specimen from those entries, checked: InputError naming the entry
   /// and what is allowed (a test name, sizes from 0 to 1e4 mm).
   TestSpecimen parse_specimen(const ParameterValues &values);
+  /// The specimen of a parameter file: those entries, registered as a
+  /// subsection of its own (Parameters::subsection()), parsed.
+  TestSpecimen test_specimen(const Parameters &p);
 
   /// One test's history as measured.
   struct MaterialTestData
