@@ -8,6 +8,7 @@
 #include <cdea/design/fit_data.h>
 #include <cdea/design/material_test_data.h>
 #include <cdea/input/parameters.h>
+#include <cdea/input/specimen_entries.h>
 
 #include <algorithm>
 #include <cmath>
@@ -227,46 +228,10 @@ namespace cdea
     return d;
   }
 
-  namespace
-  {
-    /// The specimen's size entries and what each is.
-    const std::pair<const char *, const char *> specimen_sizes[3] = {
-      {"Specimen gauge length (mm)",
-       "Undeformed length between the grips: stretch = 1 + displacement / gauge length"},
-      {"Specimen width (mm)", "Undeformed width of the loaded cross-section"},
-      {"Specimen thickness (mm)", "Undeformed thickness: nominal stress = force / (width thickness)"}};
-  } // namespace
-
   void declare_specimen_parameters(ParameterDeclarations &prm)
   {
-    prm.enter_subsection("Calibration");
-    prm.add_text("Specimen test", "uniaxial",
-                 "The test of raw machine data (time_s, displacement_mm, force_N): "
-                 "uniaxial, equibiaxial or pure shear.");
-    for (const auto &[entry, meaning] : specimen_sizes)
-      prm.add_number(entry, "0", std::string(meaning) + " of raw machine data (0: not given).");
-    prm.leave_subsection();
+    SpecimenEntries::declare_entries(prm);
   }
-
-  namespace
-  {
-    /// The specimen's entries as a subsection of the parameter file of its
-    /// own (after the Frequency sweep's 190), read by test_specimen().
-    struct SpecimenEntries
-    {
-      static constexpr const char *name = "Calibration/Specimen";
-      ParameterValues              values;
-      void                         declare(ParameterDeclarations &prm)
-      {
-        ParameterDeclarations entries;
-        declare_specimen_parameters(entries);
-        prm.append(entries, values);
-      }
-      void check() const { parse_specimen(values); }
-    };
-  } // namespace
-
-  CDEA_REGISTER_OWN_SUBSECTION(specimen, SpecimenEntries, 200)
 
   TestSpecimen test_specimen(const Parameters &p)
   {
@@ -291,9 +256,9 @@ namespace cdea
                          " must be from 0 (not given) to 1e4 mm, got " + format_number(v));
       return 1e-3 * v;
     };
-    s.gauge_length = size(specimen_sizes[0].first);
-    s.width        = size(specimen_sizes[1].first);
-    s.thickness    = size(specimen_sizes[2].first);
+    s.gauge_length = size("Specimen gauge length (mm)");
+    s.width        = size("Specimen width (mm)");
+    s.thickness    = size("Specimen thickness (mm)");
     return s;
   }
 } // namespace cdea
