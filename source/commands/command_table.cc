@@ -65,12 +65,15 @@ namespace cdea
         "wrinkling (subsection Optimization), <Base name>_optimum.h5"},
        reads_parameters | stops_on_signals | in_python, Ranks::all, Output::claimed_first,
        optimize_job},
-      {"fit", {"FILE.prm DATA.csv"},
+      {"fit", {"FILE.prm DATA.csv ..."},
        {"calibrate material constants to measured displacements\n"
         "(subsection Calibration), <Base name>_fit.h5; the CSV\n"
         "header tells the data: V1_kV.. + displacement_mm points,\n"
         "time_s + V1_kV.. + displacement_mm a creep curve,\n"
-        "frequency_Hz + storage_kPa + loss_kPa a DMA table"},
+        "frequency_Hz + storage_kPa + loss_kPa a DMA table;\n"
+        "material tests (time_s + uniaxial_stretch, equibiaxial_\n"
+        "stretch or pure_shear_stretch + nominal_stress_kPa):\n"
+        "several files fitted jointly, --predict C.csv ... evaluated"},
        reads_parameters | stops_on_signals | in_python, Ranks::one, Output::claimed_first,
        fit_job},
       {"chart", {"FILE.prm"},

@@ -1,17 +1,19 @@
 // `cdea fit FILE.prm DATA.csv`: the calibration of subsection Calibration to
-// the measured displacements (design/fit.h), each iteration printed, the
-// fitted values with their errors and correlations, the residuals, and the
-// files <Base name>_fit.h5 and <Base name>_fit.prm. 0 converged, 2 not
-// converged or interrupted (the values reached are written), 1 bad input.
+// the measured displacements (design/fit.h; DMA tables and creep curves in
+// commands/fit_viscous.cc, material tests in commands/fit_material.cc),
+// each iteration printed, the fitted values with their errors and
+// correlations, the residuals, and the files <Base name>_fit.h5 and
+// <Base name>_fit.prm. 0 converged, 2 not converged or interrupted (the
+// values reached are written), 1 bad input.
 
 #include <cdea/base/format.h>
 #include <cdea/base/run_control.h>
 #include <cdea/commands/command.h>
+#include <cdea/commands/fit_material.h>
 #include <cdea/commands/fit_viscous.h>
 #include <cdea/design/fit.h>
 #include <cdea/input/validation.h>
 #include <cdea/model/quantities_fit.h>
-#include <cdea/output/product_file.h>
 #include <cdea/output/product_table.h>
 
 #include <chrono>
@@ -49,6 +51,13 @@ namespace cdea
         const std::string  prm_path = p.output.directory + "/" + p.output.base_name + "_fit.prm";
         if (const std::string why = refused_names(prm_path); !why.empty())
           throw InputError("cannot write '" + prm_path + "': " + why);
+        if (material_test_files(invocation.arguments))
+          {
+            // Homogeneous material tests, one or several, fitted jointly.
+            viscous = material_fit_job();
+            viscous->check(invocation);
+            return;
+          }
         if (const FitDataKind kind = fit_data_kind(data_file);
             kind != FitDataKind::displacement_voltage)
           {
@@ -93,14 +102,14 @@ namespace cdea
         std::cout << c.result.iterations << " iterations, " << c.result.evaluations
                   << " evaluations, " << c.solves << " equilibrium solves (" << c.ramps
                   << " ramps), " << std::setprecision(3) << seconds << " s\n";
-        return write_and_report(invocation, c, product);
+        return write_fit_files(invocation, base, settings.free, c.result, product);
       }
 
     private:
       Scene           base;
       FitSettings     settings;
       CalibrationData data;
-      std::unique_ptr<ViscousFitJob> viscous; ///< a DMA or creep fit
+      std::unique_ptr<ViscousFitJob> viscous; ///< a DMA, creep or material-test fit
 
       void print_banner(const std::string &data_file) const
       {
@@ -164,26 +173,6 @@ namespace cdea
                   << format_number(product.root().at(rms_residual).value(0), 4)
                   << " mm, condition number of the scaled Jacobian "
                   << format_number(r.condition, 3) << '\n';
-      }
-
-      /// The fit file and the parameter file with the fitted values, and how
-      /// the fit ended.
-      int write_and_report(const Invocation &invocation, const Calibrated &c,
-                           const Product &product) const
-      {
-        const Parameters  &p        = invocation.parameters;
-        const FitResult   &r        = c.result;
-        const std::string &h5_path  = invocation.output.path;
-        const std::string  prm_path = p.output.directory + "/" + p.output.base_name + "_fit.prm";
-        const auto write = [&] {
-          write_product_file(product, h5_path);
-          if (r.fitted.size() > 0)
-            write_changed_parameters(invocation.input, prm_path,
-                                     fitted_entries(base, settings.free, r.values),
-                                     "# Written by cdea fit: the parameter file with the "
-                                     "fitted values.\n");
-        };
-        return finish_fit(write, h5_path, prm_path, r);
       }
     };
   } // namespace

@@ -107,25 +107,7 @@ namespace cdea
                   << (kind == FitDataKind::dma ? "cost (kPa^2)" : "cost (mm^2)") << "  parameters\n";
       }
 
-      void print_values(const FitResult &r) const
-      {
-        std::cout << "\n" << (r.converged ? "Converged" : "NOT converged") << ": " << r.status
-                  << "\n" << std::left << std::setw(30) << "parameter" << std::right
-                  << std::setw(16) << "start" << std::setw(16) << "fitted" << std::setw(16)
-                  << "std. error" << std::setw(10) << "rel." << '\n';
-        const std::size_t K = settings.free.size();
-        for (std::size_t j = 0; j < K; ++j)
-          {
-            const SceneParameter &f = settings.free[j];
-            const double          e = shown(f, r.standard_errors[j]), v = shown(f, r.values[j]);
-            std::cout << std::left << std::setw(30) << shown_label(f) << std::right
-                      << std::setw(16) << format_number(shown(f, r.initial[j]), 8)
-                      << std::setw(16) << format_number(v, 8) << std::setw(16)
-                      << format_number(e, 3) << std::setw(10) << format_number(e / std::abs(v), 2)
-                      << '\n';
-          }
-        print_correlation(settings.free, r, 28);
-      }
+      void print_values(const FitResult &r) const { print_fitted_values(settings.free, r); }
 
       void print_residuals(const FitResult &r, const Product &product) const
       {
@@ -162,18 +144,8 @@ namespace cdea
       int write_and_report(const Invocation &invocation, const FitResult &r,
                            const Product &product) const
       {
-        const Parameters  &p        = invocation.parameters;
-        const std::string &h5_path  = invocation.output.path;
-        const std::string  prm_path = p.output.directory + "/" + p.output.base_name + "_fit.prm";
-        const auto write = [&] {
-          write_product_file(product, h5_path);
-          if (r.fitted.size() > 0)
-            write_changed_parameters(invocation.input, prm_path,
-                                     fitted_entries(p.scene(), settings.free, r.values),
-                                     "# Written by cdea fit: the parameter file with the "
-                                     "fitted values.\n");
-        };
-        return finish_fit(write, h5_path, prm_path, r);
+        return write_fit_files(invocation, invocation.parameters.scene(), settings.free, r,
+                               product);
       }
     };
   } // namespace
@@ -181,6 +153,23 @@ namespace cdea
   std::unique_ptr<ViscousFitJob> viscous_fit_job(const FitDataKind kind)
   {
     return std::make_unique<ViscousFit>(kind);
+  }
+
+  int write_fit_files(const Invocation &invocation, const Scene &base,
+                      const std::vector<SceneParameter> &free, const FitResult &r,
+                      const Product &product)
+  {
+    const Parameters  &p        = invocation.parameters;
+    const std::string &h5_path  = invocation.output.path;
+    const std::string  prm_path = p.output.directory + "/" + p.output.base_name + "_fit.prm";
+    const auto write = [&] {
+      write_product_file(product, h5_path);
+      if (r.fitted.size() > 0)
+        write_changed_parameters(invocation.input, prm_path, fitted_entries(base, free, r.values),
+                                 "# Written by cdea fit: the parameter file with the "
+                                 "fitted values.\n");
+    };
+    return finish_fit(write, h5_path, prm_path, r);
   }
 
   int finish_fit(const std::function<void()> &write_results, const std::string &h5_path,
@@ -229,6 +218,24 @@ namespace cdea
       }
     std::cerr << "cdea: " << status << " (" << hint << "nothing was written)\n";
     return exit_input_error;
+  }
+
+  void print_fitted_values(const std::vector<SceneParameter> &free, const FitResult &r)
+  {
+    std::cout << "\n" << (r.converged ? "Converged" : "NOT converged") << ": " << r.status
+              << "\n" << std::left << std::setw(30) << "parameter" << std::right << std::setw(16)
+              << "start" << std::setw(16) << "fitted" << std::setw(16) << "std. error"
+              << std::setw(10) << "rel." << '\n';
+    for (std::size_t j = 0; j < free.size(); ++j)
+      {
+        const SceneParameter &f = free[j];
+        const double          e = shown(f, r.standard_errors[j]), v = shown(f, r.values[j]);
+        std::cout << std::left << std::setw(30) << shown_label(f) << std::right << std::setw(16)
+                  << format_number(shown(f, r.initial[j]), 8) << std::setw(16)
+                  << format_number(v, 8) << std::setw(16) << format_number(e, 3) << std::setw(10)
+                  << format_number(e / std::abs(v), 2) << '\n';
+      }
+    print_correlation(free, r, 28);
   }
 
   void print_correlation(const std::vector<SceneParameter> &free, const FitResult &r,

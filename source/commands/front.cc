@@ -60,7 +60,11 @@ namespace cdea
           std::vector<std::string> tokens;
           for (std::string t; in >> t;)
             tokens.push_back(t);
-          bool fits = tokens.size() == arguments.size();
+          // A last token "...": any further arguments.
+          const bool more = !tokens.empty() && tokens.back() == "...";
+          if (more)
+            tokens.pop_back();
+          bool fits = more ? arguments.size() >= tokens.size() : tokens.size() == arguments.size();
           for (std::size_t i = 0; fits && i < tokens.size(); ++i)
             fits = tokens[i][0] != '-' || tokens[i] == arguments[i];
           if (fits)

@@ -3,10 +3,12 @@
 
 #include <cdea/base/format.h>
 #include <cdea/design/fit.h>
+#include <cdea/design/material_fit.h>
 #include <cdea/design/viscous_fit.h>
 #include <cdea/material/two_network_gent.h>
 #include <cdea/model/quantities_common.h>
 #include <cdea/model/quantities_fit.h>
+#include <cdea/model/quantities_material_fit.h>
 
 #ifndef CDEA_VERSION
 #  define CDEA_VERSION "unknown"
@@ -192,6 +194,68 @@ namespace cdea
       .set(creep_weight, data.weight)
       .set(creep_fitted, fitted_values)
       .set(creep_residual, residuals);
+    return product;
+  }
+
+  Product material_fit_product(const std::string &parameter_text, const FitSettings &settings,
+                               const MaterialFitResult                &r,
+                               const std::vector<MaterialTestOutcome> &outcomes)
+  {
+    namespace q       = material_fit_quantity;
+    const FitResult  &f = r.fit;
+    const std::size_t K = settings.free.size();
+    // rms_residual_mm holds the stresses' Pa as if m: the rms in kPa is its own row.
+    Product product = fit_attributes(parameter_text, settings, f, 0);
+    product.root().set(evaluations, r.evaluations).set(q::rms_residual_kPa, f.rms);
+    std::vector<double> covariance(K * K, NAN);
+    if (f.covariance.rows() == Eigen::Index(K) && f.covariance.cols() == Eigen::Index(K))
+      for (std::size_t i = 0; i < K; ++i)
+        for (std::size_t j = 0; j < K; ++j)
+          covariance[i * K + j] = f.covariance(Eigen::Index(i), Eigen::Index(j));
+    product.root().set(q::covariance, covariance, {K, K});
+    std::vector<std::string> files, kinds;
+    std::vector<double> fitted_flags, weights, samples, rms, largest, relative;
+    std::vector<double> test, time, stretch, measured, model, residual, sample_weight;
+    for (std::size_t k = 0; k < outcomes.size(); ++k)
+      {
+        const MaterialTestOutcome &o = outcomes[k];
+        const MaterialTestData    &d = *o.data;
+        files.push_back(d.name);
+        kinds.push_back(test_kind_name(d.history.kind));
+        fitted_flags.push_back(o.fitted ? 1. : 0.);
+        weights.push_back(o.weight);
+        samples.push_back(double(d.size()));
+        rms.push_back(o.measures.rms);
+        largest.push_back(o.measures.largest);
+        relative.push_back(o.measures.relative);
+        for (std::size_t i = 0; i < d.size(); ++i)
+          {
+            test.push_back(double(k));
+            measured.push_back(d.stress[i]);
+            model.push_back(o.model[i]);
+            residual.push_back(o.model[i] - d.stress[i]);
+          }
+        time.insert(time.end(), d.history.time.begin(), d.history.time.end());
+        stretch.insert(stretch.end(), d.history.stretch.begin(), d.history.stretch.end());
+        sample_weight.insert(sample_weight.end(), d.weight.begin(), d.weight.end());
+      }
+    product.group("/tests")
+      .set(q::file, files)
+      .set(q::kind, kinds)
+      .set(q::fitted, fitted_flags)
+      .set(q::file_weight, weights)
+      .set(q::samples, samples)
+      .set(q::rms, rms)
+      .set(q::largest, largest)
+      .set(q::relative_rms, relative);
+    product.group("/samples")
+      .set(q::test, test)
+      .set(q::time, time)
+      .set(q::stretch, stretch)
+      .set(q::measured, measured)
+      .set(q::model, model)
+      .set(q::residual, residual)
+      .set(q::sample_weight, sample_weight);
     return product;
   }
 } // namespace cdea

@@ -257,3 +257,60 @@ namespace cdea
     return out;
   }
 } // namespace cdea
+
+namespace cdea
+{
+  namespace
+  {
+    /// The outcome of the tests of @p model for its stresses @p stress (Pa,
+    /// the tests' samples one after the other); @p tests are the caller's
+    /// data the model was made from (it holds copies).
+    void add_outcomes(const MaterialTestModel &model, const Eigen::VectorXd &stress,
+                      const MaterialTestData *tests, const std::vector<double> &weights,
+                      const bool fitted, std::vector<MaterialTestOutcome> &out)
+    {
+      const std::vector<TestMeasures> measures = test_measures(model, stress);
+      for (std::size_t k = 0; k < model.tests().size(); ++k)
+        {
+          MaterialTestOutcome o;
+          o.data     = &tests[k];
+          o.weight   = weights.empty() ? 1. : weights[k];
+          o.fitted   = fitted;
+          o.measures = measures[k];
+          const double *first = stress.data() + model.offset(k);
+          o.model.assign(first, first + o.data->size());
+          out.push_back(std::move(o));
+        }
+    }
+  } // namespace
+
+  std::vector<MaterialTestOutcome> material_test_outcomes(
+    const Scene &base, const std::vector<SceneParameter> &free, const MaterialFitResult &r,
+    const std::vector<MaterialTestData> &fitted, const std::vector<double> &weights,
+    const std::vector<MaterialTestData> &predicted, std::vector<std::string> &warnings)
+  {
+    std::vector<MaterialTestOutcome> out;
+    const MaterialTestModel          fitted_model(base, fitted, free);
+    Eigen::VectorXd                  stress = r.fit.fitted;
+    if (stress.size() != Eigen::Index(fitted_model.size()) &&
+        !fitted_model.evaluate(r.fit.values, stress, nullptr))
+      stress = Eigen::VectorXd::Constant(Eigen::Index(fitted_model.size()),
+                                         std::numeric_limits<double>::quiet_NaN());
+    add_outcomes(fitted_model, stress, fitted.data(), weights, true, out);
+    // Each predicted file alone: one the model cannot follow spoils no other.
+    for (const MaterialTestData &t : predicted)
+      {
+        const MaterialTestModel model(base, {t}, free);
+        Eigen::VectorXd         predicted_stress;
+        std::string             why;
+        if (!model.evaluate(r.fit.values, predicted_stress, nullptr, &why))
+          {
+            warnings.push_back("--predict " + t.name + ": " + why);
+            predicted_stress = Eigen::VectorXd::Constant(Eigen::Index(t.size()),
+                                               std::numeric_limits<double>::quiet_NaN());
+          }
+        add_outcomes(model, predicted_stress, &t, {}, false, out);
+      }
+    return out;
+  }
+} // namespace cdea

@@ -7,8 +7,11 @@
 #include <cdea/base/text.h>
 #include <cdea/design/fit_data.h>
 #include <cdea/design/material_test_data.h>
+#include <cdea/input/parameters.h>
+#include <cdea/input/specimen_entries.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <sstream>
 
@@ -126,6 +129,52 @@ namespace cdea
     return is_material_test(in);
   }
 
+  double material_test_weight(std::istream &in, const std::string &file)
+  {
+    double       weight = 1.;
+    unsigned int given  = 0; // the line of the weight
+    std::string  line;
+    for (unsigned int number = 1; std::getline(in, line); ++number)
+      {
+        if (csv_content(line, number).find_first_not_of(" \t") != std::string::npos)
+          break; // the header line: the top of the file ends
+        const std::size_t hash = line.find('#');
+        if (hash == std::string::npos)
+          continue;
+        std::istringstream words(line.substr(hash + 1));
+        std::string        key, rest;
+        if (!(words >> key) || key != "weight")
+          continue;
+        const std::string where = file + ", line " + std::to_string(number) + ": '# weight'";
+        if (given != 0)
+          throw InputError(where + " given twice (also on line " + std::to_string(given) + ")");
+        given = number;
+        std::getline(words, rest);
+        rest = trim_blanks(rest);
+        if (!rest.empty() && rest.back() == '\r')
+          rest = trim_blanks(rest.substr(0, rest.size() - 1));
+        std::size_t used = 0;
+        try
+          {
+            weight = std::stod(rest, &used);
+          }
+        catch (const std::exception &)
+          {
+            used = 0;
+          }
+        if (rest.empty() || used != rest.size() || !(weight > 0.) || !std::isfinite(weight))
+          throw InputError(where + " must be followed by one number above 0 (the file's weight "
+                                   "in a joint fit), got '" + rest + "'");
+      }
+    return weight;
+  }
+
+  double material_test_weight(const std::string &file)
+  {
+    std::istringstream in(read_data_file(file));
+    return material_test_weight(in, file);
+  }
+
   MaterialTestData read_material_test(const std::string &file, const TestSpecimen &specimen)
   {
     std::istringstream in(read_data_file(file));
@@ -179,25 +228,14 @@ namespace cdea
     return d;
   }
 
-  namespace
-  {
-    /// The specimen's size entries and what each is.
-    const std::pair<const char *, const char *> specimen_sizes[3] = {
-      {"Specimen gauge length (mm)",
-       "Undeformed length between the grips: stretch = 1 + displacement / gauge length"},
-      {"Specimen width (mm)", "Undeformed width of the loaded cross-section"},
-      {"Specimen thickness (mm)", "Undeformed thickness: nominal stress = force / (width thickness)"}};
-  } // namespace
-
   void declare_specimen_parameters(ParameterDeclarations &prm)
   {
-    prm.enter_subsection("Calibration");
-    prm.add_text("Specimen test", "uniaxial",
-                 "The test of raw machine data (time_s, displacement_mm, force_N): "
-                 "uniaxial, equibiaxial or pure shear.");
-    for (const auto &[entry, meaning] : specimen_sizes)
-      prm.add_number(entry, "0", std::string(meaning) + " of raw machine data (0: not given).");
-    prm.leave_subsection();
+    SpecimenEntries::declare_entries(prm);
+  }
+
+  TestSpecimen test_specimen(const Parameters &p)
+  {
+    return parse_specimen(p.subsection<SpecimenEntries>().values);
   }
 
   TestSpecimen parse_specimen(const ParameterValues &values)
@@ -218,9 +256,9 @@ namespace cdea
                          " must be from 0 (not given) to 1e4 mm, got " + format_number(v));
       return 1e-3 * v;
     };
-    s.gauge_length = size(specimen_sizes[0].first);
-    s.width        = size(specimen_sizes[1].first);
-    s.thickness    = size(specimen_sizes[2].first);
+    s.gauge_length = size("Specimen gauge length (mm)");
+    s.width        = size("Specimen width (mm)");
+    s.thickness    = size("Specimen thickness (mm)");
     return s;
   }
 } // namespace cdea

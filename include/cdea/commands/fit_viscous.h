@@ -27,6 +27,13 @@ namespace cdea
 
   struct FitResult;
   struct SceneParameter;
+  struct Scene;
+  class Product;
+
+  /// How the fit ended, and per free parameter its start, fitted value,
+  /// standard error and relative error (network A's modulus in kPa, the
+  /// others in SI), then the correlations.
+  void print_fitted_values(const std::vector<SceneParameter> &free, const FitResult &r);
 
   /// The fit's correlation matrix, a row per free parameter labelled in a
   /// column @p label_width wide (nothing for fewer than two parameters).
@@ -40,6 +47,13 @@ namespace cdea
   /// asked for or the fit did not converge (each said on stderr), else 0.
   int finish_fit(const std::function<void()> &write_results, const std::string &h5_path,
                  const std::string &prm_path, const FitResult &r);
+
+  /// Writes @p product to the claimed fit file and, if the fit has fitted
+  /// values, <Base name>_fit.prm with the @p values of @p free over the
+  /// parameter file (@p base its scene), together, and ends as finish_fit().
+  int write_fit_files(const Invocation &invocation, const Scene &base,
+                      const std::vector<SceneParameter> &free, const FitResult &r,
+                      const Product &product);
 
   /// A fit that could not start (its start values failed, or a stop was
   /// asked for during the start's evaluation): nothing is written (an older

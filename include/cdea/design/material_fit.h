@@ -117,4 +117,32 @@ namespace cdea
     const Scene &base, const std::vector<MaterialTestData> &tests,
     const MaterialFitSettings                                                    &settings,
     const std::function<void(unsigned int, double, const std::vector<double> &)> &progress = {});
+
+  /// One file of a material-test fit as it is reported: the data, its
+  /// weight, whether it was fitted or only predicted (--predict), the
+  /// model's stresses at the fitted values and its measures.
+  struct MaterialTestOutcome
+  {
+    const MaterialTestData *data   = nullptr;
+    double                  weight = 1.;
+    bool                    fitted = true;
+    std::vector<double>     model; ///< Pa at every sample (NaN: the model failed)
+    TestMeasures            measures;
+  };
+
+  /// The outcome of every file: @p fitted (with @p weights, empty: 1 each)
+  /// from the fit's stresses, then @p predicted evaluated at the fitted
+  /// values. A predicted file the model cannot follow gets NaN stresses and
+  /// measures, and the reason in @p warnings.
+  std::vector<MaterialTestOutcome> material_test_outcomes(
+    const Scene &base, const std::vector<SceneParameter> &free, const MaterialFitResult &r,
+    const std::vector<MaterialTestData> &fitted, const std::vector<double> &weights,
+    const std::vector<MaterialTestData> &predicted, std::vector<std::string> &warnings);
+
+  /// The product of a material-test fit (model/quantities_material_fit.h
+  /// besides the root attributes and /correlation of every fit), in SI;
+  /// written to <Base name>_fit.h5.
+  Product material_fit_product(const std::string &parameter_text, const FitSettings &settings,
+                               const MaterialFitResult                &r,
+                               const std::vector<MaterialTestOutcome> &outcomes);
 } // namespace cdea

@@ -24,6 +24,7 @@ namespace cdea
 {
   class ParameterDeclarations;
   class ParameterValues;
+  struct Parameters;
 
   /// The specimen of raw machine columns (SI); sizes 0: not given.
   struct TestSpecimen
@@ -42,6 +43,9 @@ namespace cdea
   /// The specimen from those entries, checked: InputError naming the entry
   /// and what is allowed (a test name, sizes from 0 to 1e4 mm).
   TestSpecimen parse_specimen(const ParameterValues &values);
+  /// The specimen of a parameter file: those entries, registered as a
+  /// subsection of its own (Parameters::subsection()), parsed.
+  TestSpecimen test_specimen(const Parameters &p);
 
   /// One test's history as measured.
   struct MaterialTestData
@@ -61,6 +65,12 @@ namespace cdea
   bool is_material_test(std::istream &in);
   /// The same for file @p file (InputError if it cannot be read).
   bool is_material_test(const std::string &file);
+
+  /// The file's weight in a joint fit: a comment line "# weight W" (W a
+  /// number above 0) above the header line; 1 without. InputError naming
+  /// the file and line for a bad or second weight line.
+  double material_test_weight(std::istream &in, const std::string &file);
+  double material_test_weight(const std::string &file);
 
   /// Reads one test (a regular file of at most 64 MB, at most 1e5 rows):
   /// times from 0, increasing strictly; stretches at least 1 (tension;
