@@ -199,7 +199,10 @@ namespace
   /// The run's stream into a journal, rebuilt as `cdea recover` does.
   void check_journal(const RunRecord &record)
   {
+    // The journal is created exclusively (O_EXCL): a leftover of an earlier
+    // run of this test would be in the way.
     const std::string journal = "test_run_products.journal";
+    std::remove(journal.c_str());
     {
       JournalWriter writer;
       writer.open(journal, record.parameters, record.n_rings,
@@ -219,6 +222,7 @@ namespace
     std::ofstream("test_run_products_recovered.h5", std::ios::binary)
       .write(image.data(), std::streamsize(image.size()));
     check_run_file("test_run_products_recovered.h5", record, "recovered from the journal");
+    std::remove(journal.c_str());
   }
 } // namespace
 
