@@ -5,6 +5,7 @@
 #include <cdea/base/format.h>
 #include <cdea/base/parameter_declarations.h>
 #include <cdea/base/text.h>
+#include <cdea/base/units.h>
 #include <cdea/design/fit_data.h>
 #include <cdea/design/material_test_data.h>
 #include <cdea/input/parameters.h>
@@ -207,7 +208,7 @@ namespace cdea
             const double u = value(t, i, file, "displacement_mm", [](double v) { return v >= 0.; },
                                    "a tension test's displacement must be at least 0 (stretch "
                                    "at least 1)");
-            d.history.stretch.push_back(1. + 1e-3 * u / specimen.gauge_length);
+            d.history.stretch.push_back(1. + units::mm.in_si(u) / specimen.gauge_length);
             d.stress.push_back(value(t, i, file, "force_N", [](double) { return true; }, "") /
                                (specimen.width * specimen.thickness));
           }
@@ -216,8 +217,8 @@ namespace cdea
             d.history.stretch.push_back(
               value(t, i, file, stretch, [](double v) { return v >= 1.; },
                     "a tension test's stretch must be at least 1 (the unstressed state)"));
-            d.stress.push_back(1e3 * value(t, i, file, stress_column, [](double) { return true; },
-                                           ""));
+            d.stress.push_back(units::kPa.in_si(
+              value(t, i, file, stress_column, [](double) { return true; }, "")));
           }
         d.weight.push_back(has_weight ? value(t, i, file, "weight",
                                               [](double v) { return v > 0.; },
@@ -254,7 +255,7 @@ namespace cdea
       if (!(v >= 0. && v <= 1e4))
         throw InputError("Calibration/" + entry +
                          " must be from 0 (not given) to 1e4 mm, got " + format_number(v));
-      return 1e-3 * v;
+      return units::mm.in_si(v);
     };
     s.gauge_length = size("Specimen gauge length (mm)");
     s.width        = size("Specimen width (mm)");

@@ -1,5 +1,6 @@
 #include <cdea/base/format.h>
 #include <cdea/base/text.h>
+#include <cdea/base/units.h>
 #include <cdea/fe/load_term.h>
 #include <cdea/input/parameters.h>
 #include <cdea/input/validation.h>
@@ -173,8 +174,9 @@ namespace cdea
         throw InputError("Output/ParaView segments = " +
                          std::to_string(p.output.paraview_segments) + " with " +
                          format(samples) + " samples per step: a step's ParaView file would "
-                         "take about " + format(std::round(vtu * 1e-6)) + " MB, more than the " +
-                         format(ParaViewWriter::max_step_file_bytes * 1e-6) +
+                         "take about " + format(std::round(units::MB.from_si(vtu))) +
+                         " MB, more than the " +
+                         format(units::MB.from_si(ParaViewWriter::max_step_file_bytes)) +
                          " MB allowed; lower the segments or the samples");
       const double      steps = estimated_steps(p, scene);
       const std::string step_entries =
