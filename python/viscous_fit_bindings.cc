@@ -106,7 +106,15 @@ void bind_viscous_fit(py::module_ &m)
          [](const ViscousCalibration &c, const std::string &path) {
            write_product_file(c.product, path);
          },
-         py::arg("path"), "Write the fit file (HDF5) to path");
+         py::arg("path"), "Write the fit file (HDF5) to path")
+    .def("__repr__", [](const ViscousCalibration &c) {
+      std::string s = std::string("<cdea.ViscousFitResult ") +
+                      (c.kind == FitDataKind::dma ? "dma" : "creep") +
+                      (c.result.converged ? ", converged" : ", NOT converged");
+      for (std::size_t j = 0; j < c.settings.free.size(); ++j)
+        s += ", " + c.settings.free[j].name() + " " + format_number(c.result.values[j], 8);
+      return s + ">";
+    });
   m.def(
     "fit_viscoelastic",
     [m](const py::object &prm, const py::object &data, const py::object &overrides,

@@ -29,6 +29,8 @@ def test_dma_fit_recovers_the_constants(tmp_path):
     assert r.correlation.shape == (7, 7)
     assert np.allclose(np.diag(r.correlation), 1.)
     assert r.data["fitted_storage_kPa"].shape == (41,)
+    assert repr(r).startswith("<cdea.ViscousFitResult dma, converged, shear modulus (Pa) 25114.6")
+    assert all(name in repr(r) for name in TRUE), repr(r)
     with open(CSV) as f:
         again = cdea.fit_viscoelastic(PRM, f.read())
     assert again.values == r.values
