@@ -15,12 +15,10 @@
 6. Unit factors only in the table of quantities (include/cdea/base/units.h):
    a power of ten of a unit (1e3, 1e-3, 1e6, 1e-6, 1e9, 1e-9, 1e12, 1e-12,
    1000., 0.001) that multiplies or divides a value from the right (x * 1e3,
-   x / 1e3) is a unit factor, and at most MAX_UNIT_FACTORS of them stand
-   anywhere else in source/, include/ and python/: the number left today (in
-   the input checks, the settings parsers, the laws and two load terms), so
-   that no new one is added; lower it as they move to the table. A relative
-   tolerance or bound is written before its scale (1e-9 * scale) and is not
-   one.
+   x / 1e3) is a unit factor, and none may stand anywhere else in source/,
+   include/ and python/ (MAX_UNIT_FACTORS, the number allowed outside the
+   table, is 0). A relative tolerance or bound is written before its scale
+   (1e-9 * scale) and is not one.
 7. The rows of the table (Quantity objects) are defined only in the table's
    files (model/quantity.h, model/quantities_*.h, model/output_fields.*):
    a study names a row, never makes one.
@@ -34,7 +32,7 @@ import sys
 
 MAX_FUNCTION_LINES = 80
 MAX_FILE_LINES = 600
-MAX_UNIT_FACTORS = 53
+MAX_UNIT_FACTORS = 0
 UNIT_TABLE = "include/cdea/base/units.h"
 QUANTITY_TABLE = re.compile(r"^(include/cdea|source)/model/(quantity\.h|quantities_\w+\.h|"
                             r"output_fields\.(h|cc))$")

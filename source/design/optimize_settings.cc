@@ -1,6 +1,7 @@
 // Subsection Optimization checked and turned into OptimizationSettings, and
 // the layouts' free variables.
 
+#include <cdea/base/units.h>
 #include <cdea/design/optimize.h>
 #include <cdea/fe/load_term.h>
 #include <cdea/input/parameters.h>
@@ -136,9 +137,9 @@ namespace cdea
         {
           if (v < 0.)
             throw InputError(name + ": voltages must not be negative, got " + format(v));
-          if (v > ceiling * 1e-3)
+          if (v > units::kV.from_si(ceiling))
             throw InputError(name + ": " + format(v) + " kV is above the voltage ceiling of " +
-                             format(ceiling * 1e-3) + " kV for this film");
+                             format(units::kV.from_si(ceiling)) + " kV for this film");
           v *= 1e3;
         }
       return voltages;
@@ -181,9 +182,9 @@ namespace cdea
       if (s.voltage_lower < 0.)
         throw InputError(voltage_name + ": the lower bound must not be negative, got " +
                          format(s.voltage_lower));
-      if (s.voltage_upper > ceiling * 1e-3)
+      if (s.voltage_upper > units::kV.from_si(ceiling))
         throw InputError(voltage_name + ": the upper bound " + format(s.voltage_upper) +
-                         " kV is above the voltage ceiling of " + format(ceiling * 1e-3) +
+                         " kV is above the voltage ceiling of " + format(units::kV.from_si(ceiling)) +
                          " kV for this film");
       s.voltage_lower *= 1e3;
       s.voltage_upper *= 1e3;
@@ -195,13 +196,14 @@ namespace cdea
                              OptimizationSettings &s)
     {
       s.min_hoop_stress =
-        one_number(o.min_hoop_stress_text, "Optimization/Minimum hoop stress (kPa)") * 1e3;
+        units::kPa.in_si(
+          one_number(o.min_hoop_stress_text, "Optimization/Minimum hoop stress (kPa)"));
       const std::string field_name = "Optimization/Maximum field (MV/m)";
       if (trimmed(o.max_field_text) == "inf")
         s.max_field = std::numeric_limits<double>::infinity();
       else
         {
-          s.max_field = one_number(o.max_field_text, field_name) * 1e6;
+          s.max_field = units::MV_per_m.in_si(one_number(o.max_field_text, field_name));
           if (!(s.max_field > 0.))
             throw InputError(field_name + " must be positive or 'inf', got " + o.max_field_text);
         }
@@ -209,7 +211,7 @@ namespace cdea
       const double      width_mm   = one_number(o.min_ring_width_text, width_name);
       if (width_mm < 0.)
         throw InputError(width_name + " must not be negative, got " + format(width_mm));
-      s.min_ring_width = width_mm * 1e-3 / scene.disk_radius;
+      s.min_ring_width = units::mm.in_si(width_mm) / scene.disk_radius;
       return width_mm;
     }
 

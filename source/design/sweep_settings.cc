@@ -1,6 +1,7 @@
 // The input of `cdea sweep`: the value lists and the subsection Sweep, turned
 // into SweepSettings; the rows of each MPI rank.
 
+#include <cdea/base/units.h>
 #include <cdea/base/mpi_session.h>
 #include <cdea/design/sweep.h>
 #include <cdea/fe/load_term.h>
@@ -72,7 +73,7 @@ namespace cdea
       throw InputError(inner_name + " must be positive (the stroke increase is relative to "
                        "the stroke with both rings at it), got " +
                        format(p.sweep.inner_voltage_kV));
-    s.inner_voltage = std::round(p.sweep.inner_voltage_kV * 1e12) / 1e9;
+    s.inner_voltage = units::kV_in_V_on_grid(p.sweep.inner_voltage_kV);
 
     const std::string range_name = "Sweep/Outer voltage range (kV)";
     const auto        range = parse_number_list(p.sweep.outer_voltage_range_text, range_name);
@@ -92,11 +93,11 @@ namespace cdea
     if (count > double(max_values))
       throw InputError(range_name + ": " + format(count) + " voltages are too many (at most " +
                        std::to_string(max_values) + ")");
-    s.outer_from = std::round(from * 1e12) / 1e9;
-    s.outer_to   = std::round(to * 1e12) / 1e9;
-    s.outer_step = std::round(step * 1e12) / 1e9;
+    s.outer_from = units::kV_in_V_on_grid(from);
+    s.outer_to   = units::kV_in_V_on_grid(to);
+    s.outer_step = units::kV_in_V_on_grid(step);
     for (long k = 0; k < long(count); ++k)
-      s.outer_voltages.push_back(std::round((from + k * step) * 1e12) / 1e9);
+      s.outer_voltages.push_back(units::kV_in_V_on_grid(from + k * step));
     // Land exactly on 'to' when it is on the grid.
     if (std::abs(from + (count - 1.) * step - to) <= 1e-9 * step)
       s.outer_voltages.back() = s.outer_to;

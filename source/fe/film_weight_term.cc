@@ -13,6 +13,7 @@
 // stays neglected (Time/Inertia). The integrand z R is of degree p + 1 in R:
 // the p + 1 Gauss points of the energy rule integrate it exactly.
 
+#include <cdea/base/units.h>
 #include <cdea/base/format.h>
 #include <cdea/base/text.h>
 #include <cdea/fe/load_term.h>
@@ -52,7 +53,7 @@ namespace cdea
       density = values.number(density_entry);
       require_range(density, 1e-12, 1e12, density_entry, " (in its unit)", true);
       weight_per_area = density * values.number("Loading/Gravity (m/s^2)") *
-                        values.number("Geometry/Film thickness (mm)") * 1e-3;
+                        units::mm.in_si(values.number("Geometry/Film thickness (mm)"));
     }
 
     bool        active() const override { return density > 0.; }

@@ -1,3 +1,4 @@
+#include <cdea/base/units.h>
 #include <cdea/base/text.h>
 #include <cdea/fe/water_term.h>
 #include <cdea/model/output_fields.h>
@@ -40,8 +41,8 @@ namespace cdea
     w.enabled      = values.flag("Reservoir/Water load");
     w.density      = density;
     w.gravity      = values.number("Loading/Gravity (m/s^2)");
-    w.water_volume = volume_ml * 1e-6;
-    w.tube_area    = width_mm * 1e-3 * depth_mm * 1e-3;
+    w.water_volume = units::ml.in_si(volume_ml);
+    w.tube_area    = units::mm.in_si(width_mm) * units::mm.in_si(depth_mm);
     set_water(w);
   }
 
@@ -58,7 +59,8 @@ namespace cdea
     const double       volume_mm3 = summary.columns.in_file_units(summary_column::volume);
     std::ostringstream o;
     o << std::setprecision(7) << "  water: free surface "
-      << (settings.water_volume - volume_mm3 * 1e-9) / settings.tube_area * 1e3
+      << units::mm.from_si((settings.water_volume - units::mm3.in_si(volume_mm3)) /
+                           settings.tube_area)
       << " mm above the frame plane\n";
     return o.str();
   }

@@ -1,5 +1,6 @@
 #include <deal.II/base/parameter_handler.h>
 
+#include <cdea/base/units.h>
 #include <cdea/input/parameters.h>
 
 #include <cmath>
@@ -245,15 +246,15 @@ namespace cdea
   {
     check_geometry_and_material(geometry, material, loading);
     Scene scene;
-    scene.disk_radius  = geometry.disk_radius_mm * 1e-3;
-    scene.frame_radius = geometry.frame_radius_mm * 1e-3;
+    scene.disk_radius  = units::mm.in_si(geometry.disk_radius_mm);
+    scene.frame_radius = units::mm.in_si(geometry.frame_radius_mm);
     scene.prestretch   = geometry.prestretch;
-    scene.material     = {material.shear_modulus_kPa * 1e3, material.jlim,
-                          material.permittivity, geometry.film_thickness_mm * 1e-3};
+    scene.material     = {units::kPa.in_si(material.shear_modulus_kPa), material.jlim,
+                          material.permittivity, units::mm.in_si(geometry.film_thickness_mm)};
     scene.material_model = material_law.model;
     scene.law_constants  = material_law.constants;
     scene.law_texts      = material_law.texts;
-    scene.mass         = loading.mass_g * 1e-3;
+    scene.mass         = units::g.in_si(loading.mass_g);
     scene.gravity      = loading.gravity;
     scene.ring_edges_over_a =
       ring_edges(electrodes.ring_edges_text, geometry.frame_radius_mm / geometry.disk_radius_mm);

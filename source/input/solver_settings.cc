@@ -1,3 +1,4 @@
+#include <cdea/base/units.h>
 #include <cdea/fe/load_term.h>
 #include <cdea/input/parameters.h>
 #include <cdea/input/solver_settings.h>
@@ -12,16 +13,16 @@ namespace cdea
     SteppingSettings s;
     s.prestretch_steps      = p.solver.prestretch_steps;
     s.load_increment        = p.solver.load_increment;
-    s.voltage_increment     = p.solver.voltage_increment_kV * 1e3;
-    s.min_voltage_increment = p.solver.min_voltage_increment_kV * 1e3;
+    s.voltage_increment     = units::kV.in_si(p.solver.voltage_increment_kV);
+    s.min_voltage_increment = units::kV.in_si(p.solver.min_voltage_increment_kV);
     s.max_cutbacks          = p.solver.max_cutbacks;
     s.onset_tolerance       = p.wrinkling.onset_tolerance_V;
     s.arc_length            = p.solver.continuation == Continuation::arc_length;
     s.max_arc_length_steps  = p.solver.max_arc_length_steps;
-    s.max_displacement      = p.solver.max_displacement_mm * 1e-3;
+    s.max_displacement      = units::mm.in_si(p.solver.max_displacement_mm);
     s.stability_check       = p.solver.stability_check;
     s.stability_eigenvalue  = p.solver.stability_eigenvalue;
-    s.breakdown_field       = p.solver.breakdown_field_MV_per_m * 1e6;
+    s.breakdown_field       = units::MV_per_m.in_si(p.solver.breakdown_field_MV_per_m);
     s.residual_tolerance    = p.solver.residual_tolerance;
     s.update_tolerance      = p.solver.update_tolerance;
     return s;
@@ -66,7 +67,7 @@ namespace cdea
 
   double tube_area(const Parameters &p)
   {
-    return p.reservoir.width_mm * 1e-3 * p.reservoir.depth_mm * 1e-3;
+    return units::mm.in_si(p.reservoir.width_mm) * units::mm.in_si(p.reservoir.depth_mm);
   }
 
   LiquidColumn liquid_column(const Parameters &p)
@@ -90,7 +91,7 @@ namespace cdea
     s.method       = t.scheme;
     s.control      = t.step_control;
     s.relative_tolerance     = t.relative_tolerance;
-    s.displacement_tolerance = t.absolute_tolerance_mm * 1e-3;
+    s.displacement_tolerance = units::mm.in_si(t.absolute_tolerance_mm);
     s.internal_tolerance     = t.internal_tolerance;
     s.inertia      = t.inertia;
     s.rest_time    = t.rest_time();

@@ -45,7 +45,7 @@ namespace cdea
       if (p.solver.continuation == Continuation::arc_length)
         return steps + p.solver.max_arc_length_steps;
       std::vector<double> previous(scene.n_rings(), 0.);
-      const double        increment = p.solver.voltage_increment_kV * 1e3;
+      const double        increment = units::kV.in_si(p.solver.voltage_increment_kV);
       for (const auto &waypoint : scene.path.waypoints())
         {
           double change = 0.;
@@ -61,12 +61,12 @@ namespace cdea
 
     void check_voltage(const double kV, const double ceiling, const std::string &name)
     {
-      if (!(kV <= ceiling * 1e-3))
+      if (!(kV <= units::kV.from_si(ceiling)))
         throw InputError(name + ": " + format(kV) + " kV is above the ceiling of " +
-                         format(ceiling * 1e-3) +
+                         format(units::kV.from_si(ceiling)) +
                          " kV for this film (the field V lam_pre^2 / H in the flat "
                          "pre-stretched film must stay below " +
-                         format(max_flat_field * 1e-9) + " GV/m)");
+                         format(units::GV_per_m.from_si(max_flat_field)) + " GV/m)");
     }
 
     /// Lengths, material constants, loads and the Reservoir: finite and
@@ -135,7 +135,7 @@ namespace cdea
         parse_number_list(p.sweep.outer_voltage_range_text, "Sweep/Outer voltage range (kV)");
       for (std::size_t i = 0; i < std::min<std::size_t>(range.size(), 2); ++i)
         check_voltage(range[i], ceiling, "Sweep/Outer voltage range (kV)");
-      require_range(p.solver.breakdown_field_MV_per_m, 0., max_flat_field * 1e-6,
+      require_range(p.solver.breakdown_field_MV_per_m, 0., units::MV_per_m.from_si(max_flat_field),
                     "Solver/Breakdown field (MV/m)", " (0: off)");
     }
 
@@ -146,7 +146,7 @@ namespace cdea
                     " (relative; rounding keeps the residual above about 1e-14)");
       require_range(p.solver.update_tolerance, 1e-14, 0.1, "Solver/Update tolerance",
                     " (relative; rounding keeps the update above about 1e-14)");
-      require_range(p.solver.voltage_increment_kV, 1e-8, ceiling * 1e-3,
+      require_range(p.solver.voltage_increment_kV, 1e-8, units::kV.from_si(ceiling),
                     "Solver/Voltage increment (kV)", " (up to the voltage ceiling)");
       require_range(p.solver.max_displacement_mm, 0., hi_dimensional,
                     "Solver/Max displacement (mm)", " (0: no limit)");
@@ -189,8 +189,8 @@ namespace cdea
       const double bytes = steps * (bytes_per_step + bytes_per_sample * samples);
       if (bytes > max_results_bytes)
         throw InputError("the results of at least " + format(steps) + " steps of " +
-                         format(samples) + " samples would take about " + format(bytes * 1e-9) +
-                         " GB, above the " + format(max_results_bytes * 1e-9) +
+                         format(samples) + " samples would take about " + format(units::GB.from_si(bytes)) +
+                         " GB, above the " + format(units::GB.from_si(max_results_bytes)) +
                          " GB that a results file may hold in memory: change " + step_entries +
                          " or Discretization/Samples per element");
     }

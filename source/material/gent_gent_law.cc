@@ -8,6 +8,7 @@
 // C2 (kPa) >= 0; small-strain shear modulus mu + 2 C2 / 3; C2 = 0 is the Gent
 // law. Registered as Material/Model = gent-gent.
 
+#include <cdea/base/units.h>
 #include <cdea/base/format.h>
 #include <cdea/base/text.h>
 #include <cdea/material/elastic_dielectric.h>
@@ -43,7 +44,7 @@ namespace cdea
       if (!(c2 >= 0. && c2 <= 1e9))
         throw InputError("Material/Gent-Gent C2 (kPa) must be between 0 and 1e9, got " +
                          format_number(c2));
-      return std::make_shared<GentGentLaw>(settings.material, c2 * 1e3);
+      return std::make_shared<GentGentLaw>(settings.material, units::kPa.in_si(c2));
     }
 
     // The range is the Gent law's: the I2 term is finite at every stretch.

@@ -7,6 +7,7 @@
 // its small-strain shear modulus is mu + 2 C2, and C2 = 0 is the neo-Hookean
 // law. Registered as Material/Model = mooney-rivlin.
 
+#include <cdea/base/units.h>
 #include <cdea/base/format.h>
 #include <cdea/base/text.h>
 #include <cdea/material/elastic_dielectric.h>
@@ -41,7 +42,7 @@ namespace cdea
       if (!(c2 >= 0. && c2 <= 1e9))
         throw InputError("Material/Mooney-Rivlin C2 (kPa) must be between 0 and 1e9, got " +
                          format_number(c2));
-      return std::make_shared<MooneyRivlinLaw>(settings.material, c2 * 1e3);
+      return std::make_shared<MooneyRivlinLaw>(settings.material, units::kPa.in_si(c2));
     }
 
     double max_hoop_stretch(double) const override

@@ -11,6 +11,7 @@
 // neo-Hookean law; alpha 1 = 2, alpha 2 = -2 is Mooney-Rivlin with
 // C2 = -mu_2 / 2. Registered as Material/Model = ogden.
 
+#include <cdea/base/units.h>
 #include <cdea/base/format.h>
 #include <cdea/base/text.h>
 #include <cdea/material/elastic_dielectric.h>
@@ -76,7 +77,7 @@ namespace cdea
             throw InputError("Material/Ogden mu " + k + " (kPa) must have the sign of Ogden alpha " +
                              k + " (Ogden's condition mu_p alpha_p >= 0) and be at most 1e9 in "
                              "size, got " + format_number(mu) + " with alpha " + format_number(alpha));
-          t[p] = {mu * 1e3, alpha};
+          t[p] = {units::kPa.in_si(mu), alpha};
         }
       return std::make_shared<OgdenLaw>(settings.material, t);
     }

@@ -1,3 +1,4 @@
+#include <cdea/base/units.h>
 #include <cdea/base/format.h>
 #include <cdea/base/text.h>
 #include <cdea/material/gent_law.h>
@@ -516,8 +517,8 @@ namespace cdea
           const std::string of = " (branch " + std::to_string(k + 1) + ")";
           const std::string names[3] = {"Material/" + moduli + of, "Material/" + limits + of,
                                         "Material/" + times + of};
-          check_branch(settings.material.shear_modulus / 1e3, mu[k], jlim[k], tau[k], names);
-          branches.push_back({mu[k] * 1e3, jlim[k], tau[k]});
+          check_branch(units::kPa_divided.from_si(settings.material.shear_modulus), mu[k], jlim[k], tau[k], names);
+          branches.push_back({units::kPa.in_si(mu[k]), jlim[k], tau[k]});
         }
       return branches;
     }
@@ -560,8 +561,8 @@ namespace cdea
         const double      tau  = settings.constant("Relaxation time (s)");
         const std::string names[3] = {"Material/Network B shear modulus (kPa)",
                                       "Material/Network B Jlim", "Material/Relaxation time (s)"};
-        check_branch(settings.material.shear_modulus / 1e3, mu_b, jlim, tau, names);
-        branches.push_back({mu_b * 1e3, jlim, tau});
+        check_branch(units::kPa_divided.from_si(settings.material.shear_modulus), mu_b, jlim, tau, names);
+        branches.push_back({units::kPa.in_si(mu_b), jlim, tau});
       }
     set_branch_constants(settings.constants, settings.material.shear_modulus, branches);
     std::vector<SpringLaw> springs = make_springs(settings, branches);

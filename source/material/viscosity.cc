@@ -1,3 +1,4 @@
+#include <cdea/base/units.h>
 #include <cdea/base/format.h>
 #include <cdea/base/parameter_declarations.h>
 #include <cdea/base/text.h>
@@ -193,7 +194,8 @@ namespace cdea
     t.r       = checked(settings, "Shear thinning eta_inf/eta_0", 0., 1., true);
     t.k1      = checked(settings, "Shear thinning K1/eta_0", 0., 1e6, false);
     t.beta1   = checked(settings, "Shear thinning beta1", 0., 10., true);
-    t.k2      = checked(settings, "Shear thinning K2 (1/kPa^2)", 0., 1e6, false) * 1e-6;
+    t.k2      = units::per_kPa2.in_si(
+      checked(settings, "Shear thinning K2 (1/kPa^2)", 0., 1e6, false));
     t.beta2   = checked(settings, "Shear thinning beta2", 0., 10., true);
     return t;
   }

@@ -1,3 +1,4 @@
+#include <cdea/base/units.h>
 #include <cdea/base/format.h>
 #include <cdea/model/output_fields.h>
 #include <cdea/numerics/bracketed_root.h>
@@ -516,8 +517,8 @@ namespace cdea
       peak = std::max(peak, std::abs(v));
     if (esdirk && peak > 0. && result.completed && largest_voltage < 1e-3 * peak)
       result.warning = "the drive never rose: the largest ring voltage in any time step was " +
-                       format_number(largest_voltage * 1e-3, 4) + " kV of the waveform's peak " +
-                       format_number(peak * 1e-3, 4) + " kV";
+                       format_number(units::kV.from_si(largest_voltage), 4) + " kV of the waveform's peak " +
+                       format_number(units::kV.from_si(peak), 4) + " kV";
   }
 
   void TimeStepper::report(const StepSummary &state, const unsigned int iterations)

@@ -3,8 +3,10 @@
 // unit conversion is written (tests/structure_check.py counts the literal
 // factors elsewhere). The rows of the table (model/quantity.h and the
 // model/quantities_*.h files) name a unit; every layer converts through
-// these, from the material laws' kPa entries up to the Python module. No
-// includes: every folder may use it.
+// these, from the material laws' kPa entries up to the Python module. Only
+// <cmath>: every folder may use it.
+
+#include <cmath>
 
 namespace cdea
 {
@@ -39,6 +41,7 @@ namespace cdea
     inline constexpr Unit kPa{"kPa", 1e-3, 1., 1e3};
     inline constexpr Unit kV{"kV", 1e-3, 1., 1e3};
     inline constexpr Unit MV_per_m{"MV/m", 1e-6, 1., 1e6};
+    inline constexpr Unit GV_per_m{"GV/m", 1e-9, 1., 1e9};
     inline constexpr Unit g{"g", 1e3, 1., 1e-3};
     inline constexpr Unit mm3{"mm^3", 1e9, 1., 1e-9};
     inline constexpr Unit mJ{"mJ", 1e3, 1., 1e-3};
@@ -52,6 +55,8 @@ namespace cdea
     inline constexpr Unit s{"s"};
     inline constexpr Unit ms{"ms", 1e3, 1., 1e-3};
     inline constexpr Unit MB{"MB", 1., 1e6, 1e6}; ///< from bytes
+    inline constexpr Unit GB{"GB", 1e-9, 1., 1e9}; ///< from bytes
+    inline constexpr Unit per_kPa2{"1/kPa^2", 1e6, 1., 1e-6};
     inline constexpr Unit Hz{"Hz"};
     inline constexpr Unit percent{"%"};
     inline constexpr Unit rad{"rad"};
@@ -74,6 +79,11 @@ namespace cdea
     /// Fit parameters, each in its own SI unit (Pa, kg, F/m, s or 1).
     inline constexpr Unit si{"SI"};
     // clang-format on
+
+    /// A voltage given in kV, in V on the design map's grid of 1e-9 V:
+    /// round(kV 1e12) / 1e9, so that from + k step is the same double however
+    /// it was reached.
+    inline double kV_in_V_on_grid(const double kV) { return std::round(kV * 1e12) / 1e9; }
   } // namespace units
 
 } // namespace cdea
