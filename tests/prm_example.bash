@@ -130,6 +130,19 @@ PY
   near "end of the 3.5 kV hold, t = 120 s (mm)" "${got[0]:-}" 19.68101 0.0005
   near "end of the 4.5 kV hold, t = 160 s (mm)" "${got[1]:-}" 20.96822 0.0005
   near "creep over the last hold (mm)" "${got[2]:-}" 0.0006 0.0003 ;;
+fold-full) # doc/stability.md: arc length through both folds of the plain law; the
+  # states whose meridian leaves the frame are marked in the table, counted in
+  # a line after it and said of the final state, as the file's column has them.
+  "$exe" run prm/fold-full.prm > out 2> err; rc=$?
+  [ $rc -eq 0 ] && ok "exit 0" || fail "exit $rc: $(cat err)"
+  marked=$(grep -c '! not physical: beyond the frame' out)
+  in_file=$("$PYTHON" -c 'import h5py, numpy as np
+print(int(np.sum(h5py.File("results/fold-full.h5", "r")["summary"]["nonphysical"][()] > 0)))')
+  [ "$marked" -gt 0 ] && [ "$marked" = "$in_file" ] \
+    && ok "$marked rows marked, as many as the file's nonphysical column" \
+    || fail "$marked rows marked, the file has $in_file"
+  has "the count after the table" "$in_file of 122 states are not physical" out
+  has "the final state said to be not physical" "  not physical: beyond the frame" out ;;
 *) fail "no example '$1'" ;;
 esac
 finish

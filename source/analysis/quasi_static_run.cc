@@ -9,6 +9,7 @@
 #include <cdea/output/paraview_writer.h>
 #include <cdea/output/results_file.h>
 #include <cdea/solver/load_stepper.h>
+#include <cdea/solver/state_check.h>
 
 #include <chrono>
 #include <cmath>
@@ -38,6 +39,19 @@ namespace cdea
     const char *stable_text(const double stable)
     {
       return std::isnan(stable) ? "-" : stable > 0. ? "yes" : "NO";
+    }
+
+    /// Why a state is not physical, from its NonPhysical bits (the /summary
+    /// column nonphysical; NaN or 0: nothing to say).
+    std::string nonphysical_text(const double flags)
+    {
+      if (!(flags > 0.))
+        return "";
+      const int   bits = int(flags);
+      std::string text = bits & outside_frame ? "beyond the frame" : "";
+      if (bits & self_intersection)
+        text += std::string(text.empty() ? "" : ", ") + "crosses itself or the disk";
+      return text;
     }
 
     /// Prints one table row per converged step and streams it to the file.
@@ -77,10 +91,20 @@ namespace cdea
                   << format_fixed(s.s2_min / scene.material.shear_modulus, 6) << std::setw(6)
                   << (s.wrinkled ? "yes" : "no") << std::setw(7)
                   << stable_text(column(s, summary_column::stable))
-                  << std::setw(6) << s.newton_iterations << std::endl;
+                  << std::setw(6) << s.newton_iterations;
+        // A state the film cannot take is marked where the eye is (the
+        // stability column can still say yes: the model's equations hold).
+        const std::string why = nonphysical_text(column(s, summary_column::nonphysical));
+        if (!why.empty())
+          {
+            std::cout << "  ! not physical: " << why;
+            ++n_nonphysical;
+          }
+        std::cout << std::endl;
       }
 
-      StepSummary last;
+      StepSummary  last;
+      unsigned int n_nonphysical = 0; ///< rows marked "! not physical"
 
     private:
       RunStream         &stream;
@@ -230,6 +254,10 @@ namespace cdea
         for (const double x : s.s2_ring_inner)
           std::cout << ' ' << std::setprecision(6) << x / scene.material.shear_modulus;
         std::cout << '\n';
+        const std::string why = nonphysical_text(column(s, summary_column::nonphysical));
+        if (!why.empty())
+          std::cout << "  not physical: " << why
+                    << " (a state of the model's equations that the actuator cannot take)\n";
       }
 
       /// Onset, limit points, breakdown, how arc length ended, and the counts.
@@ -251,6 +279,10 @@ namespace cdea
                     << '\n';
         if (!result.end.empty())
           std::cout << "Arc-length continuation ended: " << result.end << '\n';
+        if (recorder->n_nonphysical > 0)
+          std::cout << recorder->n_nonphysical << " of " << result.steps
+                    << " states are not physical (marked '! not physical' above; the "
+                       "/summary column nonphysical)\n";
         std::cout << result.steps << " steps, " << result.newton_iterations
                   << " Newton iterations, " << std::setprecision(3) << seconds << " s\n";
       }
