@@ -43,6 +43,25 @@ assert np.max(np.abs(d["loss_modulus_kPa"][()] / loss - 1)) < 1e-10
 assert d.attrs["relaxation_time_s"] == 0
 PY
 
+# Output/Step rows: the terminal shows fewer rows, the file every step. The
+# first run's table has a row per step ("time" rows: the drive's steps).
+rows() { grep -cE '^ +[0-9]+ +time ' "$1"; }
+"$exe" run "$src/prm/spectrum.prm" --set 'Time/Cycles=1' --set 'Output/Directory=progress' \
+  --set 'Output/Step rows=progress' > progress.txt 2>&1
+"$exe" run "$src/prm/spectrum.prm" --set 'Time/Cycles=1' --set 'Output/Directory=none' \
+  --set 'Output/Step rows=none' > none.txt 2>&1
+every=$(rows run.txt); progress=$(rows progress.txt); none=$(rows none.txt)
+[ "$every" -gt 100 ] && [ "$progress" -ge 20 ] && [ "$progress" -le 21 ] && [ "$none" -eq 0 ] \
+  && ! grep -q "^ *step " none.txt && grep -q "^Final state: t = 2 s" none.txt \
+  && ok "Step rows: every $every, progress $progress (a twentieth of 2 s each), none 0 rows" \
+  || fail "Step rows: every $every, progress $progress, none $none rows"
+"$PYTHON" - out/spectrum.h5 progress/spectrum.h5 none/spectrum.h5 <<'PY' \
+  && ok "Step rows: the three files hold the same steps" || fail "Step rows: files differ"
+import sys, h5py, numpy as np
+d = [h5py.File(p, "r")["summary"]["displacement_mm"][()] for p in sys.argv[1:]]
+assert len(d[0]) > 100 and all(np.array_equal(d[0], x) for x in d[1:])
+PY
+
 "$exe" run "$src/prm/spectrum.prm" --set 'Time/Cycles=1' --set 'Output/Directory=bad' \
   --set 'Material/Branch relaxation times (s)=0.2, 2' > bad.txt 2>&1
 rc=$?

@@ -110,6 +110,8 @@ namespace cdea
       /// The largest |V| of any ring at any time step (V).
       double highest_voltage = 0.;
       unsigned int               newton_iterations_of_steps = 0;
+      /// Output/Step rows = progress: the waveform time of the next row (s).
+      double next_row_time = 0.;
       /// The disk's natural frequency at the first state in time (NaN before).
       double frequency_start = std::numeric_limits<double>::quiet_NaN();
 
@@ -139,6 +141,8 @@ namespace cdea
                   << (settings.column.present() ? " and water column" : "") << '\n'
                   << "writing " << path << '\n';
         const unsigned int n = scene.n_rings();
+        if (p.output.step_rows == StepRows::none)
+          return;
         std::cout << std::setw(6) << "step" << std::setw(12) << "stage" << std::setw(11)
                   << "time (s)" << std::setw(7 * n) << "V (kV)" << std::setw(12) << "disp (mm)"
                   << std::setw(12) << "stroke (mm)" << std::setw(11) << "level (mm)"
@@ -168,6 +172,31 @@ namespace cdea
         stream->step(s, stepper.fields_wanted() ? stepper.step_fields() : StepFields());
         last = s;
         RunOutput::stop_point();
+        if (s.stage == Stage::voltage)
+          for (const double x : s.voltages)
+            highest_voltage = std::max(highest_voltage, std::abs(x));
+        newton_iterations_of_steps += s.newton_iterations;
+        if (shown(s))
+          print_row(s);
+      }
+
+      /// Output/Step rows: whether the row of @p s is printed. progress: the
+      /// rows before the drive, then one each time t passes another
+      /// twentieth of the waveform's end time.
+      bool shown(const StepSummary &s)
+      {
+        if (p.output.step_rows != StepRows::progress)
+          return p.output.step_rows == StepRows::every;
+        const double t = column(s, summary_column::waveform_time);
+        if (s.stage != Stage::voltage || !(t >= next_row_time))
+          return s.stage != Stage::voltage;
+        const double interval = run.settings.waveform.end_time() / 20.;
+        next_row_time         = (std::floor(t / interval) + 1.) * interval;
+        return true;
+      }
+
+      void print_row(const StepSummary &s) const
+      {
         std::ostringstream v;
         for (const double x : s.voltages)
           v << cell(summary_column::voltage.in_file_units(x), 3, 7);
@@ -179,10 +208,6 @@ namespace cdea
                   << cell(column(s, summary_column::disk_velocity), 2, 11)
                   << cell(s.s2_min / scene.material.shear_modulus, 4, 11) << ' ' << std::setw(4)
                   << s.newton_iterations << '\n';
-        newton_iterations_of_steps += s.newton_iterations;
-        if (s.stage == Stage::voltage)
-          for (const double x : s.voltages)
-            highest_voltage = std::max(highest_voltage, std::abs(x));
       }
 
       /// A run whose rings stayed at 0 V at every time step has shown nothing

@@ -98,8 +98,13 @@ namespace cdea
       prm.enter_subsection("Calibration");
       prm.add("Free parameters", "shear modulus, Jlim", free_parameters_text,
               "What `cdea fit` adjusts to the data, separated by ',': any of shear "
-              "modulus, Jlim, permittivity, mass, pre-stretch. The others keep "
-              "their values from the file, which are also the starting values.");
+              "modulus, Jlim, permittivity, mass, pre-stretch, and any constant of "
+              "the film's law by its Material entry, with or without the unit "
+              "(Mooney-Rivlin C2, Ogden mu 2, ...); a viscoelastic film's branches "
+              "as branch K shear modulus and branch K relaxation time (K from 1). "
+              "An unknown name is refused with the list the prm's law accepts. The "
+              "others keep their values from the file; an actuator, creep or DMA fit "
+              "starts from them, a material-test fit from guesses made from the data.");
       prm.add("Max iterations", "100", max_iterations,
               "Iterations of the least-squares solver before it stops unconverged.",
               between(1, 100000));

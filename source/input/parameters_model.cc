@@ -16,6 +16,9 @@ namespace cdea
       {"near folds", StabilityEigenvalue::near_folds}};
     const Choices<WrinklingModel> wrinkling_choices{{"check", WrinklingModel::check},
                                                     {"relaxed", WrinklingModel::relaxed}};
+    const Choices<StepRows> step_rows_choices{{"every", StepRows::every},
+                                              {"progress", StepRows::progress},
+                                              {"none", StepRows::none}};
   } // namespace
 
   std::string to_string(const Continuation choice)
@@ -219,6 +222,12 @@ namespace cdea
               "Cells around the axis in the revolved surface of the ParaView "
               "output.",
               between(3, 3600));
+      prm.add("Step rows", "every", step_rows, step_rows_choices,
+              "The rows of a time run's table in the terminal (the results file has "
+              "every step whatever this says): every (a row per step), progress (a "
+              "row each time another twentieth of the waveform's time has passed, "
+              "and every row of the stages before it), none (the banner, the events "
+              "and the final state only).");
       prm.leave_subsection();
     }
   } // namespace parameters

@@ -68,6 +68,14 @@ namespace cdea
     mma
   };
 
+  /// Output/Step rows: which steps of a time run the terminal's table shows.
+  enum class StepRows
+  {
+    every,    ///< a row per step
+    progress, ///< a row per twentieth of the waveform's time, and every row before it
+    none      ///< no rows: the banner, events and the final state only
+  };
+
   /// The prm spelling of each choice, for messages.
   std::string to_string(Continuation choice);
   std::string to_string(WrinklingModel choice);
@@ -171,6 +179,7 @@ namespace cdea
       std::string  base_name;
       bool         paraview;          ///< also write <Base name>.pvd and its VTU files
       unsigned int paraview_segments; ///< cells around the axis in the revolved surface
+      StepRows     step_rows;         ///< a time run's rows in the terminal
       void         declare(ParameterDeclarations &prm);
     };
 
