@@ -12,7 +12,9 @@
 #    errors of the truth; the three files written;
 # 2. one file: the held-out error cannot be computed, the data cannot decide;
 # 3. bad candidate lists: exit 1, the entry and what is allowed named,
-#    nothing written.
+#    nothing written;
+# 4. postprocess/plot_fit.py (Agg) draws the material-test fit (a row per
+#    file) and the model selection of 1, and refuses a file of neither.
 source "$(dirname "$0")/script_helpers.bash"
 sed 's/set Directory           = results/set Directory = out/' "$src/prm/fit-material.prm" > fit.prm
 cp "$src"/prm/fit-material-*.csv .
@@ -97,4 +99,23 @@ refused "a branch count not a number" "'elastic x' has no branch count from 0 to
 refused "too many branches" "'elastic 21' has no branch count from 0 to 20" "elastic 21"
 refused "a model twice" "Calibration/Candidate models: 'elastic 1' is given twice" "elastic 1, elastic 1"
 refused "an empty item" "'' is not 'LAW N'" "elastic 0,, elastic 1"
+
+# 4. The plots of the fit and of the selection.
+"$PYTHON" "$src/postprocess/plot_fit.py" out/fit-material_fit.h5 --out fit.png > p1.txt 2>&1 \
+  && "$PYTHON" - fit.png 3 <<'PY' && ok "plot_fit.py: the material-test fit, a row per file" || { fail "plot_fit.py on the fit"; cat p1.txt; }
+import sys
+import matplotlib.image as image
+height, width = image.imread(sys.argv[1]).shape[:2]
+print("   ", width, "x", height)
+assert width > 1200 and height > 300 * int(sys.argv[2])
+PY
+"$PYTHON" "$src/postprocess/plot_fit.py" out/fit-material_models.h5 > p2.txt 2>&1 \
+  && [ -s out/fit-material_models.png ] && ok "plot_fit.py: the model selection" \
+  || { fail "plot_fit.py on the selection"; cat p2.txt; }
+"$PYTHON" "$src/postprocess/plot_fit.py" out/one_models.h5 --out one.png > p3.txt 2>&1 && [ -s one.png ] \
+  && ok "plot_fit.py: a selection of one file (no held-out error)" || { fail "plot_fit.py, one file"; cat p3.txt; }
+printf 'x' > not.h5
+"$PYTHON" "$src/postprocess/plot_fit.py" not.h5 > p4.txt 2>&1
+[ $? -ne 0 ] && grep -q "plot_fit.py: error: cannot read 'not.h5'" p4.txt && ok "plot_fit.py refuses a file it cannot read" \
+  || fail "plot_fit.py on not.h5: $(cat p4.txt)"
 finish
