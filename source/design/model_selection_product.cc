@@ -26,6 +26,22 @@ namespace cdea
     {
       return i < m.fit.tests.size() ? &m.fit.tests[i] : nullptr;
     }
+
+    /// /tests: each file's name, kind and samples.
+    void set_files(ProductGroup &group, const std::vector<MaterialTestData> &tests)
+    {
+      std::vector<std::string> files, kinds;
+      std::vector<double>      samples;
+      for (const MaterialTestData &t : tests)
+        {
+          files.push_back(t.name);
+          kinds.push_back(test_kind_name(t.history.kind));
+          samples.push_back(double(t.size()));
+        }
+      group.set(material_fit_quantity::file, files)
+        .set(material_fit_quantity::kind, kinds)
+        .set(material_fit_quantity::samples, samples);
+    }
   } // namespace
 
   Product model_selection_product(const ModelSelection                &s,
@@ -93,18 +109,7 @@ namespace cdea
              return m.held_out[i].relative;
            }),
            by_file);
-    std::vector<std::string> files, kinds;
-    std::vector<double>      file_samples;
-    for (const MaterialTestData &t : tests)
-      {
-        files.push_back(t.name);
-        kinds.push_back(test_kind_name(t.history.kind));
-        file_samples.push_back(double(t.size()));
-      }
-    product.group("/tests")
-      .set(material_fit_quantity::file, files)
-      .set(material_fit_quantity::kind, kinds)
-      .set(material_fit_quantity::samples, file_samples);
+    set_files(product.group("/tests"), tests);
     product.group("/constants")
       .set(q::constant_model, constant_model)
       .set(q::constant_name, constant_names)
