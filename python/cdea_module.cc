@@ -507,6 +507,7 @@ namespace
 
 void bind_design(py::module_ &); // python/design_bindings.cc: optimize, fit
 void bind_viscous_fit(py::module_ &); // python/viscous_fit_bindings.cc: fit_viscoelastic
+void bind_material_fit(py::module_ &); // python/material_fit_bindings.cc: fit on material tests
 
 PYBIND11_MODULE(cdea, m)
 {
@@ -536,4 +537,5 @@ PYBIND11_MODULE(cdea, m)
         "True once this process has started MPI (only the Trilinos KLU solver does)");
   bind_design(m);
   bind_viscous_fit(m);
+  bind_material_fit(m);
 }

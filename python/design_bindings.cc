@@ -7,6 +7,7 @@
 
 #include <cdea/base/format.h>
 #include <cdea/design/fit.h>
+#include <cdea/design/material_test_data.h>
 #include <cdea/design/optimize.h>
 #include <cdea/input/parameter_input.h>
 #include <cdea/input/parameters.h>
@@ -31,6 +32,10 @@ namespace py = pybind11;
 using namespace cdea;
 
 void require_directory_of(const std::string &file); // python/cdea_module.cc
+py::object fit_material_tests(const py::module_ &m, const py::object &prm, const py::object &files,
+                              const py::object &predict, const py::object &models,
+                              const py::object &overrides,
+                              bool progress); // python/material_fit_bindings.cc
 
 namespace
 {
@@ -103,6 +108,21 @@ namespace
       }
     return read_calibration_data(path_of(data), n_rings, ceiling);
   }
+  /// Whether cdea.fit()'s data are material tests: a list of files or
+  /// texts, or one whose header names a test's stretch (or force_N).
+  bool is_material_data(const py::object &data)
+  {
+    if (py::isinstance<py::list>(data) || py::isinstance<py::tuple>(data))
+      return true;
+    if (py::isinstance<py::str>(data))
+      if (const std::string s = data.cast<std::string>(); s.find('\n') != std::string::npos)
+        {
+          std::istringstream in(s);
+          return is_material_test(in);
+        }
+    return is_material_test(path_of(data));
+  }
+
   void bind_optimize(py::module_ &m)
   {
     py::class_<Optimization>(m, "OptimizeResult",
@@ -216,7 +236,9 @@ namespace
     m.def(
       "fit",
       [m](const py::object &prm, const py::object &data, const py::object &overrides,
-          const bool progress) {
+          const bool progress, const py::object &predict, const py::object &models) -> py::object {
+        if (is_material_data(data) || !predict.is_none() || !models.is_none())
+          return fit_material_tests(m, prm, data, predict, models, overrides, progress);
         Calibration           c;
         std::string           parameter_text;
         const Parameters      p    = design_parameters(m, prm, overrides, parameter_text);
@@ -233,12 +255,15 @@ namespace
                     });
         c.result  = run.result;
         c.product = fit_product(parameter_text, points, c.settings, run);
-        return c;
+        return py::cast(std::move(c));
       },
       py::arg("prm"), py::arg("data"), py::arg("overrides") = py::none(),
-      py::arg("progress") = false,
+      py::arg("progress") = false, py::arg("predict") = py::none(), py::arg("models") = py::none(),
       "`cdea fit` in-process; prm: a path or prm text, data: a CSV path or CSV text (a str "
-      "with a line break), overrides: {'Subsection/Entry': value}. Writes nothing.");
+      "with a line break), overrides: {'Subsection/Entry': value}. Material tests (a list of "
+      "files, or one file whose header names a test's stretch): fitted jointly, predict: files "
+      "evaluated at the fitted values, models: candidate models ['elastic 0', 'elastic 1'] "
+      "compared (Calibration/Candidate models); returns a MaterialFitResult. Writes nothing.");
   }
 } // namespace
 

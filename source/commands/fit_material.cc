@@ -11,6 +11,9 @@
 #include <cdea/commands/fit_material.h>
 #include <cdea/design/fit_data.h>
 #include <cdea/design/material_fit.h>
+#include <cdea/design/model_selection.h>
+#include <cdea/input/parameters.h>
+#include <cdea/output/safe_files.h>
 #include <cdea/input/validation.h>
 
 #include <algorithm>
@@ -58,7 +61,13 @@ namespace cdea
         const Parameters &p      = invocation.parameters;
         const auto [fit, predict] = fit_and_predict_files(invocation.arguments);
         base                      = p.scene();
-        settings.fit              = free_parameter_settings(p);
+        for (const CandidateModel &c : candidate_models(p.calibration.candidate_models_text))
+          candidates.push_back(candidate_setup(invocation.input, c));
+        if (candidates.empty())
+          settings.fit = free_parameter_settings(p);
+        else if (const std::string models = p.results_path("_models");
+                 !refused_names(models).empty())
+          throw InputError("cannot write '" + models + "': " + refused_names(models));
         const TestSpecimen specimen = test_specimen(p);
         for (const std::string &file : fit)
           {
@@ -70,6 +79,11 @@ namespace cdea
         std::size_t samples = 0;
         for (const MaterialTestData &t : fitted)
           samples += t.size();
+        for (const CandidateSetup &c : candidates)
+          if (samples < c.fit.free.size())
+            throw InputError(std::to_string(samples) + " samples in the files to fit for the " +
+                             std::to_string(c.fit.free.size()) + " constants of candidate '" +
+                             c.candidate.name() + "' (Calibration/Candidate models)");
         if (samples < settings.fit.free.size())
           throw InputError(std::to_string(samples) + " samples in the files to fit for " +
                            std::to_string(settings.fit.free.size()) +
@@ -80,6 +94,9 @@ namespace cdea
 
       int run(Invocation &invocation) override
       {
+        if (!candidates.empty())
+          return run_model_selection(invocation, candidates, fitted, settings.test_weights,
+                                     predicted, settings);
         const auto start = std::chrono::steady_clock::now();
         print_banner();
         const MaterialFitResult r = fit_material_tests(
@@ -89,32 +106,14 @@ namespace cdea
               std::cout << "  " << format_number(x, 8);
             std::cout << std::endl;
           });
-        if (!r.fit.started)
-          return fit_not_started(invocation, r.fit.status,
-                                 "change the start values in the parameter file; ");
-        std::vector<std::string> warnings = r.fit.warnings;
-        const std::vector<MaterialTestOutcome> outcomes = material_test_outcomes(
-          base, settings.fit.free, r, fitted, settings.test_weights, predicted, warnings);
-        print_fitted_values(settings.fit.free, r.fit);
-        print_files(outcomes);
-        std::cout << "weighted rms residual of the fitted files "
-                  << format_number(units::kPa.from_si(r.fit.rms), 4)
-                  << " kPa, condition number of the scaled Jacobian "
-                  << format_number(r.fit.condition, 3) << '\n';
-        for (const auto &w : warnings)
-          std::cout << "WARNING: " << w << '\n';
-        std::cout << r.fit.iterations << " iterations of the best of " << r.starts.size()
-                  << " start(s), " << r.evaluations << " evaluations, " << std::setprecision(3)
-                  << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
-                  << " s\n";
-        const Product product =
-          material_fit_product(invocation.parameter_text, settings.fit, r, outcomes);
-        return write_fit_files(invocation, base, settings.fit.free, r.fit, product);
+        return finish_material_fit(invocation, base, settings.fit, r, fitted,
+                                   settings.test_weights, predicted, start);
       }
 
     private:
       Scene                         base;
       MaterialFitSettings           settings;
+      std::vector<CandidateSetup>   candidates; ///< Calibration/Candidate models
       std::vector<MaterialTestData> fitted, predicted;
 
       void print_banner() const
@@ -132,31 +131,31 @@ namespace cdea
         std::cout << "\n" << std::setw(5) << "iter" << std::setw(16) << "cost (kPa^2)"
                   << "  parameters (SI)\n";
       }
-
-      /// Per file: fitted or predicted, weight, samples, rms (kPa), largest
-      /// |stress| (kPa), rms relative to it, and the kind.
-      static void print_files(const std::vector<MaterialTestOutcome> &outcomes)
-      {
-        std::size_t width = 4;
-        for (const MaterialTestOutcome &o : outcomes)
-          width = std::max(width, o.data->name.size());
-        std::cout << std::left << std::setw(int(width) + 2) << "file" << std::setw(9) << "role"
-                  << std::right << std::setw(8) << "weight" << std::setw(9) << "samples"
-                  << std::setw(14) << "rms (kPa)" << std::setw(16) << "largest (kPa)"
-                  << std::setw(11) << "relative" << "  kind\n";
-        for (const MaterialTestOutcome &o : outcomes)
-          {
-            const TestMeasures &m = o.measures;
-            std::cout << std::left << std::setw(int(width) + 2) << o.data->name << std::setw(9)
-                      << (o.fitted ? "fitted" : "predicted") << std::right << std::setw(8)
-                      << format_number(o.weight, 4) << std::setw(9) << m.samples << std::setw(14)
-                      << format_number(units::kPa.from_si(m.rms), 4) << std::setw(16)
-                      << format_number(units::kPa.from_si(m.largest), 5) << std::setw(11)
-                      << format_number(m.relative, 3) << "  "
-                      << test_kind_name(o.data->history.kind) << '\n';
-          }
-      }
     };
+
+    /// Per file: fitted or predicted, weight, samples, rms (kPa), largest
+    /// |stress| (kPa), rms relative to it, and the kind.
+  void print_files(const std::vector<MaterialTestOutcome> &outcomes)
+    {
+      std::size_t width = 4;
+      for (const MaterialTestOutcome &o : outcomes)
+        width = std::max(width, o.data->name.size());
+      std::cout << std::left << std::setw(int(width) + 2) << "file" << std::setw(9) << "role"
+                << std::right << std::setw(8) << "weight" << std::setw(9) << "samples"
+                << std::setw(14) << "rms (kPa)" << std::setw(16) << "largest (kPa)"
+                << std::setw(11) << "relative" << "  kind\n";
+      for (const MaterialTestOutcome &o : outcomes)
+        {
+          const TestMeasures &m = o.measures;
+          std::cout << std::left << std::setw(int(width) + 2) << o.data->name << std::setw(9)
+                    << (o.fitted ? "fitted" : "predicted") << std::right << std::setw(8)
+                    << format_number(o.weight, 4) << std::setw(9) << m.samples << std::setw(14)
+                    << format_number(units::kPa.from_si(m.rms), 4) << std::setw(16)
+                    << format_number(units::kPa.from_si(m.largest), 5) << std::setw(11)
+                    << format_number(m.relative, 3) << "  "
+                    << test_kind_name(o.data->history.kind) << '\n';
+        }
+    }
 
     /// What a data file holds, in words, for the refusal of a mix.
     std::string kind_words(const std::string &file)
@@ -203,6 +202,38 @@ namespace cdea
                                          "displacement points, creep curves and DMA tables one "
                                          "file at a time"));
     return false;
+  }
+
+  int finish_material_fit(Invocation &invocation, const Scene &base, const FitSettings &settings,
+                          const MaterialFitResult &r, const std::vector<MaterialTestData> &fitted,
+                          const std::vector<double>                            &weights,
+                          const std::vector<MaterialTestData>                  &predicted,
+                          const std::chrono::steady_clock::time_point          &start,
+                          const Product                                        *models)
+  {
+    if (!r.fit.started)
+      return fit_not_started(invocation, r.fit.status,
+                             "change the start values in the parameter file; ");
+    std::vector<std::string>               warnings = r.fit.warnings;
+    const std::vector<MaterialTestOutcome> outcomes =
+      material_test_outcomes(base, settings.free, r, fitted, weights, predicted, warnings);
+    print_fitted_values(settings.free, r.fit);
+    print_files(outcomes);
+    std::cout << "weighted rms residual of the fitted files "
+              << format_number(units::kPa.from_si(r.fit.rms), 4)
+              << " kPa, condition number of the scaled Jacobian "
+              << format_number(r.fit.condition, 3) << '\n';
+    for (const auto &w : warnings)
+      std::cout << "WARNING: " << w << '\n';
+    std::cout << r.fit.iterations << " iterations of the best of " << r.starts.size()
+              << " start(s), " << r.evaluations << " evaluations, " << std::setprecision(3)
+              << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+              << " s\n";
+    const Product product = material_fit_product(invocation.parameter_text, settings, r, outcomes);
+    if (!models)
+      return write_fit_files(invocation, base, settings.free, r.fit, product);
+    return write_fit_files(invocation, base, settings.free, r.fit, product,
+                           {{models, invocation.parameters.results_path("_models")}});
   }
 
   std::unique_ptr<ViscousFitJob> material_fit_job()

@@ -157,29 +157,35 @@ namespace cdea
 
   int write_fit_files(const Invocation &invocation, const Scene &base,
                       const std::vector<SceneParameter> &free, const FitResult &r,
-                      const Product &product)
+                      const Product &product, const std::vector<ProductPath> &more)
   {
     const Parameters  &p        = invocation.parameters;
     const std::string &h5_path  = invocation.output.path;
     const std::string  prm_path = p.output.directory + "/" + p.output.base_name + "_fit.prm";
+    std::vector<std::string> paths{h5_path, prm_path};
+    for (const ProductPath &m : more)
+      paths.push_back(m.path);
     const auto write = [&] {
       write_product_file(product, h5_path);
       if (r.fitted.size() > 0)
         write_changed_parameters(invocation.input, prm_path, fitted_entries(base, free, r.values),
                                  "# Written by cdea fit: the parameter file with the "
                                  "fitted values.\n");
+      for (const ProductPath &m : more)
+        write_product_file(*m.product, m.path);
     };
-    return finish_fit(write, h5_path, prm_path, r);
+    return finish_fit(write, paths, r);
   }
 
-  int finish_fit(const std::function<void()> &write_results, const std::string &h5_path,
-                 const std::string &prm_path, const FitResult &r)
+  int finish_fit(const std::function<void()> &write_results, const std::vector<std::string> &paths,
+                 const FitResult &r)
   {
+    const std::string &h5_path = paths.front();
     const int                signal = StopOnSignals::requested();
     std::vector<std::string> wrote;
     try
       {
-        ReplaceTogether pair({h5_path, prm_path});
+        ReplaceTogether pair(paths);
         write_results();
         wrote = pair.commit(signal != 0);
       }
@@ -189,7 +195,11 @@ namespace cdea
                   << " (older files of this name stay as they were)\n";
         return exit_not_complete;
       }
-    std::cout << "wrote " << wrote[0] << (wrote[1].empty() ? "" : " and " + wrote[1]) << '\n';
+    std::string list;
+    for (const std::string &w : wrote)
+      if (!w.empty())
+        list += (list.empty() ? "" : w == wrote.back() ? " and " : ", ") + w;
+    std::cout << "wrote " << list << '\n';
     if (signal)
       {
         std::cerr << "cdea: interrupted by " << signal_name(signal)

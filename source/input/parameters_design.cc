@@ -112,6 +112,16 @@ namespace cdea
               "Relative change of the cost, of the parameters and of the gradient "
               "at which the least-squares solver has converged.",
               at_least(0.));
+      prm.add("Candidate models", "", candidate_models_text,
+              "Material tests only: models `cdea fit` fits and compares (model "
+              "selection, doc/materials.md), separated by ',', each a law of "
+              "Material/Model without internal variables and a number of viscous "
+              "branches, e.g. 'elastic 0, elastic 1, elastic 2, neo-hooke 0'; "
+              "branches (1 to 20) stand beside network A's Gent law (elastic) "
+              "only. Each model's free constants are its law's own (shear "
+              "modulus, Jlim where it has one, the law's constants) and every "
+              "branch's modulus and relaxation time; Free parameters is not used. "
+              "Empty: one fit of Free parameters.");
       prm.leave_subsection();
     }
 

@@ -39,6 +39,7 @@ namespace cdea
     inline constexpr Unit none{""};                 ///< text
     inline constexpr Unit mm{"mm", 1e3, 1., 1e-3};
     inline constexpr Unit kPa{"kPa", 1e-3, 1., 1e3};
+    inline constexpr Unit kPa2{"kPa^2", 1e-6, 1., 1e6}; ///< sums of squared stresses
     inline constexpr Unit kV{"kV", 1e-3, 1., 1e3};
     inline constexpr Unit MV_per_m{"MV/m", 1e-6, 1., 1e6};
     inline constexpr Unit GV_per_m{"GV/m", 1e-9, 1., 1e9};

@@ -40,20 +40,29 @@ namespace cdea
   void print_correlation(const std::vector<SceneParameter> &free, const FitResult &r,
                          int label_width);
 
-  /// How every fit ends: @p write_results (the fit file, and the parameter
-  /// file with the fitted values if any, replaced together or not at all;
-  /// after a stop beside older ones, to their partial names), "wrote ...",
-  /// and the exit code: 2 if writing failed (older files stay), a stop was
-  /// asked for or the fit did not converge (each said on stderr), else 0.
-  int finish_fit(const std::function<void()> &write_results, const std::string &h5_path,
-                 const std::string &prm_path, const FitResult &r);
+  /// How every fit ends: @p write_results (the files at @p paths, the fit
+  /// file first, then the parameter file with the fitted values if any and
+  /// any others, replaced together or not at all; after a stop beside older
+  /// ones, to their partial names), "wrote ...", and the exit code: 2 if
+  /// writing failed (older files stay), a stop was asked for or the fit did
+  /// not converge (each said on stderr), else 0.
+  int finish_fit(const std::function<void()> &write_results, const std::vector<std::string> &paths,
+                 const FitResult &r);
+
+  /// A further product a fit writes with its pair of files, and where.
+  struct ProductPath
+  {
+    const Product *product;
+    std::string    path;
+  };
 
   /// Writes @p product to the claimed fit file and, if the fit has fitted
   /// values, <Base name>_fit.prm with the @p values of @p free over the
-  /// parameter file (@p base its scene), together, and ends as finish_fit().
+  /// parameter file (@p base its scene), and the products @p more, together,
+  /// and ends as finish_fit().
   int write_fit_files(const Invocation &invocation, const Scene &base,
                       const std::vector<SceneParameter> &free, const FitResult &r,
-                      const Product &product);
+                      const Product &product, const std::vector<ProductPath> &more = {});
 
   /// A fit that could not start (its start values failed, or a stop was
   /// asked for during the start's evaluation): nothing is written (an older

@@ -252,6 +252,7 @@ namespace cdea
     struct Calibration
     {
       std::string  free_parameters_text; ///< "shear modulus, Jlim"
+      std::string  candidate_models_text; ///< "elastic 0, elastic 1" (model selection)
       unsigned int max_iterations;
       double       tolerance;
       void         declare(ParameterDeclarations &prm);
