@@ -36,12 +36,13 @@ namespace cdea
       return text;
     }
 
-    /// A constant that may be uncertain: its names (lower case; the
-    /// entry's, and the fit file's SceneParameter::name()) and the factor
-    /// from its entry's unit to the sensitivities' unit.
+    /// A constant that may be uncertain: its names (lower case; as
+    /// Calibration/Free parameters names it, its entry of the parameter file,
+    /// and the fit file's SceneParameter::name()) and the factor from its
+    /// entry's unit to the sensitivities' unit.
     struct Candidate
     {
-      std::string    name, file_name;
+      std::string    name, entry, file_name;
       SceneParameter parameter;
       double         to_si = 1.;
     };
@@ -58,16 +59,17 @@ namespace cdea
     std::vector<Candidate> candidates(const MembraneLaw &law)
     {
       std::vector<Candidate> list = {
-        {"shear modulus", "", {ParameterKind::shear_modulus}, units::kPa.to_si},
-        {"jlim", "", {ParameterKind::jlim}, 1.},
-        {"permittivity", "", {ParameterKind::permittivity}, 1.},
-        {"mass", "", {ParameterKind::mass}, units::g.to_si},
-        {"pre-stretch", "", {ParameterKind::prestretch}, 1.}};
+        {"shear modulus", "shear modulus (kpa)", "", {ParameterKind::shear_modulus},
+         units::kPa.to_si},
+        {"jlim", "jlim", "", {ParameterKind::jlim}, 1.},
+        {"permittivity", "permittivity (f/m)", "", {ParameterKind::permittivity}, 1.},
+        {"mass", "mass (g)", "", {ParameterKind::mass}, units::g.to_si},
+        {"pre-stretch", "prestretch", "", {ParameterKind::prestretch}, 1.}};
       if (!law.depends_on(LawParameter::jlim))
         list.erase(list.begin() + 1);
       for (const LawConstant &c : law.own_constants())
-        list.push_back({lower(without_unit(c.entry)), "", {ParameterKind::law_constant, 0, c.entry},
-                        1.});
+        list.push_back({lower(without_unit(c.entry)), lower(c.entry), "",
+                        {ParameterKind::law_constant, 0, c.entry}, 1.});
       for (Candidate &c : list)
         c.file_name = lower(c.parameter.name());
       return list;
@@ -88,7 +90,7 @@ namespace cdea
     {
       const std::string k = lower(trim_blanks(key));
       for (const Candidate &c : list)
-        if (k == c.name || k == c.file_name || k == lower(c.parameter.entry))
+        if (k == c.name || k == c.entry || k == c.file_name)
           return c;
       throw InputError(entry + ": '" + trim_blanks(key) +
                        "' is not a constant of this scene that can be uncertain (any of " +
@@ -200,7 +202,9 @@ namespace cdea
       const hdf5::Handle attribute(H5Aopen(file, "free_parameters", H5P_DEFAULT), H5Aclose);
       const hdf5::Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
       char              *text = nullptr;
+      // As the writer stores text: variable length, UTF-8.
       if (attribute < 0 || type < 0 || H5Tset_size(type, H5T_VARIABLE) < 0 ||
+          H5Tset_cset(type, H5T_CSET_UTF8) < 0 ||
           H5Aread(attribute, type, &text) < 0 || text == nullptr)
         return false;
       names = split_list(text, ';');
