@@ -135,13 +135,13 @@ namespace cdea
           const Candidate &k      = find(list, name, entry);
           for (const SceneParameter &p : c.parameters)
             if (p.kind == k.parameter.kind && p.entry == k.parameter.entry)
-              throw InputError(entry + ": '" + k.name + "' is given twice");
+              throw InputError(entry + ": '" + name + "' is given twice");
           const bool   relative = text.back() == '%';
           const double value    = parse_number(
             trim_blanks(relative ? text.substr(0, text.size() - 1) : text), entry, text);
           if (value < 0.)
-            throw InputError(entry + ": '" + k.name + "': a standard deviation must be zero or "
-                                                      "positive, got " + text);
+            throw InputError(entry + ": '" + name + "': a standard deviation must be zero or "
+                                                    "positive, got " + text);
           c.parameters.push_back(k.parameter);
           c.names.push_back(name);
           sd.push_back(relative ? value / 100. * std::abs(parameter_value(scene, k.parameter)) :
@@ -167,7 +167,7 @@ namespace cdea
                     c.parameters[j].entry == k.parameter.entry)
                   index[s] = j;
               if (index[s] == n)
-                throw InputError(pairs + ": '" + k.name +
+                throw InputError(pairs + ": '" + trim_blanks(two[s]) +
                                  "' has no standard deviation (Uncertainty/Standard deviations)");
             }
           const double rho = parse_number(text, pairs, text);
