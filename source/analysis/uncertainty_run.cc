@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 namespace cdea
@@ -101,27 +102,39 @@ namespace cdea
     return g;
   }
 
+  RunAnswers quiet_run(const RunInput &input, const Scene &scene, ProductGroup *linear_rows)
+  {
+    const std::unique_ptr<MembraneModel> model = make_fe_model(input.parameters, scene);
+    LoadStepper stepper(scene, *model, stepping_settings(input.parameters));
+    add_run_postprocessors(stepper, input.parameters, scene);
+    std::optional<LinearRunUncertainty> linear;
+    if (linear_rows)
+      linear.emplace(input.uncertainty, scene);
+    StepSummary last;
+    stepper.on_step = [&](const StepSummary &s) {
+      if (linear && s.stage == Stage::dead_load && s.load_factor == 1.)
+        linear->reference(*model);
+      last = s;
+    };
+    stepper.on_onset = [&](const OnsetRecord &onset) {
+      if (linear)
+        linear->onset(*model, onset);
+    };
+    try
+      {
+        const RunResult result = stepper.run();
+        if (linear && result.completed)
+          *linear_rows = linear->finish(*model);
+        return run_answers(last, result);
+      }
+    catch (const std::exception &)
+      {
+        return {}; // a sample outside the model's range: not completed
+      }
+  }
+
   namespace
   {
-    /// One run of @p input's parameters on @p scene, without output.
-    RunAnswers sample_run(const RunInput &input, const Scene &scene)
-    {
-      const std::unique_ptr<MembraneModel> model = make_fe_model(input.parameters, scene);
-      LoadStepper stepper(scene, *model, stepping_settings(input.parameters));
-      add_run_postprocessors(stepper, input.parameters, scene);
-      StepSummary last;
-      stepper.on_step = [&](const StepSummary &s) { last = s; };
-      try
-        {
-          const RunResult result = stepper.run();
-          return run_answers(last, result);
-        }
-      catch (const std::exception &)
-        {
-          return {}; // a sample outside the model's range: not completed
-        }
-    }
-
     /// Statistics of every answer over the completed samples, as rows.
     ProductGroup sample_rows(const std::vector<RunAnswers> &runs, const unsigned int n_rings)
     {
@@ -178,7 +191,7 @@ namespace cdea
     for (unsigned int i = 0; i < constants.samples && !StopOnSignals::requested(); ++i)
       {
         const Eigen::VectorXd p = values.row(i).transpose();
-        runs.push_back(sample_run(input, with_constants(input.scene, constants, p)));
+        runs.push_back(quiet_run(input, with_constants(input.scene, constants, p)));
         progress.add(1);
       }
     progress.finish();

@@ -17,6 +17,7 @@
 #include <cdea/model/equilibrium_model.h>
 #include <cdea/model/product.h>
 #include <cdea/model/records.h>
+#include <cdea/solver/load_stepper.h>
 
 #include <memory>
 #include <string>
@@ -58,6 +59,12 @@ namespace cdea
     Eigen::VectorXd               reference_displacement, reference_volume;
     std::vector<Eigen::VectorXd> onset_gradients; ///< per ring; empty: no onset
   };
+
+  /// A run of @p input's parameters on @p scene without output (as `cdea
+  /// run` solves it), and with @p linear_rows the linear propagation of
+  /// input.uncertainty along it into them. A run that throws is not completed.
+  RunAnswers quiet_run(const RunInput &input, const Scene &scene,
+                       ProductGroup *linear_rows = nullptr);
 
   /// Monte-Carlo: constants.samples runs of @p input with sampled constants
   /// (round-robin over the MPI ranks when launched by mpirun, gathered on
