@@ -37,13 +37,11 @@ SI = {"Shear modulus (kPa)": 1e3, "Jlim": 1.0, "Permittivity (F/m)": 1.0}
 
 
 def prm_text(tmp, base, extra, source="default.prm"):
-    with open(os.path.join(SRC, "prm", source)) as f:
-        text = f.read()
-    text += extra + "\nsubsection Output\n  set Directory = .\n  set Base name = " + base + \
-        "\nend\n"
+    """A parameter file in tmp: prm/SOURCE, then extra, writing tmp/BASE.h5."""
     path = os.path.join(str(tmp), base + ".prm")
     with open(path, "w") as f:
-        f.write(text)
+        f.write("include %s\n%s\nsubsection Output\n  set Directory = .\n"
+                "  set Base name = %s\nend\n" % (os.path.join(SRC, "prm", source), extra, base))
     return path
 
 
