@@ -6,6 +6,9 @@ onset of wrinkling at 5.38 kV):
   change and onset voltage against central differences of the answers
   (relative steps of 1e-4 in each constant) propagated through the same
   covariance, 3 % on mu, Jlim and eps with a correlation of mu and Jlim;
+- the same for the voltages of the two folds of prm/fold-full.prm (arc
+  length): the null vector of the fold's tangent, dt*/dp = -(phi^T dR/dp) /
+  (phi^T dR/dt);
 - a one-parameter case against its closed form: the state depends on the
   permittivity only through eps Phi^2, so V_onset ~ eps^(-1/2) and
   sd(V_onset) = V_onset sd(eps) / (2 eps);
@@ -105,6 +108,38 @@ def test_linear_against_central_differences(tmp_path):
     print("linear", linear, "central differences", differences)
     assert np.all(linear > 0)
     assert np.allclose(linear, differences, rtol=2e-5, atol=0)
+
+
+def fold_voltages(tmp, base, extra):
+    """The ring voltages of each limit point of prm/fold-full.prm (arc length to 8 kV)."""
+    path = prm_text(tmp, base, extra, source="fold-full.prm")
+    done = subprocess.run([EXE, "run", path], cwd=str(tmp), capture_output=True, text=True)
+    assert done.returncode == 0, done.stdout + done.stderr
+    with h5py.File(os.path.join(str(tmp), base + ".h5"), "r") as f:
+        return np.ravel(f["summary"].attrs["limit_point_voltage_kV"]), dict(f["summary"].attrs)
+
+
+def test_fold_voltages_against_central_differences(tmp_path):
+    if not EXE:
+        pytest.skip("CDEA_EXECUTABLE not set (run through ctest)")
+    deviations = ", ".join("%s: 3%%" % NAMES[k] for k in NOMINAL)
+    _, attrs = fold_voltages(tmp_path, "linear",
+                             uncertainty("linear", deviations, "Jlim, permittivity: -0.4"))
+    sd = np.array([0.03 * NOMINAL[k] * SI[k] for k in NOMINAL])
+    C = np.diag(sd) @ np.array([[1, 0, 0], [0, 1, -0.4], [0, -0.4, 1]]) @ np.diag(sd)
+    gradient = []
+    for k, value in NOMINAL.items():
+        h = 1e-4 * value
+        up, _ = fold_voltages(tmp_path, "up", material({**NOMINAL, k: value + h}))
+        down, _ = fold_voltages(tmp_path, "down", material({**NOMINAL, k: value - h}))
+        gradient.append((up - down) / (2 * h * SI[k]))
+    G = np.array(gradient)  # constants x folds
+    differences = np.sqrt(np.einsum("ia,ij,ja->a", G, C, G))
+    linear = np.ravel(attrs["limit_point_voltage_std_kV"])
+    print("folds", np.ravel(attrs["limit_point_voltage_kV"]), "linear sd", linear,
+          "central differences", differences)
+    assert len(linear) == 2 and np.all(linear > 0.05)
+    assert np.allclose(linear, differences, rtol=1e-5, atol=0)
 
 
 def test_one_parameter_closed_form(tmp_path):

@@ -202,6 +202,8 @@ namespace cdea
                     << " mm (r/a = " << onset.radius / scene.disk_radius << ")" << std::endl;
         };
         stepper.on_limit_point = [this](const LimitPoint &limit) {
+          if (linear)
+            linear->limit_point(*fe_model, limit);
           stream->limit_point(limit);
           std::cout << "      limit point (fold) at " << format_kV(limit.voltages)
                     << ", displacement " << std::setprecision(7) << mm(limit.displacement)

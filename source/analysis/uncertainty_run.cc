@@ -63,14 +63,33 @@ namespace cdea
     reference_volume       = at.d_volume();
   }
 
-  void LinearRunUncertainty::onset(MembraneModel &model, const OnsetRecord &onset)
+  std::vector<SceneParameter> LinearRunUncertainty::with_voltages() const
   {
-    // The constants, then the voltage of each ring.
     std::vector<SceneParameter> list = constants.parameters;
-    const std::size_t           P    = list.size();
     for (unsigned int k = 0; k < scene.n_rings(); ++k)
       list.push_back({ParameterKind::voltage, k});
-    const StateSensitivity at(model, list);
+    return list;
+  }
+
+  void LinearRunUncertainty::limit_point(MembraneModel &model, const LimitPoint &limit)
+  {
+    const Eigen::Index     P = Eigen::Index(constants.parameters.size());
+    const Eigen::Index     N = Eigen::Index(scene.n_rings());
+    const StateSensitivity at(model, with_voltages());
+    const std::vector<double> rate = path_rate(scene.path, limit.load_factor);
+    const Eigen::VectorXd     v    = Eigen::Map<const Eigen::VectorXd>(rate.data(), N);
+    const Eigen::VectorXd     dR_dt = at.residual_derivative().rightCols(N) * v;
+    Eigen::VectorXd           phi   = -(at.state_derivative().rightCols(N) * v);
+    phi.normalize();
+    limit_gradients.push_back(-(phi.transpose() * at.residual_derivative().leftCols(P)).transpose() /
+                              phi.dot(dR_dt));
+    limit_rates.push_back(rate);
+  }
+
+  void LinearRunUncertainty::onset(MembraneModel &model, const OnsetRecord &onset)
+  {
+    const std::size_t      P = constants.parameters.size();
+    const StateSensitivity at(model, with_voltages());
     const PointValues      points = at.points();
     Eigen::Index           first  = 0; // where s2 vanishes: its smallest value
     points.s2.minCoeff(&first);
@@ -99,6 +118,11 @@ namespace cdea
     for (std::size_t k = 0; k < onset_gradients.size(); ++k)
       onset_sd[k] = constants.linear_sd(onset_gradients[k]);
     g.set(q::onset_voltage_std, onset_sd);
+    std::vector<double> limit_sd;
+    for (std::size_t i = 0; i < limit_gradients.size(); ++i)
+      for (const double rate : limit_rates[i])
+        limit_sd.push_back(std::abs(rate) * constants.linear_sd(limit_gradients[i]));
+    g.set(q::limit_point_voltage_std, limit_sd, {limit_gradients.size(), scene.n_rings()});
     return g;
   }
 
@@ -119,6 +143,10 @@ namespace cdea
     stepper.on_onset = [&](const OnsetRecord &onset) {
       if (linear)
         linear->onset(*model, onset);
+    };
+    stepper.on_limit_point = [&](const LimitPoint &limit) {
+      if (linear)
+        linear->limit_point(*model, limit);
     };
     try
       {
@@ -239,6 +267,14 @@ namespace cdea
          q::volume_change_percentiles);
     line("onset voltage", q::onset_voltage_std, q::onset_voltage_mean,
          q::onset_voltage_percentiles);
+    if (const ProductEntry *limits = rows.find(q::limit_point_voltage_std))
+      for (std::size_t i = 0; limits->dims.size() == 2 && i < limits->dims[0]; ++i)
+        {
+          o << "  limit point " << i + 1 << " voltage: sd";
+          for (std::size_t k = 0; k < limits->dims[1]; ++k)
+            o << ' ' << format_number(limits->value(i * limits->dims[1] + k), 4);
+          o << " kV\n";
+        }
     return o.str();
   }
 } // namespace cdea

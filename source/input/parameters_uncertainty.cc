@@ -24,8 +24,9 @@ namespace cdea
     prm.add("Mode", "none", mode, mode_choices,
             "How cdea run carries the uncertainty of the constants below into its "
             "answers: none (every result as without this subsection); linear (one "
-            "standard deviation beside the final displacement, stroke, volume change and "
-            "onset voltage, sigma^2 = g^T C g with their exact gradients g); monte carlo "
+            "standard deviation beside the final displacement, stroke, volume change, "
+            "onset voltage and the voltages of limit points, sigma^2 = g^T C g with their "
+            "exact gradients g); monte carlo "
             "(Samples runs with the constants drawn from their normal distribution: mean, "
             "standard deviation and the 5, 50 and 95 % percentiles of the same outputs).");
     prm.add("Covariance file", "", covariance_file,

@@ -10,6 +10,12 @@
 // s2(x(p), t, p) = 0 at the point where it first vanishes, so along the path
 // t -> V(t)
 //   dt*/dp = -(ds2/dp) / sum_k (ds2/dV_k) V_k'(t*),   dV_onset/dp = V'(t*) dt*/dp.
+// At a limit point (fold) of the path R(x, t, p) = 0 with K phi = 0 (K
+// symmetric), so to first order
+//   dt*/dp = -(phi^T dR/dp) / (phi^T dR/dt),     dV_fold/dp = V'(t*) dt*/dp,
+// phi from the solve K u = -dR/dt with the nearly singular tangent of the
+// located fold (one step of inverse iteration: u is phi to the accuracy of
+// the location).
 // Monte-Carlo: the run again with sampled constants, each a full run.
 
 #include <cdea/analysis/run_input.h>
@@ -50,6 +56,8 @@ namespace cdea
     void reference(MembraneModel &model);
     /// The model's state is the onset @p onset.
     void onset(MembraneModel &model, const OnsetRecord &onset);
+    /// The model's state is the limit point @p limit.
+    void limit_point(MembraneModel &model, const LimitPoint &limit);
     /// The model's state is the final one: the _std rows of every answer taken.
     ProductGroup finish(MembraneModel &model) const;
 
@@ -58,6 +66,11 @@ namespace cdea
     const Scene                  &scene;
     Eigen::VectorXd               reference_displacement, reference_volume;
     std::vector<Eigen::VectorXd> onset_gradients; ///< per ring; empty: no onset
+    std::vector<Eigen::VectorXd> limit_gradients; ///< dt*/dp of each limit point
+    std::vector<std::vector<double>> limit_rates;  ///< V'(t*) of each
+
+    /// The constants, then the voltage of each ring.
+    std::vector<SceneParameter> with_voltages() const;
   };
 
   /// A run of @p input's parameters on @p scene without output (as `cdea

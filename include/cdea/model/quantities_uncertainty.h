@@ -41,6 +41,11 @@ namespace cdea
     inline constexpr Quantity onset_voltage_std = summary_attribute_row(
       "onset_voltage_std_kV", units::kV, Storage::real, shape::ring, quasi_static_run,
       "one standard deviation of the ring voltages at the onset of wrinkling (NaN if none)");
+    inline constexpr Quantity limit_point_voltage_std = summary_attribute_row(
+      "limit_point_voltage_std_kV", units::kV, Storage::real, shape::limit_ring,
+      quasi_static_run,
+      "one standard deviation of the ring voltages of each limit point (fold), k x rings "
+      "(linear only)");
 
     inline constexpr Quantity displacement_mean = summary_attribute_row(
       "displacement_mean_mm", units::mm, Storage::real, shape::scalar, quasi_static_run,
