@@ -2,6 +2,7 @@
 #include <cdea/analysis/run_output.h>
 #include <cdea/analysis/run_record.h>
 #include <cdea/analysis/run_setup.h>
+#include <cdea/analysis/uncertainty_run.h>
 #include <cdea/base/format.h>
 #include <cdea/fe/load_term.h>
 #include <cdea/model/output_fields.h>
@@ -124,8 +125,12 @@ namespace cdea
         , output(RunOutput::open(path, input.text, scene.n_rings(),
                                  {{run_attribute::method.name, to_string(method)}}))
         , stepper(scene, model, stepping_settings(p))
+        , input(input)
+        , fe_model(dynamic_cast<MembraneModel *>(&model))
       {
         add_run_postprocessors(stepper, p, scene);
+        if (input.uncertainty.mode == UncertaintyMode::linear && fe_model)
+          linear.emplace(input.uncertainty, scene);
       }
 
       int run()
@@ -138,11 +143,18 @@ namespace cdea
         recorder->header();
         const auto start = std::chrono::steady_clock::now();
         // ---- the run: a signal, an output failure or an error stops it ----
-        RunResult    result = output->guard([&] { return stepper.run(); });
+        RunResult    result = output->guard([&] {
+          RunResult r = stepper.run();
+          if (r.completed)
+            uncertainty_rows();
+          return r;
+        });
         const double seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         finish_paraview(result);
         print_final_state();
+        if (uncertainty)
+          std::cout << uncertainty_report(input.uncertainty, *uncertainty);
         print_outcome(result, seconds);
         return output->finish(result);
       }
@@ -157,6 +169,25 @@ namespace cdea
       std::unique_ptr<ParaViewWriter> paraview;
       std::optional<RunStream>        stream; ///< the file's product stream
       std::optional<StepRecorder>     recorder;
+      const RunInput                 &input;
+      MembraneModel                  *fe_model; ///< null for the shooting model
+      std::optional<LinearRunUncertainty> linear;
+      std::optional<ProductGroup>         uncertainty; ///< its rows, once taken
+
+      /// The answers' uncertainty at the end of a complete run, streamed.
+      void uncertainty_rows()
+      {
+        if (linear)
+          uncertainty = linear->finish(*fe_model);
+        else if (input.uncertainty.mode == UncertaintyMode::monte_carlo)
+          {
+            std::cout << "Monte-Carlo: " << input.uncertainty.samples
+                      << " runs with sampled constants" << std::endl;
+            uncertainty = monte_carlo_run(input, input.uncertainty, true);
+          }
+        if (uncertainty)
+          stream->attributes(*uncertainty);
+      }
 
       /// The writes before the first step: false (the output given up) if one fails.
       bool prepare()
@@ -179,18 +210,24 @@ namespace cdea
       void connect()
       {
         stepper.on_step = [this](const StepSummary &s) {
+          if (linear && s.stage == Stage::dead_load && s.load_factor == 1.)
+            linear->reference(*fe_model);
           recorder->step(s);
           if (paraview)
             paraview->write_step(s, stepper.step_fields());
           RunOutput::stop_point();
         };
         stepper.on_onset = [this](const OnsetRecord &onset) {
+          if (linear)
+            linear->onset(*fe_model, onset);
           stream->onset(onset);
           std::cout << "      loss of tension (s2 = 0) at " << format_kV(onset.voltages)
                     << ", radius r = " << std::setprecision(6) << mm(onset.radius)
                     << " mm (r/a = " << onset.radius / scene.disk_radius << ")" << std::endl;
         };
         stepper.on_limit_point = [this](const LimitPoint &limit) {
+          if (linear)
+            linear->limit_point(*fe_model, limit);
           stream->limit_point(limit);
           std::cout << "      limit point (fold) at " << format_kV(limit.voltages)
                     << ", displacement " << std::setprecision(7) << mm(limit.displacement)

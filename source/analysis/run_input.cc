@@ -41,6 +41,11 @@ namespace cdea
     in.text       = text;
     in.scene      = in.parameters.scene();
     validate_reservoir(in.parameters);
+    if (method == RunMethod::shooting || in.parameters.time.enabled)
+      require_uncertainty_support(in.parameters,
+                                 method == RunMethod::shooting ? command : "run in time");
+    else
+      in.uncertainty = uncertain_constants(in.parameters, in.scene);
     if (method == RunMethod::shooting)
       {
         require_shooting_options(in.parameters, command);

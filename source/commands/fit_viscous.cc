@@ -168,9 +168,15 @@ namespace cdea
     const auto write = [&] {
       write_product_file(product, h5_path);
       if (r.fitted.size() > 0)
-        write_changed_parameters(invocation.input, prm_path, fitted_entries(base, free, r.values),
-                                 "# Written by cdea fit: the parameter file with the "
-                                 "fitted values.\n");
+        {
+          std::vector<ParameterChange> entries = fitted_entries(base, free, r.values);
+          for (ParameterChange &u : uncertainty_entries(free, r))
+            entries.push_back(std::move(u));
+          write_changed_parameters(invocation.input, prm_path, entries,
+                                   "# Written by cdea fit: the parameter file with the fitted "
+                                   "values; subsection Uncertainty holds their covariance\n"
+                                   "# (Uncertainty/Mode = linear carries it into cdea run).\n");
+        }
       for (const ProductPath &m : more)
         write_product_file(*m.product, m.path);
     };

@@ -1,6 +1,7 @@
 // The command front: every command runs through run_command(), which does by
 // the flags of the command's row what every command needs (command.h).
 
+#include <cdea/analysis/uncertainty.h>
 #include <cdea/base/mpi_session.h>
 #include <cdea/base/run_control.h>
 #include <cdea/base/text.h>
@@ -127,6 +128,7 @@ namespace cdea
               invocation.input.source  = invocation.arguments.at(0);
               invocation.parameters =
                 read_parameters(invocation.input, &invocation.parameter_text);
+              require_uncertainty_support(invocation.parameters, invocation.command.name);
             }
           job.check(invocation);
           return true;

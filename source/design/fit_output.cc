@@ -69,6 +69,40 @@ namespace cdea
     return changes;
   }
 
+  std::vector<ParameterChange> uncertainty_entries(const std::vector<SceneParameter> &free,
+                                                   const FitResult                   &r)
+  {
+    const Eigen::Index K = Eigen::Index(free.size());
+    if (r.covariance.rows() != K || r.covariance.cols() != K)
+      return {};
+    std::vector<Eigen::Index> known; // the constants the data identify
+    std::vector<std::string>  names;
+    std::string               deviations, correlations;
+    for (Eigen::Index j = 0; j < K; ++j)
+      if (std::isfinite(r.covariance(j, j)) && r.covariance(j, j) >= 0.)
+        {
+          const ParameterChange sd = fitted_entry(free[j], std::sqrt(r.covariance(j, j)));
+          known.push_back(j);
+          names.push_back(sd.entry);
+          deviations += (deviations.empty() ? "" : ", ") + sd.entry + ": " + sd.value;
+        }
+    for (std::size_t a = 0; a < known.size(); ++a)
+      for (std::size_t b = a + 1; b < known.size(); ++b)
+        {
+          const Eigen::Index i = known[a], j = known[b];
+          const double       d = std::sqrt(r.covariance(i, i) * r.covariance(j, j));
+          if (d > 0.)
+            correlations += (correlations.empty() ? "" : "; ") + names[a] + ", " + names[b] +
+                            ": " + exact_number(r.covariance(i, j) / d);
+        }
+    if (deviations.empty())
+      return {};
+    return {{"Uncertainty", "Mode", "none"},
+            {"Uncertainty", "Covariance file", ""},
+            {"Uncertainty", "Standard deviations", deviations},
+            {"Uncertainty", "Correlations", correlations}};
+  }
+
   namespace
   {
     using namespace fit_quantity;
@@ -84,10 +118,14 @@ namespace cdea
         names.push_back(p.name());
       for (const auto &x : r.warnings)
         warning_lines += (warning_lines.empty() ? "" : "\n") + x;
-      std::vector<double> c(K * K);
+      std::vector<double> c(K * K), cov(K * K);
+      const bool          has_covariance = r.covariance.rows() == Eigen::Index(K);
       for (std::size_t i = 0; i < K; ++i)
         for (std::size_t j = 0; j < K; ++j)
-          c[i * K + j] = r.correlation.size() ? r.correlation(i, j) : NAN;
+          {
+            c[i * K + j]   = r.correlation.size() ? r.correlation(i, j) : NAN;
+            cov[i * K + j] = has_covariance ? r.covariance(i, j) : NAN;
+          }
       Product product;
       product.root()
         .set(common_quantity::parameters, parameter_text)
@@ -104,7 +142,8 @@ namespace cdea
         .set(iterations, r.iterations)
         .set(evaluations, r.evaluations)
         .set(solves, solve_count)
-        .set(correlation, c, {K, K});
+        .set(correlation, c, {K, K})
+        .set(covariance, cov, {K, K});
       return product;
     }
 
@@ -201,18 +240,11 @@ namespace cdea
                                const MaterialFitResult                &r,
                                const std::vector<MaterialTestOutcome> &outcomes)
   {
-    namespace q       = material_fit_quantity;
-    const FitResult  &f = r.fit;
-    const std::size_t K = settings.free.size();
+    namespace q = material_fit_quantity;
+    const FitResult &f = r.fit;
     // rms_residual_mm holds the stresses' Pa as if m: the rms in kPa is its own row.
     Product product = fit_attributes(parameter_text, settings, f, 0);
     product.root().set(evaluations, r.evaluations).set(q::rms_residual_kPa, f.rms);
-    std::vector<double> covariance(K * K, NAN);
-    if (f.covariance.rows() == Eigen::Index(K) && f.covariance.cols() == Eigen::Index(K))
-      for (std::size_t i = 0; i < K; ++i)
-        for (std::size_t j = 0; j < K; ++j)
-          covariance[i * K + j] = f.covariance(Eigen::Index(i), Eigen::Index(j));
-    product.root().set(q::covariance, covariance, {K, K});
     std::vector<std::string> files, kinds;
     std::vector<double> fitted_flags, weights, samples, rms, largest, relative;
     std::vector<double> test, time, stretch, measured, model, residual, sample_weight;

@@ -3,6 +3,7 @@
 // runs in-process): the validated parameters, their scene and every parameter
 // as text, with the checks that depend on the model that runs them.
 
+#include <cdea/analysis/uncertainty.h>
 #include <cdea/input/parameter_input.h>
 #include <cdea/input/parameters.h>
 #include <cdea/model/scene.h>
@@ -30,6 +31,8 @@ namespace cdea
     Parameters  parameters;
     Scene       scene;
     std::string text;
+    /// Subsection Uncertainty checked against the scene (a quasi-static FE run only).
+    UncertainConstants uncertainty;
   };
 
   /// The checks of a run beyond the parameters' own: the scene and the

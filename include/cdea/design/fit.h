@@ -208,6 +208,13 @@ namespace cdea
                                               const std::vector<SceneParameter> &free,
                                               const std::vector<double>         &values);
 
+  /// The entries of subsection Uncertainty that hold the covariance of @p r
+  /// (Mode = none; Standard deviations of the identified constants in their
+  /// entries' units, Correlations of every pair), so that the fitted
+  /// parameter file carries its uncertainty into a run (doc/uncertainty.md).
+  std::vector<ParameterChange> uncertainty_entries(const std::vector<SceneParameter> &free,
+                                                   const FitResult                   &r);
+
   /// A whole calibration as `cdea fit` and cdea.fit() run it: the fit, and
   /// the model along the data at the fitted values (if it got there).
   struct Calibrated

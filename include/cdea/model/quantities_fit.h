@@ -40,6 +40,10 @@ namespace cdea::fit_quantity
   inline constexpr Quantity correlation = dataset(
     "correlation", units::one,
     "correlation matrix of the fitted parameters (order of free_parameters)", shape::parameter2);
+  inline constexpr Quantity covariance = dataset(
+    "covariance", units::si,
+    "covariance s^2 (J^T W J)^-1 of the fitted values (order of free_parameters; NaN: not "
+    "identifiable); Uncertainty/Covariance file of a run takes it", shape::parameter2);
 
   // Displacement-voltage points: /data and /curve.
   inline constexpr Quantity voltage = dataset(

@@ -2,7 +2,7 @@
 // Rows of the table of quantities of `cdea fit` on material tests,
 // <Base name>_fit.h5 (doc/materials.md, "Fitting material tests"): besides
 // the root attributes and /correlation of every fit (model/quantities_fit.h),
-// the covariance, one row per file in /tests (fitted or predicted) and every
+// (the covariance is every fit's, model/quantities_fit.h), one row per file in /tests (fitted or predicted) and every
 // sample of every file in /samples, measured and modelled side by side.
 
 #include <cdea/model/quantity.h>
@@ -16,10 +16,6 @@ namespace cdea::material_fit_quantity
   } // namespace shape
 
   // clang-format off
-  inline constexpr Quantity covariance = dataset(
-    "covariance", units::si,
-    "covariance s^2 (J^T W J)^-1 of the fitted values (order of free_parameters; NaN: not "
-    "identifiable)", cdea::shape::parameter2);
   inline constexpr Quantity rms_residual_kPa = attribute(
     "rms_residual_kPa", units::kPa, "weighted rms residual of all fitted samples");
 

@@ -46,6 +46,9 @@ namespace cdea
     /// a time run: set if a step was streamed and the estimate is a number
     /// (the fixed-step schemes have none).
     void time_integration(unsigned int steps, unsigned int rejected, double error_estimate);
+    /// Further /summary attributes (the answers' uncertainty,
+    /// model/quantities_uncertainty.h), set or replaced.
+    void attributes(const ProductGroup &rows) { sink.set_summary_attributes(rows); }
 
     unsigned int n_steps() const { return steps; }
 
