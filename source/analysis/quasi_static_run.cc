@@ -3,6 +3,7 @@
 #include <cdea/analysis/run_record.h>
 #include <cdea/analysis/run_setup.h>
 #include <cdea/base/format.h>
+#include <cdea/fe/error_estimate.h>
 #include <cdea/fe/load_term.h>
 #include <cdea/model/output_fields.h>
 #include <cdea/input/solver_settings.h>
@@ -99,9 +100,13 @@ namespace cdea
         , path(results_path(p, method))
         , output(RunOutput::open(path, input.text, scene.n_rings(),
                                  {{run_attribute::method.name, to_string(method)}}))
+        , model(model)
         , stepper(scene, model, stepping_settings(p))
       {
         add_run_postprocessors(stepper, p, scene);
+        if (method == RunMethod::finite_elements && p.discretization.error_estimate)
+          estimate.emplace(scene, fe_discretization(p), p.wrinkling.onset_tolerance_V,
+                           [this](const FeDiscretization &d) { return make_fe_model(p, scene, d); });
       }
 
       int run()
@@ -119,6 +124,7 @@ namespace cdea
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         finish_paraview(result);
         print_final_state();
+        estimate_errors(result);
         print_outcome(result, seconds);
         return output->finish(result);
       }
@@ -129,7 +135,9 @@ namespace cdea
       const RunMethod                 method;
       const std::string               path;
       std::unique_ptr<RunOutput>      output;
+      EquilibriumModel               &model;
       LoadStepper                     stepper;
+      std::optional<RunErrorEstimate> estimate; ///< Discretization/Error estimate
       std::unique_ptr<ParaViewWriter> paraview;
       std::optional<RunStream>        stream; ///< the file's product stream
       std::optional<StepRecorder>     recorder;
@@ -155,12 +163,16 @@ namespace cdea
       void connect()
       {
         stepper.on_step = [this](const StepSummary &s) {
+          if (estimate)
+            estimate->step(s, model);
           recorder->step(s);
           if (paraview)
             paraview->write_step(s, stepper.step_fields());
           RunOutput::stop_point();
         };
         stepper.on_onset = [this](const OnsetRecord &onset) {
+          if (estimate)
+            estimate->onset(model);
           stream->onset(onset);
           std::cout << "      loss of tension (s2 = 0) at " << format_kV(onset.voltages)
                     << ", radius r = " << std::setprecision(6) << mm(onset.radius)
@@ -230,6 +242,33 @@ namespace cdea
         for (const double x : s.s2_ring_inner)
           std::cout << ' ' << std::setprecision(6) << x / scene.material.shear_modulus;
         std::cout << '\n';
+      }
+
+      /// The final state's estimated errors, printed and written (not after
+      /// a stop: the results so far go to the file at once). A failure
+      /// leaves the run's results as they are.
+      void estimate_errors(const RunResult &result)
+      {
+        if (!estimate || output->cut_short() || stream->n_steps() == 0)
+          return;
+        try
+          {
+            const auto         start  = std::chrono::steady_clock::now();
+            const OutputErrors errors = estimate->estimate();
+            stream->error_estimate(errors);
+            std::cout << "Estimated numerical error ("
+                      << format_number(std::chrono::duration<double>(
+                                         std::chrono::steady_clock::now() - start)
+                                         .count(),
+                                       2)
+                      << " s; doc/accuracy.md):\n"
+                      << describe_errors(errors, recorder->last, result.onset.voltages,
+                                         scene.material.shear_modulus);
+          }
+        catch (const std::exception &e)
+          {
+            std::cerr << "cdea: no error estimate: " << e.what() << '\n';
+          }
       }
 
       /// Onset, limit points, breakdown, how arc length ended, and the counts.

@@ -18,6 +18,10 @@ namespace cdea
   /// Newton, linear solver, the law of Material/Model, relaxed law, the load
   /// terms the parameters switch on).
   std::unique_ptr<MembraneModel> make_fe_model(const Parameters &p, const Scene &scene);
+  /// The same on @p discretization in place of the parameters' (the error
+  /// estimate's richer model).
+  std::unique_ptr<MembraneModel> make_fe_model(const Parameters &p, const Scene &scene,
+                                               const FeDiscretization &discretization);
 
   /// The model of a quasi-static run of @p method (finite elements or
   /// shooting) for @p input.

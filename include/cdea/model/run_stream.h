@@ -28,6 +28,8 @@ namespace cdea
     virtual void set_summary_attributes(const ProductGroup &attributes) = 0;
   };
 
+  struct OutputErrors;
+
   class RunStream
   {
   public:
@@ -46,6 +48,10 @@ namespace cdea
     /// a time run: set if a step was streamed and the estimate is a number
     /// (the fixed-step schemes have none).
     void time_integration(unsigned int steps, unsigned int rejected, double error_estimate);
+
+    /// The estimated errors of the final state's key outputs, at the end
+    /// of a quasi-static run (model/quantities_error.h).
+    void error_estimate(const OutputErrors &errors);
 
     unsigned int n_steps() const { return steps; }
 
