@@ -54,12 +54,14 @@ namespace cdea_test
 
   /// @p scene on @p d with the run's postprocessors (the enclosed volume),
   /// the onset located to @p onset_tolerance (V), and the estimate
-  /// afterwards unless @p with_estimate is false.
+  /// afterwards unless @p with_estimate is false; the run's Newton settings
+  /// @p newton (the estimate's own models have the default ones).
   inline EstimatedRun estimated_run(const cdea::Scene &scene, const cdea::FeDiscretization &d,
-                                    const double onset_tolerance, const bool with_estimate = true)
+                                    const double onset_tolerance, const bool with_estimate = true,
+                                    const cdea::NewtonSettings &newton = cdea::NewtonSettings())
   {
     using clock = std::chrono::steady_clock;
-    cdea::MembraneModel     model(scene, d, cdea::NewtonSettings());
+    cdea::MembraneModel     model(scene, d, newton);
     cdea::SteppingSettings  settings;
     settings.onset_tolerance = onset_tolerance;
     cdea::LoadStepper       stepper(scene, model, settings);
