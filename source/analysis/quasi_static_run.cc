@@ -3,7 +3,6 @@
 #include <cdea/analysis/run_record.h>
 #include <cdea/analysis/run_setup.h>
 #include <cdea/base/format.h>
-#include <cdea/fe/error_estimate.h>
 #include <cdea/fe/load_term.h>
 #include <cdea/model/output_fields.h>
 #include <cdea/input/solver_settings.h>
@@ -104,9 +103,7 @@ namespace cdea
         , stepper(scene, model, stepping_settings(p))
       {
         add_run_postprocessors(stepper, p, scene);
-        if (method == RunMethod::finite_elements && p.discretization.error_estimate)
-          estimate.emplace(scene, fe_discretization(p), p.wrinkling.onset_tolerance_V,
-                           [this](const FeDiscretization &d) { return make_fe_model(p, scene, d); });
+        estimate = make_error_estimate(p, scene, method);
       }
 
       int run()
@@ -137,7 +134,7 @@ namespace cdea
       std::unique_ptr<RunOutput>      output;
       EquilibriumModel               &model;
       LoadStepper                     stepper;
-      std::optional<RunErrorEstimate> estimate; ///< Discretization/Error estimate
+      std::unique_ptr<RunErrorEstimate> estimate; ///< Discretization/Error estimate
       std::unique_ptr<ParaViewWriter> paraview;
       std::optional<RunStream>        stream; ///< the file's product stream
       std::optional<StepRecorder>     recorder;

@@ -20,6 +20,16 @@ namespace cdea
     return model;
   }
 
+  std::unique_ptr<RunErrorEstimate> make_error_estimate(const Parameters &p, const Scene &scene,
+                                                        const RunMethod method)
+  {
+    if (method != RunMethod::finite_elements || !p.discretization.error_estimate)
+      return nullptr;
+    return std::make_unique<RunErrorEstimate>(
+      scene, fe_discretization(p), p.wrinkling.onset_tolerance_V,
+      [&p, &scene](const FeDiscretization &d) { return make_fe_model(p, scene, d); });
+  }
+
   std::unique_ptr<EquilibriumModel> make_model(const RunInput &input, const RunMethod method)
   {
     if (method == RunMethod::shooting)

@@ -12,29 +12,31 @@
 
 namespace cdea
 {
+  /// An estimated error of a quasi-static run: a real /summary attribute.
+  constexpr Quantity error_row(const char *name, const Unit &unit, const Shape &shape,
+                               const char *description)
+  {
+    return summary_attribute_row(name, unit, Storage::real, shape, quasi_static_run, description);
+  }
+
   namespace summary_attribute
   {
     // clang-format off
-    // Each row: name, unit, storage, shape, runs, description.
-    inline constexpr Quantity displacement_error = summary_attribute_row(
-      "displacement_error_mm", units::mm, Storage::real, shape::scalar, quasi_static_run,
-      "estimated numerical error of the final displacement: discretization (degree p + 1 "
-      "on the same mesh) plus Newton's remaining residual");
-    inline constexpr Quantity stroke_error = summary_attribute_row(
-      "stroke_error_mm", units::mm, Storage::real, shape::scalar, quasi_static_run,
+    inline constexpr Quantity displacement_error = error_row("displacement_error_mm", units::mm,
+      shape::scalar, "estimated numerical error of the final displacement: discretization "
+      "(degree p + 1 on the same mesh) plus Newton's remaining residual");
+    inline constexpr Quantity stroke_error = error_row("stroke_error_mm", units::mm, shape::scalar,
       "estimated numerical error of the final stroke (final and end-of-load states)");
-    inline constexpr Quantity volume_change_error = summary_attribute_row(
-      "volume_change_error_mm3", units::mm3, Storage::real, shape::scalar, quasi_static_run,
+    inline constexpr Quantity volume_change_error = error_row("volume_change_error_mm3",
+      units::mm3, shape::scalar,
       "estimated numerical error of the final volume change (final and end-of-load states)");
-    inline constexpr Quantity s2_min_error = summary_attribute_row(
-      "s2_min_error_kPa", units::kPa, Storage::real, shape::scalar, quasi_static_run,
-      "estimated numerical error of the final smallest hoop stress s2_min");
-    inline constexpr Quantity onset_voltage_error = summary_attribute_row(
-      "onset_voltage_error_kV", units::kV, Storage::real, shape::ring, quasi_static_run,
-      "estimated error of each onset voltage: discretization (the richer model's root of "
-      "s2_min = 0) plus the onset search's bracket (NaN per ring if no onset)");
-    inline constexpr Quantity error_estimate_method = summary_attribute_row(
-      "error_estimate", units::none, Storage::text, shape::scalar, quasi_static_run,
+    inline constexpr Quantity s2_min_error = error_row("s2_min_error_kPa", units::kPa,
+      shape::scalar, "estimated numerical error of the final smallest hoop stress s2_min");
+    inline constexpr Quantity onset_voltage_error = error_row("onset_voltage_error_kV", units::kV,
+      shape::ring, "estimated error of each onset voltage: discretization (the richer model's "
+      "root of s2_min = 0) plus the onset search's bracket (NaN per ring if no onset)");
+    inline constexpr Quantity error_estimate_method = summary_attribute_row("error_estimate",
+      units::none, Storage::text, shape::scalar, quasi_static_run,
       "how the *_error attributes were estimated");
     // clang-format on
   } // namespace summary_attribute
