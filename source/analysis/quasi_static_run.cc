@@ -124,6 +124,7 @@ namespace cdea
         , path(results_path(p, method))
         , output(RunOutput::open(path, input.text, scene.n_rings(),
                                  {{run_attribute::method.name, to_string(method)}}))
+        , model(model)
         , stepper(scene, model, stepping_settings(p))
         , input(input)
         , fe_model(dynamic_cast<MembraneModel *>(&model))
@@ -131,6 +132,7 @@ namespace cdea
         add_run_postprocessors(stepper, p, scene);
         if (input.uncertainty.mode == UncertaintyMode::linear && fe_model)
           linear.emplace(input.uncertainty, scene);
+        estimate = make_error_estimate(p, scene, method);
       }
 
       int run()
@@ -155,6 +157,7 @@ namespace cdea
         print_final_state();
         if (uncertainty)
           std::cout << uncertainty_report(input.uncertainty, *uncertainty);
+        estimate_errors(result);
         print_outcome(result, seconds);
         return output->finish(result);
       }
@@ -165,7 +168,9 @@ namespace cdea
       const RunMethod                 method;
       const std::string               path;
       std::unique_ptr<RunOutput>      output;
+      EquilibriumModel               &model;
       LoadStepper                     stepper;
+      std::unique_ptr<RunErrorEstimate> estimate; ///< Discretization/Error estimate
       std::unique_ptr<ParaViewWriter> paraview;
       std::optional<RunStream>        stream; ///< the file's product stream
       std::optional<StepRecorder>     recorder;
@@ -212,6 +217,8 @@ namespace cdea
         stepper.on_step = [this](const StepSummary &s) {
           if (linear && s.stage == Stage::dead_load && s.load_factor == 1.)
             linear->reference(*fe_model);
+          if (estimate)
+            estimate->step(s, model);
           recorder->step(s);
           if (paraview)
             paraview->write_step(s, stepper.step_fields());
@@ -220,6 +227,8 @@ namespace cdea
         stepper.on_onset = [this](const OnsetRecord &onset) {
           if (linear)
             linear->onset(*fe_model, onset);
+          if (estimate)
+            estimate->onset(model);
           stream->onset(onset);
           std::cout << "      loss of tension (s2 = 0) at " << format_kV(onset.voltages)
                     << ", radius r = " << std::setprecision(6) << mm(onset.radius)
@@ -295,6 +304,33 @@ namespace cdea
         if (!why.empty())
           std::cout << "  not physical: " << why
                     << " (a state of the model's equations that the actuator cannot take)\n";
+      }
+
+      /// The final state's estimated errors, printed and written (not after
+      /// a stop: the results so far go to the file at once). A failure
+      /// leaves the run's results as they are.
+      void estimate_errors(const RunResult &result)
+      {
+        if (!estimate || output->cut_short() || stream->n_steps() == 0)
+          return;
+        try
+          {
+            const auto         start  = std::chrono::steady_clock::now();
+            const OutputErrors errors = estimate->estimate();
+            stream->error_estimate(errors);
+            std::cout << "Estimated numerical error ("
+                      << format_number(std::chrono::duration<double>(
+                                         std::chrono::steady_clock::now() - start)
+                                         .count(),
+                                       2)
+                      << " s; doc/accuracy.md):\n"
+                      << describe_errors(errors, recorder->last, result.onset.voltages,
+                                         scene.material.shear_modulus);
+          }
+        catch (const std::exception &e)
+          {
+            std::cerr << "cdea: no error estimate: " << e.what() << '\n';
+          }
       }
 
       /// Onset, limit points, breakdown, how arc length ended, and the counts.

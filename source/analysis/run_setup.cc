@@ -7,11 +7,27 @@ namespace cdea
 {
   std::unique_ptr<MembraneModel> make_fe_model(const Parameters &p, const Scene &scene)
   {
-    auto model = std::make_unique<MembraneModel>(scene, fe_discretization(p), newton_settings(p));
+    return make_fe_model(p, scene, fe_discretization(p));
+  }
+
+  std::unique_ptr<MembraneModel> make_fe_model(const Parameters &p, const Scene &scene,
+                                               const FeDiscretization &discretization)
+  {
+    auto model = std::make_unique<MembraneModel>(scene, discretization, newton_settings(p));
     model->set_linear_solver(p.solver.linear_solver);
     model->set_relaxed(p.wrinkling.model == WrinklingModel::relaxed);
     model->set_load_terms(p.load_terms.values);
     return model;
+  }
+
+  std::unique_ptr<RunErrorEstimate> make_error_estimate(const Parameters &p, const Scene &scene,
+                                                        const RunMethod method)
+  {
+    if (method != RunMethod::finite_elements || !p.discretization.error_estimate)
+      return nullptr;
+    return std::make_unique<RunErrorEstimate>(
+      scene, fe_discretization(p), p.wrinkling.onset_tolerance_V,
+      [&p, &scene](const FeDiscretization &d) { return make_fe_model(p, scene, d); });
   }
 
   std::unique_ptr<EquilibriumModel> make_model(const RunInput &input, const RunMethod method)

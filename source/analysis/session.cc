@@ -20,17 +20,30 @@ namespace cdea
     record.parameters   = input.text;
     record.results_path = results_path(p, method);
     const std::unique_ptr<EquilibriumModel> model = make_model(input, method);
+    const std::unique_ptr<RunErrorEstimate> estimate = make_error_estimate(p, input.scene, method);
 
     LoadStepper stepper(input.scene, *model, stepping_settings(p));
     add_run_postprocessors(stepper, p, input.scene);
     // The run's product stream, as the command's file gets it.
     RunStream stream(record, record.n_rings, load_path_runs);
     stream.start();
-    stepper.on_step  = [&](const StepSummary &s) { stream.step(s, stepper.step_fields()); };
-    stepper.on_onset = [&](const OnsetRecord &onset) { stream.onset(onset); };
+    stepper.on_step = [&](const StepSummary &s) {
+      if (estimate)
+        estimate->step(s, *model);
+      stream.step(s, stepper.step_fields());
+    };
+    stepper.on_onset = [&](const OnsetRecord &onset) {
+      if (estimate)
+        estimate->onset(*model);
+      stream.onset(onset);
+    };
     stepper.on_limit_point = [&](const LimitPoint &limit) { stream.limit_point(limit); };
     stepper.on_breakdown   = [&](const OnsetRecord &breakdown) { stream.breakdown(breakdown); };
     run_keeping_steps(record, [&] { return stepper.run(); });
+    // The final state's estimated errors, as `cdea run` writes them (not
+    // after a stop or an error: the steps so far are the result).
+    if (estimate && !record.steps.empty() && record.result.message.rfind("error: ", 0) != 0)
+      stream.error_estimate(estimate->estimate());
     return record;
   }
 

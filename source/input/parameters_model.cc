@@ -102,6 +102,12 @@ namespace cdea
               "Equally spaced points per element at which fields are written (enough for "
               "smooth profiles in plots and ParaView).",
               between(1, 1000));
+      prm.add("Error estimate", "true", error_estimate,
+              "Estimate the numerical error of a quasi-static run's final displacement, "
+              "stroke, volume change, smallest hoop stress and onset voltages (degree p + 1 "
+              "on the same mesh from the converged states, Newton's remaining residual, the "
+              "onset search's bracket): the *_error attributes of /summary and the printed "
+              "final state (doc/accuracy.md). It does not change the run's results.");
       prm.leave_subsection();
     }
 

@@ -1,4 +1,5 @@
 #include <cdea/model/output_fields.h>
+#include <cdea/model/quantities_error.h>
 #include <cdea/model/run_stream.h>
 
 #include <cmath>
@@ -46,5 +47,10 @@ namespace cdea
     if (steps > 0 && !std::isnan(error_estimate))
       sink.set_summary_attributes(
         time_integration_attributes(steps_taken, rejected, error_estimate));
+  }
+
+  void RunStream::error_estimate(const OutputErrors &errors)
+  {
+    sink.set_summary_attributes(error_estimate_attributes(errors, n_rings));
   }
 } // namespace cdea

@@ -5,6 +5,7 @@
 // writes.
 
 #include <cdea/analysis/run_input.h>
+#include <cdea/fe/error_estimate.h>
 #include <cdea/fe/membrane_model.h>
 #include <cdea/solver/load_stepper.h>
 #include <cdea/solver/time_stepper.h>
@@ -18,6 +19,16 @@ namespace cdea
   /// Newton, linear solver, the law of Material/Model, relaxed law, the load
   /// terms the parameters switch on).
   std::unique_ptr<MembraneModel> make_fe_model(const Parameters &p, const Scene &scene);
+  /// The same on @p discretization in place of the parameters' (the error
+  /// estimate's richer model).
+  std::unique_ptr<MembraneModel> make_fe_model(const Parameters &p, const Scene &scene,
+                                               const FeDiscretization &discretization);
+
+  /// The error estimate of a quasi-static run of @p method (finite elements
+  /// with Discretization/Error estimate on), on models set up as the run's;
+  /// null otherwise.
+  std::unique_ptr<RunErrorEstimate> make_error_estimate(const Parameters &p, const Scene &scene,
+                                                        RunMethod method);
 
   /// The model of a quasi-static run of @p method (finite elements or
   /// shooting) for @p input.

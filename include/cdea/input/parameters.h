@@ -127,6 +127,7 @@ namespace cdea
       double       grading;
       unsigned int refinements;
       unsigned int samples_per_element;
+      bool         error_estimate; ///< of a quasi-static run (analysis/run_error_estimate.h)
       void         declare(ParameterDeclarations &prm);
     };
 

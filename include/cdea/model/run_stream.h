@@ -28,6 +28,8 @@ namespace cdea
     virtual void set_summary_attributes(const ProductGroup &attributes) = 0;
   };
 
+  struct OutputErrors;
+
   class RunStream
   {
   public:
@@ -49,6 +51,10 @@ namespace cdea
     /// Further /summary attributes (the answers' uncertainty,
     /// model/quantities_uncertainty.h), set or replaced.
     void attributes(const ProductGroup &rows) { sink.set_summary_attributes(rows); }
+
+    /// The estimated errors of the final state's key outputs, at the end
+    /// of a quasi-static run (model/quantities_error.h).
+    void error_estimate(const OutputErrors &errors);
 
     unsigned int n_steps() const { return steps; }
 
