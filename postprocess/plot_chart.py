@@ -105,7 +105,7 @@ def dma_panel(ax, f, measured):
     ax.set_title("(b) small-strain DMA chart (tau = %.3g s)" % d.attrs["relaxation_time_s"])
 
 
-class ChartError(Exception):
+class ChartError(ValueError):
     """A file that is not a chart of cdea chart, or measurements it cannot take."""
 
 

@@ -49,7 +49,7 @@ KINDS = (("material tests", ("tests/kind", "samples/stretch", "samples/measured_
                               "curve/voltage_kV", "curve/displacement_mm")))
 
 
-class FitFileError(Exception):
+class FitFileError(ValueError):
     """A file that is not a fit file of a known kind."""
 
 
