@@ -536,4 +536,6 @@ PYBIND11_MODULE(cdea, m)
         "True once this process has started MPI (only the Trilinos KLU solver does)");
   bind_design(m);
   bind_viscous_fit(m);
+  // The pure-Python part (python/cdea_load.py): cdea.load, to_pandas, to_xarray.
+  py::module_::import("cdea_load").attr("extend")(m);
 }
