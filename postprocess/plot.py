@@ -22,7 +22,8 @@ import os
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(os.path.dirname(HERE), "python"))
+# The product scripts beside this one, and the reader of products in python/.
+sys.path[:0] = [HERE, os.path.join(os.path.dirname(HERE), "python")]
 
 import matplotlib  # noqa: E402
 
@@ -114,6 +115,28 @@ def kinds_of(paths):
                 f"{path} is a {kind} file, {paths[0]} a {kinds[0]} file: "
                 "several files are overlaid only if they are of one kind")
     return kinds[0]
+
+
+def save(fig, out, prog, dpi=110):
+    """Writes @p fig to @p out and says so."""
+    fig.tight_layout()
+    fig.savefig(out, dpi=dpi)
+    plt.close(fig)
+    print(f"{prog}: wrote {out}")
+
+
+def files_main(prog, description, draw, what, argv=None):
+    """The command line of a product script that draws several files into
+    one PNG: FILE.h5 [MORE.h5 ...] [--out PNG]; its errors (ValueError) as
+    `prog: error: ...` with exit status 1."""
+    parser = argparse.ArgumentParser(prog=prog, description=description)
+    parser.add_argument("files", nargs="+", help=what)
+    parser.add_argument("--out", help="the PNG to write (default: beside the first file)")
+    args = parser.parse_args(argv)
+    try:
+        draw(args.files, args.out or os.path.splitext(args.files[0])[0] + ".png")
+    except ValueError as error:
+        sys.exit(f"{prog}: error: {error}")
 
 
 def main(argv=None):

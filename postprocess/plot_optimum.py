@@ -14,7 +14,6 @@ constraint). Several files are overlaid, one marker each. Needs h5py,
 numpy and matplotlib (Agg).
 """
 
-import argparse
 import os
 import sys
 
@@ -23,6 +22,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+
+import plot as entry_point  # noqa: E402  (postprocess/plot.py: saving, the command line)
 
 try:
     import h5py  # noqa: E402
@@ -83,7 +84,8 @@ def draw_optimum(ax, field_ax, history_ax, data, attrs, marker, label):
                  fontsize=10)
 
 
-def plot(paths, out):
+def draw(paths, out):
+    """The files @p paths overlaid in one picture, written to @p out (and plot.py's)."""
     fig, (ax, history_ax) = plt.subplots(2, 1, figsize=(7.5, 8))
     field_ax = ax.twinx()
     for k, path in enumerate(paths):
@@ -96,29 +98,14 @@ def plot(paths, out):
     field_ax.set_ylabel("true electric field (MV/m, grey)", color="0.4")
     history_ax.set_xlabel("evaluation")
     history_ax.set_ylabel("stroke (mm)")
-    history_ax.set_title("(b) stroke of each evaluation (* = best feasible of the start)", fontsize=10)
+    history_ax.set_title("(b) stroke of each evaluation (* = best feasible of the start)",
+                         fontsize=10)
     for a in (ax, history_ax):
         a.grid(alpha=0.3)
         a.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(out, dpi=110)
-    plt.close(fig)
-    print(f"{PROG}: wrote {out}")
-
-
-draw = plot  # the picture of plot.py
-
-
-def main():
-    parser = argparse.ArgumentParser(prog=PROG, description=__doc__.splitlines()[0])
-    parser.add_argument("files", nargs="+", help="<base>_optimum.h5 files of cdea optimize")
-    parser.add_argument("--out", help="the PNG to write (default: beside the first file)")
-    args = parser.parse_args()
-    try:
-        plot(args.files, args.out or os.path.splitext(args.files[0])[0] + ".png")
-    except OptimumError as error:
-        sys.exit(f"{PROG}: error: {error}")
+    entry_point.save(fig, out, PROG)
 
 
 if __name__ == "__main__":
-    main()
+    entry_point.files_main(PROG, __doc__.splitlines()[0], draw,
+                           "<base>_optimum.h5 files of cdea optimize")

@@ -14,7 +14,6 @@ Several files are overlaid, one colour each. Needs h5py, numpy and
 matplotlib (Agg).
 """
 
-import argparse
 import os
 import sys
 
@@ -23,6 +22,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+
+import plot as entry_point  # noqa: E402  (postprocess/plot.py: saving, the command line)
 
 try:
     import h5py  # noqa: E402
@@ -77,7 +78,8 @@ def draw_response(axes, data, color, label):
                     ls=("-", "--", ":", "-.")[k % 4], label=f"{label}: mode {k + 1}, {fn:.3g} Hz")
 
 
-def plot(paths, out):
+def draw(paths, out):
+    """The files @p paths overlaid in one picture, written to @p out (and plot.py's)."""
     fig, axes = plt.subplots(3, 1, figsize=(7.5, 9.5),
                              gridspec_kw={"height_ratios": [3, 2, 2]})
     for k, path in enumerate(paths):
@@ -88,7 +90,8 @@ def plot(paths, out):
     amp.set_title("(a) amplitude of the transfer functions", fontsize=10)
     phase.set_ylabel("phase (deg)")
     phase.set_xlabel("drive frequency (Hz)")
-    phase.set_title("(b) phase of the drive's transfer function (0: in phase; unwrapped)", fontsize=10)
+    phase.set_title("(b) phase of the drive's transfer function (0: in phase; unwrapped)",
+                    fontsize=10)
     phase.sharex(amp)
     shapes.set_xlabel("reference radius R (mm)")
     shapes.set_ylabel("vertical displacement per disk displacement")
@@ -96,25 +99,9 @@ def plot(paths, out):
     for ax in axes:
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(out, dpi=110)
-    plt.close(fig)
-    print(f"{PROG}: wrote {out}")
-
-
-draw = plot  # the picture of plot.py
-
-
-def main():
-    parser = argparse.ArgumentParser(prog=PROG, description=__doc__.splitlines()[0])
-    parser.add_argument("files", nargs="+", help="<base>_response.h5 files of cdea response")
-    parser.add_argument("--out", help="the PNG to write (default: beside the first file)")
-    args = parser.parse_args()
-    try:
-        plot(args.files, args.out or os.path.splitext(args.files[0])[0] + ".png")
-    except ResponseError as error:
-        sys.exit(f"{PROG}: error: {error}")
+    entry_point.save(fig, out, PROG)
 
 
 if __name__ == "__main__":
-    main()
+    entry_point.files_main(PROG, __doc__.splitlines()[0], draw,
+                           "<base>_response.h5 files of cdea response")
