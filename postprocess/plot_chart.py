@@ -11,7 +11,7 @@ chart: storage and loss modulus and the loss factor against frequency.
 Measurements: --uniaxial and --equibiaxial take CSV files with the columns
 stretch, stress_kPa (nominal stress); --dma one with frequency_Hz,
 storage_kPa, loss_kPa. A first line that is not numbers is a header; '#'
-starts a comment. Needs h5py, numpy and matplotlib (Agg).
+starts a comment (comment lines may come before the header). Needs h5py, numpy and matplotlib (Agg).
 """
 
 import argparse
@@ -35,7 +35,7 @@ PROG = "plot_chart.py"
 
 def read_csv(path, columns):
     """Rows of @p columns numbers; exits with the file and line of a bad one."""
-    rows = []
+    rows, header = [], False
     try:
         with open(path, encoding="utf-8") as f:
             lines = f.readlines()
@@ -49,8 +49,9 @@ def read_csv(path, columns):
         try:
             values = [float(x) for x in fields]
         except ValueError:
-            if not rows and number == 1:
-                continue  # the header
+            if not rows and not header:
+                header = True  # the first line that is not a comment
+                continue
             sys.exit(f"{PROG}: error: {path}, line {number}: not {columns} numbers: '{line}'")
         if len(values) != columns or not all(np.isfinite(values)):
             sys.exit(f"{PROG}: error: {path}, line {number}: expected {columns} finite "
@@ -61,17 +62,20 @@ def read_csv(path, columns):
     return np.array(rows)
 
 
-def stress_panel(ax, f, measured):
-    for path, color in (("uniaxial", "C0"), ("equibiaxial", "C1")):
+def stress_panel(ax, f, measured, label="", colors=("C0", "C1")):
+    """Uniaxial and equibiaxial curves of the open chart @p f (@p label
+    before each curve's name when several charts share the panel)."""
+    for path, color in zip(("uniaxial", "equibiaxial"), colors):
         g = f[path]
+        name = label + path
         ax.plot(g["stretch"][()], g["nominal_stress_kPa"][()], "-", color=color,
-                label=path + (" (relaxed)" if "instantaneous_stress_kPa" in g else ""))
+                label=name + (" (relaxed)" if "instantaneous_stress_kPa" in g else ""))
         if "instantaneous_stress_kPa" in g:
             ax.plot(g["stretch"][()], g["instantaneous_stress_kPa"][()], "--", color=color,
-                    label=path + " (instantaneous)")
+                    label=name + " (instantaneous)")
         if measured.get(path) is not None:
             m = measured[path]
-            ax.plot(m[:, 0], m[:, 1], "o", mfc="none", color=color, label=path + " measured")
+            ax.plot(m[:, 0], m[:, 1], "o", mfc="none", color=color, label=name + " measured")
     ax.set_xlabel("stretch")
     ax.set_ylabel("nominal stress (kPa)")
     ax.legend(fontsize=8)
@@ -101,6 +105,58 @@ def dma_panel(ax, f, measured):
     ax.set_title("(b) small-strain DMA chart (tau = %.3g s)" % d.attrs["relaxation_time_s"])
 
 
+class ChartError(ValueError):
+    """A file that is not a chart of cdea chart, or measurements it cannot take."""
+
+
+def open_chart(path):
+    try:
+        f = h5py.File(path, "r")
+    except OSError as error:
+        raise ChartError(f"cannot read '{path}': {error}") from None
+    for key in ("uniaxial/stretch", "uniaxial/nominal_stress_kPa",
+                "equibiaxial/stretch", "equibiaxial/nominal_stress_kPa"):
+        if key not in f:
+            f.close()
+            raise ChartError(f"'{path}' is not a file of cdea chart (no /{key})")
+    return f
+
+
+def plot(path, out, measured=None, dma_measured=None):
+    """The chart of @p path with the measurements laid on it, written to @p out."""
+    with open_chart(path) as f:
+        has_dma = "dma" in f
+        if dma_measured is not None and not has_dma:
+            raise ChartError(f"--dma: the law of '{path}' is elastic "
+                             f"(no DMA chart to compare with)")
+        fig, axes = plt.subplots(1, 2 if has_dma else 1, figsize=(12 if has_dma else 6.5, 5))
+        axes = np.atleast_1d(axes)
+        stress_panel(axes[0], f, measured or {})
+        if has_dma:
+            dma_panel(axes[1], f, dma_measured)
+        model = f.attrs["material_model"]
+    fig.suptitle(f"Material/Model = {model.decode() if isinstance(model, bytes) else model}")
+    fig.tight_layout()
+    fig.savefig(out, dpi=120)
+    plt.close(fig)
+    print(f"{PROG}: wrote {out}")
+
+
+def draw(paths, out):
+    """The picture of plot.py: one chart as plot(); several charts' stress
+    curves overlaid in one panel, labelled by file."""
+    if len(paths) == 1:
+        return plot(paths[0], out)
+    fig, ax = plt.subplots(figsize=(7, 5.5))
+    for k, path in enumerate(paths):
+        with open_chart(path) as f:
+            stress_panel(ax, f, {}, os.path.basename(path) + ": ", (f"C{2 * k}", f"C{2 * k + 1}"))
+    fig.tight_layout()
+    fig.savefig(out, dpi=120)
+    plt.close(fig)
+    print(f"{PROG}: wrote {out}")
+
+
 def main():
     parser = argparse.ArgumentParser(prog=PROG, description=__doc__.splitlines()[0])
     parser.add_argument("file")
@@ -113,30 +169,10 @@ def main():
                 for path in ("uniaxial", "equibiaxial")}
     dma_measured = read_csv(args.dma, 3) if args.dma else None
     try:
-        f = h5py.File(args.file, "r")
-    except OSError as error:
-        sys.exit(f"{PROG}: error: cannot read '{args.file}': {error}")
-    with f:
-        for key in ("uniaxial/stretch", "uniaxial/nominal_stress_kPa",
-                    "equibiaxial/stretch", "equibiaxial/nominal_stress_kPa"):
-            if key not in f:
-                sys.exit(f"{PROG}: error: '{args.file}' is not a file of cdea chart (no /{key})")
-        has_dma = "dma" in f
-        if dma_measured is not None and not has_dma:
-            sys.exit(f"{PROG}: error: --dma: the law of '{args.file}' is elastic "
-                     f"(no DMA chart to compare with)")
-        model = f.attrs["material_model"]
-        model = model.decode() if isinstance(model, bytes) else str(model)
-        fig, axes = plt.subplots(1, 2 if has_dma else 1, figsize=(12 if has_dma else 6.5, 5))
-        axes = np.atleast_1d(axes)
-        stress_panel(axes[0], f, measured)
-        if has_dma:
-            dma_panel(axes[1], f, dma_measured)
-    fig.suptitle(f"Material/Model = {model}")
-    fig.tight_layout()
-    out = args.out or os.path.splitext(args.file)[0] + ".png"
-    fig.savefig(out, dpi=120)
-    print(f"{PROG}: wrote {out}")
+        plot(args.file, args.out or os.path.splitext(args.file)[0] + ".png", measured,
+             dma_measured)
+    except ChartError as error:
+        sys.exit(f"{PROG}: error: {error}")
 
 
 if __name__ == "__main__":

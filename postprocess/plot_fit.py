@@ -1,21 +1,25 @@
 #!/usr/bin/python3
-"""Measured data against the fitted model of `cdea fit`, and its model selection.
+"""Measured data against the fitted model of `cdea fit`, with the residuals.
 
 Usage: plot_fit.py FILE.h5 [--out PNG] [--ring K]
 
-Writes FILE.png next to FILE.h5 (or PNG), after what the file holds:
-- <base>_fit.h5 of displacement points (doc/optimization.md, "Calibration"):
-  (a) the data points and the fitted model along the data against the
-  voltage of ring K (default: the ring whose voltage changes most), with the
-  fitted values and their standard errors; (b) the residuals of every point.
-- <base>_fit.h5 of material tests (doc/materials.md, "Fitting material
-  tests"): one row per file, its measured nominal stress and the model's
-  (fitted, or predicted for a --predict file) against time and against
-  stretch, and the residuals against time.
-- <base>_models.h5 of a model selection (doc/materials.md, "Choosing a
-  model"): per candidate AIC and BIC (from the lowest), and the held-out
-  error, the recommended model marked.
-Needs h5py, numpy and matplotlib (Agg).
+Reads <base>_fit.h5 (layouts in doc/optimization.md, "Calibration", and
+doc/materials.md) and writes <base>_fit.png next to it (or PNG). The file's
+kind decides the panels, (a) measured against fitted and (b) the residuals
+(model - measured):
+  actuator points: the displacements and the fitted model along the data
+    (the curve through the points in file order) against the voltage of
+    ring K (default: the ring whose voltage changes most over the data);
+  creep: the displacement against time, measured and fitted, with the ring
+    voltages on the right axis;
+  DMA: storage and loss modulus against frequency, measured and fitted;
+  material tests: nominal stress against stretch of every test file,
+    measured and fitted (dashed: a test predicted with --predict, not fitted).
+Reads <base>_models.h5 of a model selection too (doc/materials.md, "Choosing
+a model"): per candidate AIC and BIC (from the lowest) and the held-out
+error, the recommended model marked.
+Each writes the fitted values with their standard errors and the rms
+residual into panel (a). Needs h5py, numpy and matplotlib (Agg).
 """
 
 import argparse
@@ -37,120 +41,160 @@ except ImportError:  # pragma: no cover
 
 PROG = "plot_fit.py"
 
+# The kinds of fit files and the datasets that tell them apart (the writer
+# of each kind writes them all; checked in this order).
+KINDS = (("material tests", ("tests/kind", "samples/stretch", "samples/measured_stress_kPa",
+                             "samples/model_stress_kPa", "samples/residual_kPa", "samples/test")),
+         ("DMA", ("data/frequency_Hz", "data/storage_kPa", "data/loss_kPa",
+                  "data/fitted_storage_kPa", "data/fitted_loss_kPa")),
+         ("creep", ("data/time_s", "data/voltage_kV", "data/displacement_mm",
+                    "data/fitted_mm")),
+         ("actuator points", ("data/voltage_kV", "data/displacement_mm", "data/fitted_mm",
+                              "curve/voltage_kV", "curve/displacement_mm")))
+
+
+class FitFileError(ValueError):
+    """A file that is not a fit file of a known kind."""
+
 
 def text(value):
     return value.decode() if isinstance(value, bytes) else str(value)
 
 
+def kind_of(f):
+    """The kind of the open fit file @p f, or None."""
+    if "free_parameters" not in f.attrs or "fitted_values" not in f.attrs:
+        return None
+    for kind, keys in KINDS:
+        if all(k in f for k in keys):
+            return kind
+    return None
+
+
 def shown(name, value):
     """A fitted value in the units of its prm entry."""
-    if name.startswith("shear modulus"):
+    if "(Pa)" in name:
         return value * 1e-3, "kPa"
     if name.startswith("mass"):
         return value * 1e3, "g"
     if name.startswith("permittivity"):
         return value, "F/m"
+    if "(s)" in name:
+        return value, "s"
     return value, ""
 
 
-def require(f, path, keys, what):
-    for key in keys:
-        if key not in f:
-            sys.exit(f"{PROG}: error: '{path}' is not {what} (no /{key})")
+def read(path):
+    """Every dataset and root attribute of a fit file, and its kind."""
+    try:
+        f = h5py.File(path, "r")
+    except OSError as error:
+        raise FitFileError(f"cannot read '{path}': {error}") from None
+    with f:
+        kind = kind_of(f)
+        if kind is None:
+            raise FitFileError(f"'{path}' is not a file of cdea fit (no fitted values, or "
+                               "not the datasets of actuator points, creep, DMA or material "
+                               "tests)")
+        data = {}
+        f.visititems(lambda name, o: data.__setitem__(name, o[()])
+                     if isinstance(o, h5py.Dataset) else None)
+        attrs = dict(f.attrs)
+    return kind, data, attrs
 
 
-def plot_displacements(f, args):
-    """The displacement-voltage fit: data, model curve and residuals."""
-    require(f, args.file, ("data/voltage_kV", "data/displacement_mm", "data/fitted_mm",
-                           "curve/voltage_kV", "curve/displacement_mm"), "a file of cdea fit")
-    volts = f["data/voltage_kV"][()]
-    measured = f["data/displacement_mm"][()]
-    fitted = f["data/fitted_mm"][()]
-    curve_v = f["curve/voltage_kV"][()]
-    curve_d = f["curve/displacement_mm"][()]
-    names = [n.strip() for n in text(f.attrs["free_parameters"]).split(";")]
-    values = np.atleast_1d(f.attrs["fitted_values"])
-    errors = np.atleast_1d(f.attrs["standard_errors"])
-    rms = float(f.attrs["rms_residual_mm"])
-    warnings = text(f.attrs["warnings"])
-    n_rings = volts.shape[1]
-    ring = args.ring if args.ring else int(np.argmax(np.ptp(volts, axis=0))) + 1
-    if not 1 <= ring <= n_rings:
-        sys.exit(f"{PROG}: error: --ring {ring}: the data have {n_rings} ring(s)")
-
-    fig, (ax, ax_r) = plt.subplots(2, 1, figsize=(7, 7), sharex=True,
-                                   gridspec_kw={"height_ratios": [3, 1]})
-    x = volts[:, ring - 1]
-    if len(curve_d):
-        ax.plot(curve_v[:, ring - 1], curve_d, "-", color="C0", label="model, fitted")
-    ax.plot(x, measured, "o", mfc="none", color="k", label="measured")
-    ax.plot(x, fitted, ".", color="C0")
-    lines = [value_line(name, value, error) for name, value, error in zip(names, values, errors)]
-    lines.append(f"rms residual {rms:.3g} mm")
-    for warning in filter(None, warnings.split("\n")):
+def summary_lines(attrs):
+    names = [n.strip() for n in text(attrs["free_parameters"]).split(";")]
+    lines = []
+    for name, value, error in zip(names, np.atleast_1d(attrs["fitted_values"]),
+                                  np.atleast_1d(attrs["standard_errors"])):
+        v, unit = shown(name, value)
+        e, _ = shown(name, error)
+        lines.append(f"{name.split(' (')[0]} = {v:.6g} ± {e:.2g} {unit}".rstrip())
+    if "rms_residual_kPa" in attrs:
+        lines.append(f"rms residual {float(attrs['rms_residual_kPa']):.3g} kPa")
+    else:
+        lines.append(f"rms residual {float(attrs['rms_residual_mm']):.3g} mm")
+    for warning in filter(None, text(attrs.get("warnings", "")).split("\n")):
         lines.append("warning: " + (warning[:70] + " ..." if len(warning) > 70 else warning))
-    ax.text(0.02, 0.97, "\n".join(lines), transform=ax.transAxes, va="top", fontsize=9,
-            bbox=dict(facecolor="white", alpha=0.8, edgecolor="0.8"))
+    return lines
+
+
+def draw_points(ax, ax_r, data, ring):
+    volts = data["data/voltage_kV"]
+    n_rings = volts.shape[1]
+    ring = ring or int(np.argmax(np.ptp(volts, axis=0))) + 1
+    if not 1 <= ring <= n_rings:
+        raise FitFileError(f"--ring {ring}: the data have {n_rings} ring(s)")
+    x = volts[:, ring - 1]
+    if len(data["curve/displacement_mm"]):
+        ax.plot(data["curve/voltage_kV"][:, ring - 1], data["curve/displacement_mm"], "-",
+                color="C0", label="model, fitted")
+    ax.plot(x, data["data/displacement_mm"], "o", mfc="none", color="k", label="measured")
+    ax.plot(x, data["data/fitted_mm"], ".", color="C0")
     ax.set_ylabel("displacement (mm)")
-    ax.legend(loc="lower right")
-    ax.set_title("(a) data and fitted model")
-    ax_r.axhline(0., color="0.6", lw=0.8)
-    ax_r.plot(x, fitted - measured, "o", color="C3")
+    ax_r.plot(x, data["data/fitted_mm"] - data["data/displacement_mm"], "o", color="C3")
     ax_r.set_xlabel(f"voltage of ring {ring} (kV)")
     ax_r.set_ylabel("model - measured (mm)")
-    ax_r.set_title("(b) residuals")
-    return fig
 
 
-def value_line(name, value, error):
-    v, unit = shown(name, value)
-    e, _ = shown(name, error)
-    return f"{name.split(' (')[0]} = {v:.6g} ± {e:.2g} {unit}".rstrip()
+def draw_creep(ax, ax_r, data, ring):
+    t = data["data/time_s"]
+    ax.plot(t, data["data/displacement_mm"], "o", mfc="none", color="k", ms=4, label="measured")
+    ax.plot(t, data["data/fitted_mm"], "-", color="C0", label="model, fitted")
+    ax.set_ylabel("displacement (mm)")
+    volts = ax.twinx()
+    for k in range(data["data/voltage_kV"].shape[1]):
+        volts.step(t, data["data/voltage_kV"][:, k], where="post", color="0.6", lw=0.8,
+                   ls=("-", "--", ":")[k % 3], label=f"ring {k + 1} voltage")
+    volts.set_ylabel("ring voltage (kV)", color="0.4")
+    ax_r.plot(t, data["data/fitted_mm"] - data["data/displacement_mm"], "o", ms=3, color="C3")
+    ax_r.set_xlabel("time (s)")
+    ax_r.set_ylabel("model - measured (mm)")
 
 
-def plot_material_tests(f, args):
-    """A material-test fit: per file stress against time and stretch, residuals."""
-    require(f, args.file, ("tests/file", "tests/fitted", "samples/test", "samples/time_s",
-                           "samples/stretch", "samples/measured_stress_kPa",
-                           "samples/model_stress_kPa"), "a material-test fit of cdea fit")
-    files = [text(x) for x in f["tests/file"][()]]
-    kinds = [text(x) for x in f["tests/kind"][()]]
-    fitted = f["tests/fitted"][()]
-    rms = f["tests/rms_kPa"][()]
-    s = {key: f["samples/" + key][()] for key in ("test", "time_s", "stretch",
-                                                  "measured_stress_kPa", "model_stress_kPa")}
-    names = [n.strip() for n in text(f.attrs["free_parameters"]).split(";")]
-    values = np.atleast_1d(f.attrs["fitted_values"])
-    errors = np.atleast_1d(f.attrs["standard_errors"])
-    fig, axes = plt.subplots(len(files), 3, figsize=(13, 3.2 * len(files)), squeeze=False)
-    for k, name in enumerate(files):
-        rows = s["test"] == k
-        t, stretch = s["time_s"][rows], s["stretch"][rows]
-        measured, model = s["measured_stress_kPa"][rows], s["model_stress_kPa"][rows]
-        role = "fitted" if fitted[k] else "predicted"
-        style = "-" if fitted[k] else "--"
-        a_t, a_l, a_r = axes[k]
-        for ax, x in ((a_t, t), (a_l, stretch)):
-            ax.plot(x, measured, ".", ms=3, color="0.5", label="measured")
-            ax.plot(x, model, style, color="C0" if fitted[k] else "C1", label="model, " + role)
-            ax.set_ylabel("nominal stress (kPa)")
-        a_t.set_title(f"{name} ({kinds[k]}, {role}): rms {rms[k]:.3g} kPa", fontsize=9)
-        a_t.set_xlabel("time (s)")
-        a_l.set_xlabel("stretch")
-        a_l.legend(loc="upper left", fontsize=8)
-        a_r.axhline(0., color="0.6", lw=0.8)
-        a_r.plot(t, model - measured, ".", ms=3, color="C3")
-        a_r.set_xlabel("time (s)")
-        a_r.set_ylabel("model - measured (kPa)")
-    axes[0][2].set_title("\n".join(value_line(n, v, e) for n, v, e in zip(names, values, errors)),
-                         fontsize=8)
-    return fig
+def draw_dma(ax, ax_r, data, ring):
+    f = data["data/frequency_Hz"]
+    for key, color, marker, label in (("storage", "C0", "o", "E' (storage)"),
+                                      ("loss", "C3", "s", "E'' (loss)")):
+        ax.loglog(f, data[f"data/{key}_kPa"], marker, mfc="none", color=color,
+                  label=f"{label} measured")
+        ax.loglog(f, data[f"data/fitted_{key}_kPa"], "-", color=color, label=f"{label} fitted")
+        ax_r.semilogx(f, data[f"data/fitted_{key}_kPa"] - data[f"data/{key}_kPa"], marker,
+                      ms=4, color=color, label=label)
+    ax.set_ylabel("modulus (kPa)")
+    ax_r.set_xlabel("frequency (Hz)")
+    ax_r.set_ylabel("model - measured (kPa)")
+    ax_r.legend(fontsize=7)
 
 
-def plot_models(f, args):
+def draw_material(ax, ax_r, data, ring):
+    test = data["samples/test"]
+    kinds = [text(k) for k in data["tests/kind"]]
+    fitted = data["tests/fitted"]
+    for k, kind in enumerate(kinds):
+        rows = test == k
+        stretch = data["samples/stretch"][rows]
+        use = "fitted" if fitted[k] else "predicted"
+        ax.plot(stretch, data["samples/measured_stress_kPa"][rows], "o", ms=2.5, mfc="none",
+                color=f"C{k}", alpha=0.6, label=f"{kind}, measured")
+        ax.plot(stretch, data["samples/model_stress_kPa"][rows], "-" if fitted[k] else "--",
+                color=f"C{k}", lw=1.2, label=f"{kind}, model ({use})")
+        ax_r.plot(stretch, data["samples/residual_kPa"][rows], ".", ms=3, color=f"C{k}")
+    ax.set_ylabel("nominal stress (kPa)")
+    ax_r.set_xlabel("stretch of the loaded direction")
+    ax_r.set_ylabel("model - measured (kPa)")
+
+
+DRAW = {"actuator points": draw_points, "creep": draw_creep, "DMA": draw_dma,
+        "material tests": draw_material}
+
+
+def plot_models(f, path):
     """A model selection: AIC, BIC and held-out error per candidate."""
-    require(f, args.file, ("models/model", "models/aic", "models/bic", "models/held_out_error"),
-            "a model selection of cdea fit")
+    for key in ("models/aic", "models/bic", "models/held_out_error"):
+        if key not in f:
+            raise FitFileError(f"'{path}' is not a model selection of cdea fit (no /{key})")
     names = [text(x) for x in f["models/model"][()]]
     aic, bic = f["models/aic"][()], f["models/bic"][()]
     held = f["models/held_out_error"][()]
@@ -182,27 +226,66 @@ def plot_models(f, args):
     return fig
 
 
+def plot_selection(path, out):
+    """The figure of a model selection file @p path, written to @p out."""
+    with h5py.File(path, "r") as f:
+        fig = plot_models(f, path)
+    fig.tight_layout()
+    fig.savefig(out, dpi=120)
+    plt.close(fig)
+    print(f"{PROG}: wrote {out}")
+
+
+def is_selection(path):
+    try:
+        with h5py.File(path, "r") as f:
+            return "models/model" in f
+    except OSError:
+        return False
+
+
+def plot(path, out, ring=None):
+    """The figure of the fit or model-selection file @p path, written to @p out."""
+    if is_selection(path):
+        plot_selection(path, out)
+        return
+    kind, data, attrs = read(path)
+    fig, (ax, ax_r) = plt.subplots(2, 1, figsize=(7, 7), sharex=True,
+                                   gridspec_kw={"height_ratios": [3, 1]})
+    try:
+        DRAW[kind](ax, ax_r, data, ring)
+    except FitFileError:
+        plt.close(fig)
+        raise
+    ax.text(0.02, 0.97, "\n".join(summary_lines(attrs)), transform=ax.transAxes, va="top",
+            fontsize=8, bbox=dict(facecolor="white", alpha=0.8, edgecolor="0.8"))
+    ax.legend(loc="lower right", fontsize=7)
+    ax.set_title(f"(a) {kind}: data and fitted model ({os.path.basename(path)})", fontsize=10)
+    ax_r.axhline(0., color="0.6", lw=0.8)
+    ax_r.set_title("(b) residuals", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(out, dpi=120)
+    plt.close(fig)
+    print(f"{PROG}: wrote {out}")
+
+
+def draw(paths, out):
+    """The picture of plot.py: one fit file (a fit is not overlaid)."""
+    if len(paths) != 1:
+        raise FitFileError(f"fit files are drawn one at a time, got {len(paths)}")
+    plot(paths[0], out)
+
+
 def main():
     parser = argparse.ArgumentParser(prog=PROG, description=__doc__.splitlines()[0])
     parser.add_argument("file")
     parser.add_argument("--out")
-    parser.add_argument("--ring", type=int)
+    parser.add_argument("--ring", type=int, help="actuator points: the ring of the x axis")
     args = parser.parse_args()
     try:
-        f = h5py.File(args.file, "r")
-    except OSError as error:
-        sys.exit(f"{PROG}: error: cannot read '{args.file}': {error}")
-    with f:
-        if "models" in f:
-            fig = plot_models(f, args)
-        elif "samples" in f:
-            fig = plot_material_tests(f, args)
-        else:
-            fig = plot_displacements(f, args)
-    fig.tight_layout()
-    out = args.out or os.path.splitext(args.file)[0] + ".png"
-    fig.savefig(out, dpi=120)
-    print(f"{PROG}: wrote {out}")
+        plot(args.file, args.out or os.path.splitext(args.file)[0] + ".png", args.ring)
+    except FitFileError as error:
+        sys.exit(f"{PROG}: error: {error}")
 
 
 if __name__ == "__main__":

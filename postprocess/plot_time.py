@@ -192,7 +192,8 @@ def save(fig, path):
     print(f"wrote {path}")
 
 
-def plot_time(runs, out_dir, labels, t_from, t_to):
+def plot_time(runs, path, labels, t_from, t_to):
+    """Displacement, voltages and level drop against time, one line per run, to @p path."""
     fig, axes = plt.subplots(3, 1, figsize=(7.5, 7.5), sharex=True)
     for run, label in zip(runs, labels):
         keep = (run.t >= t_from) & (run.t <= t_to)
@@ -212,7 +213,7 @@ def plot_time(runs, out_dir, labels, t_from, t_to):
         ax.grid(alpha=0.3)
     axes[0].legend(fontsize=8)
     axes[1].legend(fontsize=7, ncol=2)
-    save(fig, os.path.join(out_dir, runs[0].name + "_time.png"))
+    save(fig, path)
 
 
 def plot_cycles(runs, labels, out_dir, levels):
@@ -364,7 +365,8 @@ def main(argv):
         curve = quasi_static_curve(args.elastic) if args.elastic else None
         for run in runs:
             report(run, args.min_hold, curve)
-        plot_time(runs, out_dir, labels, args.t_from, args.t_to)
+        plot_time(runs, os.path.join(out_dir, runs[0].name + "_time.png"), labels, args.t_from,
+                  args.t_to)
         levels = [float(x) for x in args.levels.split(",") if x.strip()]
         plot_cycles(runs, labels, out_dir, levels)
         if args.elastic:

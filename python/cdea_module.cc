@@ -538,4 +538,6 @@ PYBIND11_MODULE(cdea, m)
   bind_design(m);
   bind_viscous_fit(m);
   bind_material_fit(m);
+  // The pure-Python part (python/cdea_load.py): cdea.load, to_pandas, to_xarray.
+  py::module_::import("cdea_load").attr("extend")(m);
 }

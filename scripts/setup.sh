@@ -28,10 +28,12 @@ esac
 # output back with VTK's XML reader. libnlopt-cxx-dev: the layout optimizer
 # (cdea optimize); libceres-dev: the least-squares calibration (cdea fit).
 # pybind11-dev, python3-dev and python3-numpy: the Python module `cdea`
-# (build/python, doc/python.md).
+# (build/python, doc/python.md). python3-pandas and python3-xarray: the
+# results' to_pandas() and to_xarray() (python/cdea_load.py), and their tests.
 packages=(cmake g++ make libdeal.ii-dev libeigen3-dev libhdf5-dev hdf5-tools
           libnlopt-cxx-dev libceres-dev openmpi-bin python3 python3-h5py python3-matplotlib
-          python3-pytest python3-vtk9 pybind11-dev python3-dev python3-numpy)
+          python3-pytest python3-vtk9 pybind11-dev python3-dev python3-numpy
+          python3-pandas python3-xarray)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -13,8 +13,8 @@
 # 2. one file: the held-out error cannot be computed, the data cannot decide;
 # 3. bad candidate lists: exit 1, the entry and what is allowed named,
 #    nothing written;
-# 4. postprocess/plot_fit.py (Agg) draws the material-test fit (a row per
-#    file) and the model selection of 1, and refuses a file of neither.
+# 4. postprocess/plot_fit.py (Agg) draws the material-test fit and the model
+#    selection of 1, and refuses a file of neither.
 source "$(dirname "$0")/script_helpers.bash"
 sed 's/set Directory           = results/set Directory = out/' "$src/prm/fit-material.prm" > fit.prm
 cp "$src"/prm/fit-material-*.csv .
@@ -101,14 +101,9 @@ refused "a model twice" "Calibration/Candidate models: 'elastic 1' is given twic
 refused "an empty item" "'' is not 'LAW N'" "elastic 0,, elastic 1"
 
 # 4. The plots of the fit and of the selection.
+# (what the material-test figure shows, curve by curve: tests/test_plot_products.py)
 "$PYTHON" "$src/postprocess/plot_fit.py" out/fit-material_fit.h5 --out fit.png > p1.txt 2>&1 \
-  && "$PYTHON" - fit.png 3 <<'PY' && ok "plot_fit.py: the material-test fit, a row per file" || { fail "plot_fit.py on the fit"; cat p1.txt; }
-import sys
-import matplotlib.image as image
-height, width = image.imread(sys.argv[1]).shape[:2]
-print("   ", width, "x", height)
-assert width > 1200 and height > 300 * int(sys.argv[2])
-PY
+  && [ -s fit.png ] && ok "plot_fit.py: the material-test fit" || { fail "plot_fit.py on the fit"; cat p1.txt; }
 "$PYTHON" "$src/postprocess/plot_fit.py" out/fit-material_models.h5 > p2.txt 2>&1 \
   && [ -s out/fit-material_models.png ] && ok "plot_fit.py: the model selection" \
   || { fail "plot_fit.py on the selection"; cat p2.txt; }
