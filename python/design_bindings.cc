@@ -22,6 +22,7 @@
 #include "product_convert.h"
 
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <iostream>
 #include <sstream>
@@ -58,6 +59,7 @@ namespace
     OptimizationSettings settings;
     OptimizationRun      run;
     Product              product;
+    std::string          results_path; ///< <Directory>/<Base name>_optimum.h5
 
     const StartResult &best() const { return run.starts.at(run.best); }
   };
@@ -68,6 +70,7 @@ namespace
     FitSettings settings;
     FitResult   result;
     Product     product;
+    std::string results_path; ///< <Directory>/<Base name>_fit.h5
   };
 
   std::string path_of(const py::object &path)
@@ -75,12 +78,26 @@ namespace
     return py::module_::import("os").attr("fspath")(path).cast<std::string>();
   }
 
-  /// write(path) of the results: the folder must exist; a file that cannot
-  /// be written raises OSError with the writer's message.
-  void write_to(const py::object &path, const std::function<void(const std::string &)> &writer)
+  /// write(path=None) of the results, to @p path or else @p default_path
+  /// (<Directory>/<Base name>_optimum.h5, _fit.h5), as RunResult.write():
+  /// the folder of @p path is made if the one above it exists, the default's
+  /// whole; a file that cannot be
+  /// written raises OSError with the writer's message. Returns the path.
+  std::string write_to(const py::object &path, const std::string &default_path,
+                       const std::function<void(const std::string &)> &writer)
   {
-    const std::string file = path_of(path);
-    require_directory_of(file);
+    const std::string file = path.is_none() ? default_path : path_of(path);
+    std::error_code   error;
+    if (!path.is_none())
+      require_directory_of(file);
+    else if (const auto folder = std::filesystem::path(file).parent_path();
+             !folder.empty() && !std::filesystem::create_directories(folder, error) && error)
+      {
+        PyErr_SetString(PyExc_OSError, ("cannot write '" + file + "': cannot create the folder '" +
+                                        folder.string() + "': " + error.message())
+                                         .c_str());
+        throw py::error_already_set();
+      }
     try
       {
         writer(file);
@@ -90,6 +107,7 @@ namespace
         PyErr_SetString(PyExc_OSError, e.what());
         throw py::error_already_set();
       }
+    return file;
   }
 
   /// CSV text (a str with a line break) or a path.
@@ -143,9 +161,14 @@ namespace
       .def(
         "write",
         [](const Optimization &o, const py::object &path) {
-          write_to(path, [&](const std::string &file) { write_product_file(o.product, file); });
+          return write_to(path, o.results_path,
+                          [&](const std::string &file) { write_product_file(o.product, file); });
         },
-        py::arg("path"), "Write the optimum file (HDF5) to path")
+        py::arg("path") = py::none(),
+        "Write the optimum file (HDF5) to path (default: results_path, the command's "
+        "<Directory>/<Base name>_optimum.h5); returns the path")
+      .def_readonly("results_path", &Optimization::results_path,
+                    "where `cdea optimize` writes its file, <Directory>/<Base name>_optimum.h5")
       .def("__repr__", [](const Optimization &o) {
         const StartResult &b = o.best();
         return "<cdea.OptimizeResult " +
@@ -167,6 +190,7 @@ namespace
         };
         o.run     = optimize_layouts(p, o.base, o.settings, {}, on_start);
         o.product = optimum_product(o.run, o.settings, o.base, o.parameter_text);
+        o.results_path = p.results_path("_optimum");
         return o;
       },
       py::arg("prm"), py::arg("overrides") = py::none(), py::arg("progress") = false,
@@ -218,9 +242,14 @@ namespace
       .def(
         "write",
         [](const Calibration &c, const py::object &path) {
-          write_to(path, [&](const std::string &file) { write_product_file(c.product, file); });
+          return write_to(path, c.results_path,
+                          [&](const std::string &file) { write_product_file(c.product, file); });
         },
-        py::arg("path"), "Write the fit file (HDF5) to path")
+        py::arg("path") = py::none(),
+        "Write the fit file (HDF5) to path (default: results_path, the command's "
+        "<Directory>/<Base name>_fit.h5); returns the path")
+      .def_readonly("results_path", &Calibration::results_path,
+                    "where `cdea fit` writes its file, <Directory>/<Base name>_fit.h5")
       .def("__repr__", [](const Calibration &c) {
         std::string s = "<cdea.FitResult " +
                         std::string(c.result.converged ? "converged" : "NOT converged");
@@ -254,7 +283,8 @@ namespace
                                   << std::endl;
                     });
         c.result  = run.result;
-        c.product = fit_product(parameter_text, points, c.settings, run);
+        c.product      = fit_product(parameter_text, points, c.settings, run);
+        c.results_path = p.results_path("_fit");
         return py::cast(std::move(c));
       },
       py::arg("prm"), py::arg("data"), py::arg("overrides") = py::none(),

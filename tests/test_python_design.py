@@ -74,6 +74,14 @@ def test_optimize_equals_the_command(tmp_path, monkeypatch):
         assert same(g.attrs["ring_edges_over_a"], f.attrs["ring_edges_over_a"], 1e-10)
         assert same(g["starts/objective"][()], f["starts/objective"][()], 1e-10)
 
+    # write() without a path: where the command writes, Output/Directory made.
+    (tmp_path / "elsewhere").mkdir()
+    monkeypatch.chdir(tmp_path / "elsewhere")
+    assert result.results_path == "out/paper_optimum.h5"
+    assert result.write() == "out/paper_optimum.h5"
+    with h5py.File("out/paper_optimum.h5", "r") as g:
+        assert same(g.attrs["stroke_mm"], a["stroke_mm"], 1e-15)
+
 
 def test_optimize_overrides_and_bad_input(tmp_path):
     text = prm_text("optimize-paper.prm", "paper")
@@ -119,6 +127,14 @@ def test_fit_equals_the_command(tmp_path, monkeypatch):
 
     from_path.write(tmp_path / "again.h5")
     with h5py.File(tmp_path / "again.h5", "r") as g:
+        assert same(g.attrs["fitted_values"], [mu, jlim], 1e-15)
+
+    # write() without a path: where the command writes, Output/Directory made.
+    (tmp_path / "elsewhere").mkdir()
+    monkeypatch.chdir(tmp_path / "elsewhere")
+    assert from_path.results_path == "out/fit_fit.h5"
+    assert from_path.write() == "out/fit_fit.h5"
+    with h5py.File("out/fit_fit.h5", "r") as g:
         assert same(g.attrs["fitted_values"], [mu, jlim], 1e-15)
 
 
