@@ -33,7 +33,7 @@ namespace py = pybind11;
 using namespace cdea;
 
 void require_directory_of(const std::string &file); // python/cdea_module.cc
-py::object fit_material_tests(const py::module_ &m, const py::object &prm, const py::object &files,
+py::object fit_material_data(const py::module_ &m, const py::object &prm, const py::object &files,
                               const py::object &predict, const py::object &models,
                               const py::object &overrides,
                               bool progress); // python/material_fit_bindings.cc
@@ -267,7 +267,7 @@ namespace
       [m](const py::object &prm, const py::object &data, const py::object &overrides,
           const bool progress, const py::object &predict, const py::object &models) -> py::object {
         if (is_material_data(data) || !predict.is_none() || !models.is_none())
-          return fit_material_tests(m, prm, data, predict, models, overrides, progress);
+          return fit_material_data(m, prm, data, predict, models, overrides, progress);
         Calibration           c;
         std::string           parameter_text;
         const Parameters      p    = design_parameters(m, prm, overrides, parameter_text);

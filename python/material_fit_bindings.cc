@@ -180,7 +180,7 @@ namespace
 } // namespace
 
 /// cdea.fit() on material tests (python/design_bindings.cc hands them here).
-py::object fit_material_tests(const py::module_ &m, const py::object &prm, const py::object &files,
+py::object fit_material_data(const py::module_ &m, const py::object &prm, const py::object &files,
                               const py::object &predict, const py::object &models,
                               const py::object &overrides, const bool progress)
 {
