@@ -99,6 +99,19 @@ namespace
     recommend(s);
     check_close(s.spread, 0.005, 1e-12, "the paired differences' standard error where it is larger");
     check(!s.decided && s.verdict.find("cannot decide") != std::string::npos, s.verdict);
+    // Undecided with the richer model ahead by held-out error: the simpler
+    // one recommended (fewer branches), and the verdict says so.
+    ModelSelection rich;
+    rich.models = {model("elastic", 2, {0.0100, 0.0120}, 50, 5.), model("elastic", 1, {0.0101, 0.0121}, 50, 1.)};
+    recommend(rich);
+    check(!rich.decided && rich.recommended == 1 &&
+            rich.verdict.find("recommended: the simpler, elastic 1") != std::string::npos,
+          "undecided: the simpler model recommended: " + rich.verdict);
+    // Decided: the better one, however many constants it has.
+    ModelSelection clear;
+    clear.models = {model("elastic", 2, {0.010, 0.012}, 100000, 5.), model("elastic", 1, {0.020, 0.024}, 100000, 1.)};
+    recommend(clear);
+    check(clear.decided && clear.recommended == 0, "decided: the lower held-out error: " + clear.verdict);
     // One file: no held-out error; the lowest BIC.
     const double   nan = std::numeric_limits<double>::quiet_NaN();
     ModelSelection one;

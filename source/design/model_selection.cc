@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <tuple>
 
 namespace cdea
 {
@@ -327,6 +328,15 @@ namespace cdea
     const double           gap  = next.held_out_error - best.held_out_error;
     s.spread                    = difference_spread(best, next);
     s.decided                   = gap > s.spread;
+    // Undecided: the simpler of the two (fewer constants, then fewer
+    // branches, then the lower BIC), as a richer model the data cannot
+    // support only adds uncertain constants.
+    const auto simpler = [&](const ModelAssessment &a, const ModelAssessment &b) {
+      return std::make_tuple(a.setup.fit.free.size(), a.setup.candidate.branches, a.bic) <
+             std::make_tuple(b.setup.fit.free.size(), b.setup.candidate.branches, b.bic);
+    };
+    if (!s.decided && simpler(next, best))
+      s.recommended = by_error[1];
     const std::string versus    = next.setup.candidate.name() + " (" +
                                format_number(next.held_out_error, 3) + ") by " +
                                format_number(gap, 3) + ", spread " + format_number(s.spread, 2);
@@ -334,6 +344,8 @@ namespace cdea
                             "the data cannot decide between " + best.setup.candidate.name() + " (" +
                               held + ") and " + versus + " (the difference is within the spread; "
                               "the lowest BIC is " +
-                              s.models[ranked(s.models, bic).front()].setup.candidate.name() + ")";
+                              s.models[ranked(s.models, bic).front()].setup.candidate.name() +
+                              "); recommended: the simpler, " +
+                              s.models[s.recommended].setup.candidate.name();
   }
 } // namespace cdea
