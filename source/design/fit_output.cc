@@ -108,8 +108,11 @@ namespace cdea
     using namespace fit_quantity;
 
     /// The root attributes and /correlation of every fit.
+    /// The root attributes every fit file has; @p rms_row is the rms
+    /// residual's row in the data's unit (mm of displacement, kPa of stress).
     Product fit_attributes(const std::string &parameter_text, const FitSettings &settings,
-                           const FitResult &r, const unsigned int solve_count)
+                           const FitResult &r, const unsigned int solve_count,
+                           const Quantity &rms_row = rms_residual)
     {
       const std::size_t        K = settings.free.size();
       std::vector<std::string> names;
@@ -134,7 +137,7 @@ namespace cdea
         .set(initial_values, r.initial)
         .set(fitted_values, r.values)
         .set(standard_errors, r.standard_errors)
-        .set(rms_residual, r.rms)
+        .set(rms_row, r.rms)
         .set(condition_number, r.condition)
         .set(converged, r.converged)
         .set(status, r.status)
@@ -199,10 +202,7 @@ namespace cdea
         rs.push_back(at(r.residuals, 2 * i));
         rl.push_back(at(r.residuals, 2 * i + 1));
       }
-    // rms_residual_mm of a DMA fit is in MPa (moduli in kPa over 1e3): the
-    // rms in kPa is its own attribute.
-    Product product = fit_attributes(parameter_text, settings, r, 0);
-    product.root().set(rms_residual_kPa, r.rms);
+    Product product = fit_attributes(parameter_text, settings, r, 0, rms_residual_kPa);
     product.group("/data")
       .set(dma_frequency, data.frequency)
       .set(dma_storage, data.storage)
@@ -242,9 +242,8 @@ namespace cdea
   {
     namespace q = material_fit_quantity;
     const FitResult &f = r.fit;
-    // rms_residual_mm holds the stresses' Pa as if m: the rms in kPa is its own row.
-    Product product = fit_attributes(parameter_text, settings, f, 0);
-    product.root().set(evaluations, r.evaluations).set(q::rms_residual_kPa, f.rms);
+    Product product = fit_attributes(parameter_text, settings, f, 0, q::rms_residual_kPa);
+    product.root().set(evaluations, r.evaluations);
     std::vector<std::string> files, kinds;
     std::vector<double> fitted_flags, weights, samples, rms, largest, relative;
     std::vector<double> test, time, stretch, measured, model, residual, sample_weight;
