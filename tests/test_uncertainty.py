@@ -16,6 +16,7 @@ onset of wrinkling at 5.38 kV):
   against the linear values; the same seed draws the same samples;
 - a fit's _fit.prm run as it is with Mode = linear gives the same answers
   as its _fit.h5 named as Covariance file;
+- cdea.run() returns the rows the command writes;
 - bad input: a clear message naming the entry, exit 1, no results file.
 """
 
@@ -246,3 +247,17 @@ def test_commands_without_uncertainty_refuse_it(tmp_path, verb):
     assert "Uncertainty/Mode = linear: cdea " + verb + " does not carry uncertainty" \
         in done.stderr, done.stderr
     assert not [f for f in os.listdir(tmp_path) if f.endswith(".h5")]
+
+
+def test_python_run_returns_the_same_rows(tmp_path):
+    cdea_module = pytest.importorskip("cdea")
+    deviations = ", ".join("%s: 3%%" % NAMES[k] for k in NOMINAL)
+    extra = SCENE + uncertainty("linear", deviations)
+    _, attrs = answers(tmp_path, "command", uncertainty("linear", deviations))
+    r = cdea_module.run(prm_text(tmp_path, "module", extra))
+    for row in STD_ROWS + ["onset_voltage_std_kV"]:
+        assert np.allclose(r.attributes[row], attrs[row], rtol=1e-12), row
+    mc = cdea_module.run(prm_text(tmp_path, "module_mc", SCENE + uncertainty(
+        "monte carlo", deviations, samples=10)))
+    assert mc.attributes["uncertainty_samples"] == 10
+    assert np.ravel(mc.attributes["displacement_percentiles_mm"]).shape == (3,)

@@ -114,6 +114,8 @@ namespace cdea
         if (!output || !prepare())
           return exit_input_error;
         connect();
+        if (linear)
+          linear->follow(stepper, *fe_model);
         std::cout << "cdea " << CDEA_VERSION << " (" << to_string(method)
                   << "): " << scene.n_rings() << " ring(s), writing " << path << '\n';
         recorder->header();
@@ -186,24 +188,18 @@ namespace cdea
       void connect()
       {
         stepper.on_step = [this](const StepSummary &s) {
-          if (linear && s.stage == Stage::dead_load && s.load_factor == 1.)
-            linear->reference(*fe_model);
           recorder->step(s);
           if (paraview)
             paraview->write_step(s, stepper.step_fields());
           RunOutput::stop_point();
         };
         stepper.on_onset = [this](const OnsetRecord &onset) {
-          if (linear)
-            linear->onset(*fe_model, onset);
           stream->onset(onset);
           std::cout << "      loss of tension (s2 = 0) at " << format_kV(onset.voltages)
                     << ", radius r = " << std::setprecision(6) << mm(onset.radius)
                     << " mm (r/a = " << onset.radius / scene.disk_radius << ")" << std::endl;
         };
         stepper.on_limit_point = [this](const LimitPoint &limit) {
-          if (linear)
-            linear->limit_point(*fe_model, limit);
           stream->limit_point(limit);
           std::cout << "      limit point (fold) at " << format_kV(limit.voltages)
                     << ", displacement " << std::setprecision(7) << mm(limit.displacement)
