@@ -16,6 +16,7 @@ onset of wrinkling at 5.38 kV):
   against the linear values; the same seed draws the same samples;
 - a fit's _fit.prm run as it is with Mode = linear gives the same answers
   as its _fit.h5 named as Covariance file;
+- cdea.run() returns the rows the command writes;
 - bad input: a clear message naming the entry, exit 1, no results file.
 """
 
@@ -90,20 +91,28 @@ def linear_sd(attrs):
     return np.array([attrs[r] for r in STD_ROWS] + [attrs["onset_voltage_std_kV"][0]])
 
 
+def propagated_differences(tmp, outputs, correlation):
+    """sqrt(G^T C G) of the central differences G (relative steps 1e-4) of
+    outputs(tmp, base, extra) in each constant, C from 3 % on each and
+    @p correlation."""
+    sd = np.array([0.03 * NOMINAL[k] * SI[k] for k in NOMINAL])
+    C = np.diag(sd) @ np.array(correlation) @ np.diag(sd)
+    gradient = []
+    for k, value in NOMINAL.items():
+        h = 1e-4 * value
+        up, _ = outputs(tmp, "up", material({**NOMINAL, k: value + h}))
+        down, _ = outputs(tmp, "down", material({**NOMINAL, k: value - h}))
+        gradient.append((up - down) / (2 * h * SI[k]))
+    G = np.array(gradient)  # constants x outputs
+    return np.sqrt(np.einsum("ia,ij,ja->a", G, C, G))
+
+
 def test_linear_against_central_differences(tmp_path):
     deviations = ", ".join("%s: 3%%" % NAMES[k] for k in NOMINAL)
     _, attrs = answers(tmp_path, "linear",
                        uncertainty("linear", deviations, "shear modulus, Jlim: 0.5"))
-    sd = np.array([0.03 * NOMINAL[k] * SI[k] for k in NOMINAL])
-    C = np.diag(sd) @ np.array([[1, 0.5, 0], [0.5, 1, 0], [0, 0, 1]]) @ np.diag(sd)
-    gradient = []
-    for k, value in NOMINAL.items():
-        h = 1e-4 * value
-        up, _ = answers(tmp_path, "up", material({**NOMINAL, k: value + h}))
-        down, _ = answers(tmp_path, "down", material({**NOMINAL, k: value - h}))
-        gradient.append((up - down) / (2 * h * SI[k]))
-    G = np.array(gradient)  # constants x answers
-    differences = np.sqrt(np.einsum("ia,ij,ja->a", G, C, G))
+    differences = propagated_differences(tmp_path, answers, [[1, 0.5, 0], [0.5, 1, 0],
+                                                            [0, 0, 1]])
     linear = linear_sd(attrs)
     print("linear", linear, "central differences", differences)
     assert np.all(linear > 0)
@@ -125,16 +134,8 @@ def test_fold_voltages_against_central_differences(tmp_path):
     deviations = ", ".join("%s: 3%%" % NAMES[k] for k in NOMINAL)
     _, attrs = fold_voltages(tmp_path, "linear",
                              uncertainty("linear", deviations, "Jlim, permittivity: -0.4"))
-    sd = np.array([0.03 * NOMINAL[k] * SI[k] for k in NOMINAL])
-    C = np.diag(sd) @ np.array([[1, 0, 0], [0, 1, -0.4], [0, -0.4, 1]]) @ np.diag(sd)
-    gradient = []
-    for k, value in NOMINAL.items():
-        h = 1e-4 * value
-        up, _ = fold_voltages(tmp_path, "up", material({**NOMINAL, k: value + h}))
-        down, _ = fold_voltages(tmp_path, "down", material({**NOMINAL, k: value - h}))
-        gradient.append((up - down) / (2 * h * SI[k]))
-    G = np.array(gradient)  # constants x folds
-    differences = np.sqrt(np.einsum("ia,ij,ja->a", G, C, G))
+    differences = propagated_differences(tmp_path, fold_voltages, [[1, 0, 0], [0, 1, -0.4],
+                                                                  [0, -0.4, 1]])
     linear = np.ravel(attrs["limit_point_voltage_std_kV"])
     print("folds", np.ravel(attrs["limit_point_voltage_kV"]), "linear sd", linear,
           "central differences", differences)
@@ -246,3 +247,17 @@ def test_commands_without_uncertainty_refuse_it(tmp_path, verb):
     assert "Uncertainty/Mode = linear: cdea " + verb + " does not carry uncertainty" \
         in done.stderr, done.stderr
     assert not [f for f in os.listdir(tmp_path) if f.endswith(".h5")]
+
+
+def test_python_run_returns_the_same_rows(tmp_path):
+    cdea_module = pytest.importorskip("cdea")
+    deviations = ", ".join("%s: 3%%" % NAMES[k] for k in NOMINAL)
+    extra = SCENE + uncertainty("linear", deviations)
+    _, attrs = answers(tmp_path, "command", uncertainty("linear", deviations))
+    r = cdea_module.run(prm_text(tmp_path, "module", extra))
+    for row in STD_ROWS + ["onset_voltage_std_kV"]:
+        assert np.allclose(r.attributes[row], attrs[row], rtol=1e-12), row
+    mc = cdea_module.run(prm_text(tmp_path, "module_mc", SCENE + uncertainty(
+        "monte carlo", deviations, samples=10)))
+    assert mc.attributes["uncertainty_samples"] == 10
+    assert np.ravel(mc.attributes["displacement_percentiles_mm"]).shape == (3,)

@@ -140,6 +140,8 @@ namespace cdea
         if (!output || !prepare())
           return exit_input_error;
         connect();
+        if (linear)
+          linear->follow(stepper, *fe_model);
         std::cout << "cdea " << CDEA_VERSION << " (" << to_string(method)
                   << "): " << scene.n_rings() << " ring(s), writing " << path << '\n';
         recorder->header();
@@ -215,8 +217,6 @@ namespace cdea
       void connect()
       {
         stepper.on_step = [this](const StepSummary &s) {
-          if (linear && s.stage == Stage::dead_load && s.load_factor == 1.)
-            linear->reference(*fe_model);
           if (estimate)
             estimate->step(s, model);
           recorder->step(s);
@@ -225,8 +225,6 @@ namespace cdea
           RunOutput::stop_point();
         };
         stepper.on_onset = [this](const OnsetRecord &onset) {
-          if (linear)
-            linear->onset(*fe_model, onset);
           if (estimate)
             estimate->onset(model);
           stream->onset(onset);
@@ -235,8 +233,6 @@ namespace cdea
                     << " mm (r/a = " << onset.radius / scene.disk_radius << ")" << std::endl;
         };
         stepper.on_limit_point = [this](const LimitPoint &limit) {
-          if (linear)
-            linear->limit_point(*fe_model, limit);
           stream->limit_point(limit);
           std::cout << "      limit point (fold) at " << format_kV(limit.voltages)
                     << ", displacement " << std::setprecision(7) << mm(limit.displacement)

@@ -3,9 +3,11 @@
 #include <cdea/analysis/run_setup.h>
 #include <cdea/analysis/session.h>
 #include <cdea/analysis/time_run.h>
+#include <cdea/analysis/uncertainty_run.h>
 #include <cdea/input/solver_settings.h>
 
 #include <memory>
+#include <optional>
 
 namespace cdea
 {
@@ -39,7 +41,19 @@ namespace cdea
     };
     stepper.on_limit_point = [&](const LimitPoint &limit) { stream.limit_point(limit); };
     stepper.on_breakdown   = [&](const OnsetRecord &breakdown) { stream.breakdown(breakdown); };
-    run_keeping_steps(record, [&] { return stepper.run(); });
+    // The answers' uncertainty (Uncertainty/Mode) as the command's file has it.
+    auto *const                         fe_model = dynamic_cast<MembraneModel *>(model.get());
+    std::optional<LinearRunUncertainty> linear;
+    if (input.uncertainty.mode == UncertaintyMode::linear && fe_model)
+      linear.emplace(input.uncertainty, input.scene).follow(stepper, *fe_model);
+    run_keeping_steps(record, [&] {
+      const RunResult result = stepper.run();
+      if (result.completed && linear)
+        stream.attributes(linear->finish(*fe_model));
+      else if (result.completed && input.uncertainty.mode == UncertaintyMode::monte_carlo)
+        stream.attributes(monte_carlo_run(input, input.uncertainty, false));
+      return result;
+    });
     // The final state's estimated errors, as `cdea run` writes them (not
     // after a stop or an error: the steps so far are the result).
     if (estimate && !record.steps.empty() && record.result.message.rfind("error: ", 0) != 0)

@@ -56,6 +56,26 @@ namespace cdea
     , scene(scene)
   {}
 
+  void LinearRunUncertainty::follow(LoadStepper &stepper, MembraneModel &model)
+  {
+    stepper.on_step = [this, &model, then = stepper.on_step](const StepSummary &s) {
+      if (s.stage == Stage::dead_load && s.load_factor == 1.)
+        reference(model);
+      if (then)
+        then(s);
+    };
+    stepper.on_onset = [this, &model, then = stepper.on_onset](const OnsetRecord &o) {
+      onset(model, o);
+      if (then)
+        then(o);
+    };
+    stepper.on_limit_point = [this, &model, then = stepper.on_limit_point](const LimitPoint &l) {
+      limit_point(model, l);
+      if (then)
+        then(l);
+    };
+  }
+
   void LinearRunUncertainty::reference(MembraneModel &model)
   {
     const StateSensitivity at(model, constants.parameters);
@@ -131,23 +151,11 @@ namespace cdea
     const std::unique_ptr<MembraneModel> model = make_fe_model(input.parameters, scene);
     LoadStepper stepper(scene, *model, stepping_settings(input.parameters));
     add_run_postprocessors(stepper, input.parameters, scene);
+    StepSummary last;
+    stepper.on_step = [&](const StepSummary &s) { last = s; };
     std::optional<LinearRunUncertainty> linear;
     if (linear_rows)
-      linear.emplace(input.uncertainty, scene);
-    StepSummary last;
-    stepper.on_step = [&](const StepSummary &s) {
-      if (linear && s.stage == Stage::dead_load && s.load_factor == 1.)
-        linear->reference(*model);
-      last = s;
-    };
-    stepper.on_onset = [&](const OnsetRecord &onset) {
-      if (linear)
-        linear->onset(*model, onset);
-    };
-    stepper.on_limit_point = [&](const LimitPoint &limit) {
-      if (linear)
-        linear->limit_point(*model, limit);
-    };
+      linear.emplace(input.uncertainty, scene).follow(stepper, *model);
     try
       {
         const RunResult result = stepper.run();

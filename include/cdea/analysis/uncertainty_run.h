@@ -52,6 +52,9 @@ namespace cdea
   public:
     LinearRunUncertainty(const UncertainConstants &constants, const Scene &scene);
 
+    /// Follows the reports of @p stepper on @p model (reference(), onset(),
+    /// limit_point()) before the callbacks it has so far.
+    void follow(LoadStepper &stepper, MembraneModel &model);
     /// The model's state is the end of the dead-load stage.
     void reference(MembraneModel &model);
     /// The model's state is the onset @p onset.
