@@ -12,7 +12,9 @@ A trial passes when the command
     its journal and lock gone;
   - or had ended before the signal: exit 0, the complete file;
   - or was killed by the signal during its start-up (before its handlers):
-    nothing written, the older file byte for byte as it was, no lock.
+    nothing written, the older file byte for byte as it was, no lock;
+  - or was killed by it as it ended (after its handlers were taken down):
+    its complete file in place of the older one.
 For recover, a killed run's journal is recovered; interrupted, the journal
 is kept and nothing is written.
 Usage: signal_trials.py CDEA_EXECUTABLE SOURCE_DIR TRIALS SEED [COMMANDS]
@@ -141,7 +143,12 @@ def trial(name, index, work):
     partial = os.path.join(work, target.replace(".h5", ".partial.h5")) if target else None
     if any(f.endswith((".lock", ".tmp", ".older")) for f in left):
         problems.append(f"left behind: {left}")
-    if rc == -sig:  # killed during the start-up: nothing may have changed
+    if rc == -sig and not kept and target and kind != "recover" \
+            and readable(os.path.join(work, target), kind) is not None:
+        # The signal came as the process was ending, after its handling was
+        # taken down: its complete file had already replaced the older one.
+        outcome = "killed after its file was complete"
+    elif rc == -sig:  # killed during the start-up: nothing may have changed
         outcome = "killed at start-up"
         if not kept:
             problems.append("killed at start-up, but the older file changed")
