@@ -9,7 +9,8 @@ script: a run (plot_run.py: displacement and stroke over the voltage stage;
 several runs overlaid here), a time run (plot_time.py: displacement, voltages
 and level drop against time), a design map (plot_map.py; several: the stroke
 increase on the red and blue lines), an optimum (plot_optimum.py), a fit
-(plot_fit.py, one file), a chart (plot_chart.py), a response (plot_response.py:
+(plot_fit.py, one file; a model selection too), a chart (plot_chart.py), a
+response (plot_response.py:
 the Bode plot and the mode shapes) or a frequency sweep
 (plot_frequency_sweep.py). Several files must be of one kind. Writes OUT.png
 (default: the first file's name with .png) and prints its path. A file that
@@ -101,7 +102,8 @@ def drawer(kind):
         return draw_time_runs
     if kind == "map":
         return draw_maps
-    module = {"optimum": "plot_optimum", "fit": "plot_fit", "chart": "plot_chart",
+    module = {"optimum": "plot_optimum", "fit": "plot_fit", "model selection": "plot_fit",
+              "chart": "plot_chart",
               "response": "plot_response", "frequency sweep": "plot_frequency_sweep"}[kind]
     return __import__(module).draw
 

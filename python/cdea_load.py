@@ -26,6 +26,8 @@ DIMENSIONS = {
             "": [("parameter", None)]},
     "chart": {"uniaxial": [("point", "stretch")], "equibiaxial": [("point", "stretch")],
               "dma": [("frequency", "frequency_Hz")]},
+    "model selection": {"models": [("model", "model"), ("test", None)],
+                        "constants": [("row", None)], "tests": [("test", "file")]},
     "optimum": {"history": [("evaluation", None), ("free_variable", None)],
                 "optimum": [("point", "r_over_a")], "starts": [("start", None), ("edge", None)]},
 }
@@ -33,10 +35,14 @@ DIMENSIONS = {
 ARRAY_DIMENSIONS = {"s2_inner_edge_kPa": ("rv", "outer_voltage", "edge"),
                     "base_s2_inner_edge_kPa": ("rv", "edge"),
                     "red_line_s2_inner_edge_kPa": ("rv", "edge"),
-                    "blue_line_s2_inner_edge_kPa": ("rv", "edge")}
+                    "blue_line_s2_inner_edge_kPa": ("rv", "edge"),
+                    # a model selection's per model and test file
+                    "rms_kPa": ("model", "test"), "relative_rms": ("model", "test"),
+                    "held_out_rms_kPa": ("model", "test"),
+                    "held_out_relative_rms": ("model", "test")}
 # The group of each product that to_pandas() gives by default.
 MAIN_GROUP = {"map": "", "response": "transfer", "frequency sweep": "sweep", "fit": "data",
-              "chart": "uniaxial", "optimum": "history"}
+              "chart": "uniaxial", "optimum": "history", "model selection": "models"}
 
 
 def dimension_names(shape, spec, sizes):
@@ -71,7 +77,9 @@ def xarray_dataset(arrays, columns, spec, attrs):
     for key, value in arrays.items():
         value = np.asarray(value)
         unit, description = columns.get(key, ("", ""))
-        dims = ARRAY_DIMENSIONS.get(key) or dimension_names(value.shape, spec, sizes)
+        dims = ARRAY_DIMENSIONS.get(key)
+        if dims is None or len(dims) != value.ndim:
+            dims = dimension_names(value.shape, spec, sizes)
         variables[key] = xarray.Variable(dims, value,
                                          {"unit": unit, "description": description})
     coords = {name: variables.pop(c) for name, c in spec

@@ -19,6 +19,7 @@ SIGNATURES = (
     ("chart", ("uniaxial/stretch", "equibiaxial/stretch")),
     ("response", ("transfer/frequency_Hz", "modes/frequency_Hz")),
     ("frequency sweep", ("sweep/frequency_Hz", "sweep/stroke_amplitude_mm")),
+    ("model selection", ("models/model", "models/aic", "models/bic", "constants/value")),
 )
 # A fit file: its root attributes (the data of material tests are in /samples).
 FIT_ATTRIBUTES = ("free_parameters", "fitted_values", "standard_errors")
@@ -57,7 +58,8 @@ def kind(path):
         found = kind_of(f)
     if found is None:
         raise ProductError(f"{os.fspath(path)}: not a results file of cdea (none of the groups "
-                           "of a run, map, optimum, fit, chart, response or frequency sweep)")
+                           "of a run, map, optimum, fit, model selection, chart, response or "
+                           "frequency sweep)")
     return found
 
 

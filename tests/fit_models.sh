@@ -111,6 +111,9 @@ refused "an empty item" "'' is not 'LAW N'" "elastic 0,, elastic 1"
   || { fail "plot_fit.py on the selection"; cat p2.txt; }
 "$PYTHON" "$src/postprocess/plot_fit.py" out/one_models.h5 --out one.png > p3.txt 2>&1 && [ -s one.png ] \
   && ok "plot_fit.py: a selection of one file (no held-out error)" || { fail "plot_fit.py, one file"; cat p3.txt; }
+"$PYTHON" "$src/postprocess/plot.py" out/fit-material_models.h5 -o selection.png > p5.txt 2>&1 \
+  && [ -s selection.png ] && grep -q "model selection: wrote" p5.txt \
+  && ok "plot.py recognises the model selection" || { fail "plot.py on the selection"; cat p5.txt; }
 printf 'x' > not.h5
 "$PYTHON" "$src/postprocess/plot_fit.py" not.h5 > p4.txt 2>&1
 [ $? -ne 0 ] && grep -q "plot_fit.py: error: cannot read 'not.h5'" p4.txt && ok "plot_fit.py refuses a file it cannot read" \

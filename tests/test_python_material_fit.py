@@ -87,6 +87,11 @@ def test_model_selection_as_the_command(folder):
     s.write(str(folder / "models.h5"))
     with h5py.File(folder / "models.h5") as f:
         assert list(f["models/model"].asstr()[()]) == ["elastic 0", "elastic 1"]
+    # cdea.load knows the file: its kind, the table's numbers, named dimensions.
+    loaded = cdea.load(folder / "models.h5")
+    assert loaded.kind == "model selection"
+    assert np.array_equal(loaded["models/aic"], s.table["aic"])
+    assert loaded.to_xarray()["rms_kPa"].dims == ("model", "test")
 
 
 def test_bad_candidates_and_data_are_named(folder):
