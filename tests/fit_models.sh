@@ -29,6 +29,12 @@ rc=$?
   && ok "_models.h5, _fit.h5 and _fit.prm written" || fail "files: $(ls out 2>&1)"
 grep -q "^recommended: " models.txt && ok "$(grep '^recommended: ' models.txt | head -c 200)" \
   || fail "no recommendation printed"
+# The recommended model's _fit.prm is the prm made that model: its law, its
+# branch and every constant it fitted free (Jlim too), so it fits again as is.
+grep -qE "^  set Free parameters +=  ?shear modulus, Jlim, Branch 1 shear modulus \(Pa\), Branch 1 relaxation time \(s\)$" out/fit-material_fit.prm \
+  && grep -qE "^  set Model +=  ?viscoelastic$" out/fit-material_fit.prm \
+  && ok "_fit.prm: the recommended model's law and free constants" \
+  || fail "_fit.prm: $(grep -E 'Free parameters|  set Model ' out/fit-material_fit.prm)"
 "$PYTHON" - out/fit-material_models.h5 out/fit-material_fit.h5 <<'PY' && ok "AIC, BIC, held-out and RSS as they must be" || fail "model selection file"
 import sys, h5py, numpy as np
 m, fit = h5py.File(sys.argv[1], "r"), h5py.File(sys.argv[2], "r")

@@ -98,6 +98,9 @@ namespace cdea
               << '\n';
     const ModelAssessment &best = selection.models[selection.recommended];
     std::cout << "\n" << best.setup.candidate.name() << " on every file:\n";
+    // Its _fit.prm is the prm made this candidate: its law, branches and free constants.
+    for (const auto &entry : best.setup.overrides)
+      invocation.input.overrides.push_back(entry);
     return finish_material_fit(invocation, best.setup.base, best.setup.fit, best.fit, fitted,
                                weights, predicted, start, &models);
   }

@@ -123,7 +123,9 @@ namespace cdea
           }
         in.overrides.push_back({"Calibration/Free parameters", free});
         const Parameters p = read_parameters(in);
-        return {candidate, p.scene(), free_parameter_settings(p)};
+        return {candidate, p.scene(), free_parameter_settings(p),
+                {in.overrides.begin() + std::ptrdiff_t(input.overrides.size()),
+                 in.overrides.end()}};
       }
     catch (const InputError &e)
       {

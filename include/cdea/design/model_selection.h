@@ -18,6 +18,7 @@
 #include <cdea/input/parameter_input.h>
 
 #include <functional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,10 @@ namespace cdea
     CandidateModel candidate;
     Scene          base;
     FitSettings    fit;
+    /// The entries that make the prm this candidate ("Material/Model",
+    /// the branch lists, "Calibration/Free parameters", ...), in order: the
+    /// recommended model's _fit.prm is written with them.
+    std::vector<std::pair<std::string, std::string>> overrides;
   };
 
   /// @p input with the candidate's law and branches set (Material/Model,
