@@ -14,8 +14,8 @@
    its inside.
 6. Unit factors only in the table of quantities (include/cdea/base/units.h):
    a power of ten of a unit (1e3, 1e-3, 1e6, 1e-6, 1e9, 1e-9, 1e12, 1e-12,
-   1000., 0.001) that multiplies or divides a value from the right (x * 1e3,
-   x / 1e3) is a unit factor, and none may stand anywhere else in source/,
+   1000., 0.001) that multiplies or divides a value from the right (x times 1e3,
+   x over 1e3) is a unit factor, and none may stand anywhere else in source/,
    include/ and python/ (MAX_UNIT_FACTORS, the number allowed outside the
    table, is 0). A relative tolerance or bound is written before its scale
    (1e-9 * scale) and is not one.

@@ -81,10 +81,16 @@ namespace cdea
     inline constexpr Unit si{"SI"};
     // clang-format on
 
-    /// A voltage given in kV, in V on the design map's grid of 1e-9 V:
-    /// round(kV 1e12) / 1e9, so that from + k step is the same double however
-    /// it was reached.
-    inline double kV_in_V_on_grid(const double kV) { return std::round(kV * 1e12) / 1e9; }
+    /// The design map's voltage grid: nV per kV and per V.
+    inline constexpr double nV_per_kV = 1e12, nV_per_V = 1e9;
+
+    /// A voltage given in kV, in V on the design map's grid of 1 nV:
+    /// round(kV nV_per_kV) / nV_per_V, so that from + k step is the same
+    /// double however it was reached.
+    inline double kV_in_V_on_grid(const double kV)
+    {
+      return std::round(kV * nV_per_kV) / nV_per_V;
+    }
   } // namespace units
 
 } // namespace cdea
